@@ -1,0 +1,47 @@
+/*
+ * camera.h: the pinhole camera of the course format: an eye and a screen
+ * parallelogram in the scene, divided into pixels.
+ *
+ * The screen has corners top-left TL, top-right TR and bottom-left BL; its
+ * edges u = TR - TL (along a row) and v = BL - TL (down a column) need not be
+ * orthogonal. Image position (x, y), in pixels from the top-left corner of
+ * the image, lies at TL + (x / width) u + (y / height) v, so pixel (i, j) is
+ * sampled at its centre (i + 0.5, j + 0.5).
+ */
+#ifndef RAYTRACE_CAMERA_H
+#define RAYTRACE_CAMERA_H
+
+#include "ray.h"
+#include "vec3.h"
+
+enum { CAMERA_MAX_SIZE = 32768 }; /* largest width or height, pixels */
+
+typedef struct {
+    Vec3 eye;      /* camera position: every primary ray starts here */
+    Vec3 top_left; /* screen corner TL */
+    Vec3 u;        /* TR - TL: the screen's top edge, left to right */
+    Vec3 v;        /* BL - TL: the screen's left edge, top to bottom */
+    int width;     /* pixels per row, 1..CAMERA_MAX_SIZE */
+    int height;    /* rows, 1..CAMERA_MAX_SIZE, derived by camera_height() */
+} Camera;
+
+/* What camera_check_screen() finds wrong with a screen, if anything. */
+typedef enum {
+    CAMERA_SCREEN_OK,
+    CAMERA_SCREEN_NO_WIDTH,  /* TR = TL: u has zero length */
+    CAMERA_SCREEN_NO_HEIGHT, /* BL = TL: v has zero length */
+    CAMERA_SCREEN_PARALLEL   /* u and v are parallel (sine of angle < 1e-12) */
+} CameraScreenFault;
+
+/* Says whether edges u and v span a parallelogram an image can be cut from. */
+CameraScreenFault camera_check_screen(Vec3 u, Vec3 v);
+
+/* Returns the image height, max(1, floor(width |v| / |u| + 0.5)), as a double
+ * so that the caller can reject heights above CAMERA_MAX_SIZE. */
+double camera_height(Vec3 u, Vec3 v, int width);
+
+/* Returns the primary ray from the eye through image position (x, y), with
+ * a unit direction (all zero if the point is the eye itself). */
+Ray camera_ray(const Camera *cam, double x, double y);
+
+#endif

@@ -1,0 +1,39 @@
+/*
+ * colour.h: linear RGB colours on the course's 0..255 scale, and the one
+ * function that turns them into output bytes.
+ *
+ * A Colour is unclamped while it is being computed: shading may exceed 255
+ * or, in principle, go below 0. Only colour_quantise() clamps and rounds,
+ * so every writer produces the same bytes from the same render.
+ */
+#ifndef RAYTRACE_COLOUR_H
+#define RAYTRACE_COLOUR_H
+
+typedef struct {
+    double r, g, b; /* linear intensity, 0..255 for displayable values */
+} Colour;
+
+/* Builds the colour (r, g, b). */
+static inline Colour colour(double r, double g, double b)
+{
+    Colour c = {r, g, b};
+    return c;
+}
+
+/* Returns a + b, channel by channel. */
+static inline Colour colour_add(Colour a, Colour b)
+{
+    return colour(a.r + b.r, a.g + b.g, a.b + b.b);
+}
+
+/* Returns s * a. */
+static inline Colour colour_scale(Colour a, double s)
+{
+    return colour(s * a.r, s * a.g, s * a.b);
+}
+
+/* Clamps one channel to [0, 255] and rounds it half up: floor(x + 0.5);
+ * NaN maps to 0. This is the only place where values become bytes. */
+unsigned char colour_quantise(double x);
+
+#endif

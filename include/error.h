@@ -1,0 +1,47 @@
+/*
+ * error.h: the error record that every module below main.c fills in place of
+ * printing.
+ *
+ * A module that fails returns a status and describes the failure here: which
+ * file, where in it (when the fault has a position), and a message that says
+ * what was expected and what was found. Only main.c turns a record into text
+ * on the terminal. The record owns no heap memory: copy it, drop it, reuse it.
+ */
+#ifndef RAYTRACE_ERROR_H
+#define RAYTRACE_ERROR_H
+
+#include <stddef.h>
+
+enum {
+    ERROR_FILE_MAX = 1024,   /* longest file name kept; longer ones are cut */
+    ERROR_MESSAGE_MAX = 512, /* longest message kept */
+    ERROR_EXCERPT_MAX = 200  /* longest excerpt of the offending line kept */
+};
+
+typedef struct {
+    char file[ERROR_FILE_MAX];       /* file at fault, "" when none */
+    int line;                        /* 1-based line, 0 when no position */
+    int column;                      /* 1-based byte column, 0 when no position */
+    char message[ERROR_MESSAGE_MAX]; /* what was expected, what was found */
+    char excerpt[ERROR_EXCERPT_MAX]; /* the offending line or a window of it,
+                                        control bytes replaced by '?' */
+    int caret;                       /* byte offset of column in excerpt */
+} Error;
+
+/* Records an error about file (may be NULL) with no position in it. */
+void error_set(Error *err, const char *file, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Records an error at line:column of file, keeping an excerpt of the len
+ * bytes of that line starting at text (which need not be NUL-terminated). */
+void error_set_at(Error *err, const char *file, int line, int column, const char *text,
+                  size_t len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 8)))
+#endif
+    ;
+
+#endif

@@ -1,0 +1,33 @@
+/*
+ * options.h: the command line of raytrace.
+ */
+#ifndef RAYTRACE_OPTIONS_H
+#define RAYTRACE_OPTIONS_H
+
+#include <stddef.h>
+
+typedef struct {
+    const char *scene_path;  /* scene file, "-" for standard input */
+    const char *output_path; /* image file, "-" for standard output */
+    int max_depth;           /* deepest reflected ray traced */
+    int threads;             /* render threads, >= 1 */
+    int quiet;               /* 1: no summary even on a terminal */
+} Options;
+
+/* What options_parse() found the command line asks for. */
+typedef enum {
+    OPTIONS_RENDER,  /* render scene_path to output_path */
+    OPTIONS_HELP,    /* print the help text */
+    OPTIONS_VERSION, /* print the version */
+    OPTIONS_USAGE    /* a usage error, described in the message buffer */
+} OptionsAction;
+
+/* Reads argv into *opts, starting from defaults (threads = default_threads);
+ * on a usage error writes a one-line message to msg. */
+OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
+                            size_t msg_size);
+
+/* Returns the text printed by --help. */
+const char *options_help(void);
+
+#endif

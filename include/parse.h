@@ -1,0 +1,26 @@
+/*
+ * parse.h: reading the course's scene format into a Scene.
+ *
+ * The format is described in docs/scene-format.md. The parser never prints
+ * and never exits: on a fault it fills an Error with the file, line and
+ * column of the fault and a message saying what was expected and what was
+ * found, and returns -1. Numbers are read in the C locale's format whatever
+ * the program's locale (raytrace never calls setlocale()).
+ */
+#ifndef RAYTRACE_PARSE_H
+#define RAYTRACE_PARSE_H
+
+#include <stddef.h>
+
+#include "error.h"
+#include "scene.h"
+
+/* Reads the scene file at path ("-": standard input) into *scene, which this
+ * call initialises; returns 0, or -1 with *err filled and *scene empty. */
+int parse_scene_file(const char *path, Scene *scene, Error *err);
+
+/* Same as parse_scene_file() for the len bytes at text (NUL bytes included),
+ * naming the input `name` in errors. */
+int parse_scene_text(const char *name, const char *text, size_t len, Scene *scene, Error *err);
+
+#endif

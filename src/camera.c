@@ -1,0 +1,41 @@
+/* camera.c: the screen's geometry and primary rays (see camera.h). */
+#include "camera.h"
+
+#include <math.h>
+
+/* Below this sine of the angle between u and v the screen is degenerate. */
+#define CAMERA_MIN_SINE 1e-12
+
+CameraScreenFault camera_check_screen(Vec3 u, Vec3 v)
+{
+    double lu = vec3_length(u), lv = vec3_length(v);
+
+    if (!(lu > 0))
+        return CAMERA_SCREEN_NO_WIDTH;
+    if (!(lv > 0))
+        return CAMERA_SCREEN_NO_HEIGHT;
+    if (!(vec3_length(vec3_cross(u, v)) > CAMERA_MIN_SINE * lu * lv))
+        return CAMERA_SCREEN_PARALLEL;
+    return CAMERA_SCREEN_OK;
+}
+
+double camera_height(Vec3 u, Vec3 v, int width)
+{
+    double h = floor(width * vec3_length(v) / vec3_length(u) + 0.5);
+    return h < 1 ? 1 : h;
+}
+
+Ray camera_ray(const Camera *cam, double x, double y)
+{
+    double fx = x / cam->width, fy = y / cam->height;
+    Vec3 p = vec3(cam->top_left.x + fx * cam->u.x + fy * cam->v.x,
+                  cam->top_left.y + fx * cam->u.y + fy * cam->v.y,
+                  cam->top_left.z + fx * cam->u.z + fy * cam->v.z);
+    Vec3 d = vec3_sub(p, cam->eye);
+    double len = vec3_length(d);
+    Ray ray;
+
+    ray.origin = cam->eye;
+    ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
+    return ray;
+}

@@ -1,0 +1,199 @@
+/*
+ * main.c: the raytrace command: options, then scene file -> parser -> Scene
+ * -> renderer -> Image -> PPM writer -> output file. The only module that
+ * prints or exits.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "error.h"
+#include "image.h"
+#include "options.h"
+#include "outfile.h"
+#include "parse.h"
+#include "ppm.h"
+#include "render.h"
+#include "scene.h"
+
+#define RAYTRACE_VERSION "0.1.0"
+
+/* The temporary output file, for the signal handler to remove. */
+static const char *volatile main_temp_path;
+
+/* On SIGINT or SIGTERM: remove the temporary file, say so, exit 128 + sig. */
+static void main_on_signal(int sig)
+{
+    static const char msg[] = "raytrace: interrupted; no output written\n";
+    const char *temp = main_temp_path;
+
+    if (temp)
+        unlink(temp);
+    if (write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
+        /* Nothing more can be done. */
+    }
+    _exit(128 + sig);
+}
+
+static void main_catch_signals(void)
+{
+    struct sigaction sa;
+
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = main_on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+/* Blocks (how = SIG_BLOCK) or unblocks (SIG_UNBLOCK) SIGINT and SIGTERM. */
+static void main_mask_signals(int how)
+{
+    sigset_t set;
+
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(how, &set, NULL);
+}
+
+/* Prints err as "raytrace: FILE:LINE:COL: error: MESSAGE", then the line at
+ * fault with a caret under the column; errors without a position print as
+ * "raytrace: FILE: error: MESSAGE". */
+static void main_report(const Error *err)
+{
+    if (err->line <= 0) {
+        fprintf(stderr, "raytrace: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
+                err->message);
+        return;
+    }
+    fprintf(stderr, "raytrace: %s:%d:%d: error: %s\n", err->file, err->line, err->column,
+            err->message);
+    fprintf(stderr, "%5d | %s\n      | ", err->line, err->excerpt);
+    /* Pad with the line's own tabs so the caret lines up; UTF-8 continuation
+     * bytes take no column. */
+    for (int i = 0; i < err->caret && err->excerpt[i]; i++) {
+        unsigned char ch = (unsigned char)err->excerpt[i];
+        if (ch == '\t')
+            fputc('\t', stderr);
+        else if ((ch & 0xC0) != 0x80)
+            fputc(' ', stderr);
+    }
+    for (int i = (int)strlen(err->excerpt); i < err->caret; i++)
+        fputc(' ', stderr);
+    fputs("^\n", stderr);
+}
+
+static int main_usage(const char *msg)
+{
+    fprintf(stderr, "raytrace: %s\nTry 'raytrace --help'.\n", msg);
+    return 2;
+}
+
+/* Says whether paths a and b name the same existing file. */
+static int main_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+static double main_now(void)
+{
+    struct timespec ts;
+
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* Renders opts' scene to opts' output; returns the exit status. */
+static int main_render(const Options *opts)
+{
+    RenderOptions ropts = {opts->max_depth, opts->threads};
+    double start = main_now();
+    Scene scene;
+    Image img;
+    OutFile out;
+    Error err;
+
+    if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
+        error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
+        goto fail_scene;
+    }
+    if (strcmp(opts->output_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
+        main_same_file(opts->scene_path, opts->output_path)) {
+        error_set(&err, opts->output_path, "the output is the scene file itself: refusing to "
+                                           "overwrite it");
+        goto fail_scene;
+    }
+    if (image_init(&img, scene.camera.width, scene.camera.height) != 0) {
+        error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes",
+                  scene.camera.width, scene.camera.height,
+                  image_size(scene.camera.width, scene.camera.height));
+        goto fail_scene;
+    }
+    main_catch_signals();
+    if (outfile_open(&out, opts->output_path, &err) != 0)
+        goto fail_image;
+    main_temp_path = out.temp[0] ? out.temp : NULL;
+    render(&scene, &ropts, &img);
+    main_mask_signals(SIG_BLOCK);
+    if (ppm_write(out.fp, img.width, img.height, img.rgb) != 0) {
+        error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
+        outfile_abort(&out);
+        main_temp_path = NULL;
+        goto fail_image;
+    }
+    if (outfile_commit(&out, &err) != 0) {
+        main_temp_path = NULL;
+        goto fail_image;
+    }
+    main_temp_path = NULL;
+    main_mask_signals(SIG_UNBLOCK);
+    if (!opts->quiet && isatty(STDERR_FILENO))
+        fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu spheres, %.2f s, %d threads\n",
+                strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
+                img.width, img.height, scene.sphere_count, main_now() - start, opts->threads);
+    image_free(&img);
+    scene_free(&scene);
+    return 0;
+
+fail_image:
+    main_mask_signals(SIG_UNBLOCK);
+    image_free(&img);
+fail_scene:
+    main_report(&err);
+    scene_free(&scene);
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    Options opts;
+    char msg[256];
+
+    switch (options_parse(&opts, argc, argv, render_default_threads(), msg, sizeof msg)) {
+    case OPTIONS_HELP:
+        fputs(options_help(), stdout);
+        return 0;
+    case OPTIONS_VERSION:
+        puts("raytrace " RAYTRACE_VERSION);
+        return 0;
+    case OPTIONS_USAGE:
+        return main_usage(msg);
+    case OPTIONS_RENDER:
+        break;
+    }
+    return main_render(&opts);
+}

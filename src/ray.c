@@ -1,0 +1,29 @@
+/* ray.c: where secondary rays start (see ray.h). */
+#include "ray.h"
+
+#include <math.h>
+
+/* Moves x one representable double in the direction of the sign of step. */
+static double ray_nudge(double x, double step)
+{
+    if (step > 0)
+        return nextafter(x, INFINITY);
+    if (step < 0)
+        return nextafter(x, -INFINITY);
+    return x;
+}
+
+Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
+{
+    double d = vec3_dot(vec3_abs(n), perr);
+    Vec3 offset = vec3_scale(n, d);
+    Vec3 o;
+
+    if (vec3_dot(w, n) < 0)
+        offset = vec3_neg(offset);
+    o = vec3_add(p, offset);
+    o.x = ray_nudge(o.x, offset.x);
+    o.y = ray_nudge(o.y, offset.y);
+    o.z = ray_nudge(o.z, offset.z);
+    return o;
+}

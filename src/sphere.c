@@ -1,0 +1,81 @@
+/* sphere.c: ray/sphere intersection and surface geometry (see sphere.h). */
+#include "sphere.h"
+
+#include <float.h>
+#include <math.h>
+
+/*
+ * Relative error bound of sphere_surface_at()'s point, in the style of
+ * pbrt's gamma(n) = n u / (1 - n u), u = DBL_EPSILON / 2.
+ *
+ * The point is centre + radius * n with n = v / |v|. Normalising leaves |n|
+ * within about 3u of 1, the product radius * n_i adds u, the sum adds u of
+ * |centre_i + radius * n_i|: each component is within roughly
+ * 5u (|centre_i| + radius) of the exact surface. We take 16 in place of 5 so
+ * that the offset ray_offset_origin() derives from this bound also covers the
+ * rounding in the next intersection test (the sign of c = |f|^2 - r^2 and of
+ * the discriminant need a margin of a few u * radius); the re-intersection
+ * test in tests/test_sphere.c checks the margin at scales 1e-6 to 1e8.
+ */
+#define SPHERE_ERROR_ULPS 16.0
+
+static double sphere_gamma(double n)
+{
+    double u = DBL_EPSILON / 2;
+    return n * u / (1 - n * u);
+}
+
+int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
+{
+    Vec3 f = vec3_sub(ray->origin, s->centre);
+    Vec3 d = ray->dir;
+    double a = vec3_dot(d, d);
+    double h = vec3_dot(f, d); /* half of the quadratic's b */
+    double r2 = s->radius * s->radius;
+    /* l is f minus its projection on d: its length is the centre's distance
+     * to the line, so r2 - |l|^2 = (h^2 - a c) / a without cancellation. */
+    Vec3 l = vec3_sub(f, vec3_scale(d, h / a));
+    double disc = r2 - vec3_dot(l, l);
+    double c, q, t0, t1;
+
+    if (!(disc >= 0))
+        return 0;
+    c = vec3_dot(f, f) - r2;
+    q = -(h + copysign(sqrt(a * disc), h));
+    if (q == 0) {
+        /* h = 0 and disc = 0: the origin is the tangent point, t = 0 twice. */
+        t0 = t1 = 0;
+    } else {
+        t0 = q / a;
+        t1 = c / q;
+        if (t0 > t1) {
+            double tmp = t0;
+            t0 = t1;
+            t1 = tmp;
+        }
+    }
+    if (t0 > tmin && t0 < tmax) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > tmin && t1 < tmax) {
+        *t = t1;
+        return 1;
+    }
+    return 0;
+}
+
+SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
+{
+    SurfacePoint sp;
+    Vec3 v = vec3_sub(p, s->centre);
+    double len = vec3_length(v);
+    double g = sphere_gamma(SPHERE_ERROR_ULPS);
+
+    /* A hit at the centre (possible only when the radius is below the
+     * resolution of the coordinates) has no direction: any unit one will do. */
+    sp.normal = len > 0 ? vec3_scale(v, 1.0 / len) : vec3(0, 0, 1);
+    sp.point = vec3_add(s->centre, vec3_scale(sp.normal, s->radius));
+    sp.error = vec3_scale(vec3_add(vec3_abs(s->centre), vec3(s->radius, s->radius, s->radius)), g);
+    return sp;
+}

@@ -1,0 +1,160 @@
+#!/bin/sh
+# cli.sh: tests of the raytrace command as users run it: exit codes, error
+# positions, outputs never damaged, standard output, threads, and the course
+# scene against the reference render of an independent implementation.
+#
+# Usage: sh tests/cli.sh RAYTRACE PPMCMP   (run from the repository root)
+
+RT=$1
+CMP=$2
+T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-cli.XXXXXX") || exit 2
+trap 'rm -rf "$T"' EXIT
+passed=0
+failed=0
+
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL $1" >&2; [ -n "$2" ] && printf '%s\n' "$2" | sed 's/^/    /' >&2; }
+
+# expect_exit NAME CODE COMMAND...: runs COMMAND, keeps its output in $T/out
+# and $T/err, and checks its exit status.
+expect_exit() {
+    name=$1 code=$2
+    shift 2
+    "$@" >"$T/out" 2>"$T/err"
+    got=$?
+    if [ "$got" = "$code" ]; then pass; else fail "$name: exit $got, expected $code" "$(cat "$T/err")"; fi
+}
+
+# expect_grep NAME PATTERN FILE: FILE has a line matching PATTERN (fixed string).
+expect_grep() {
+    if grep -qF -- "$2" "$3"; then pass; else fail "$1: no '$2' in $3" "$(cat "$3")"; fi
+}
+
+# expect_line NAME N TEXT FILE: line N of FILE is exactly TEXT.
+expect_line() {
+    got=$(sed -n "$2p" "$4")
+    if [ "$got" = "$3" ]; then pass; else fail "$1: line $2 is '$got', expected '$3'"; fi
+}
+
+# expect_clean NAME DIR: no temporary file left in DIR.
+expect_clean() {
+    if ls -A "$2" | grep -q '^\..*\.[A-Za-z0-9]\{6\}$'; then fail "$1: temporary file left" "$(ls -A "$2")"; else pass; fi
+}
+
+scene=scenes/course.txt
+printf '0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n8\n0 0 0\n0 5 0 255 255 255\nsphere: 0 0 5 1 200 100 50 0.25\n' >"$T/small.txt"
+
+# --- help, version, usage errors ---
+expect_exit help 0 "$RT" --help
+expect_grep help 'Usage: raytrace [OPTIONS] SCENE OUTPUT' "$T/out"
+expect_grep help 'Exit status' "$T/out"
+expect_exit version 0 "$RT" --version
+expect_grep version 'raytrace ' "$T/out"
+for args in "" "$scene" "--bogus $scene x.ppm" "--max-depth $scene x.ppm" \
+    "--max-depth -1 $scene x.ppm" "--max-depth 1001 $scene x.ppm" "--threads 0 $scene x.ppm" \
+    "-j x $scene x.ppm" "$scene a.ppm b.ppm"; do
+    # shellcheck disable=SC2086
+    expect_exit "usage '$args'" 2 "$RT" $args
+    expect_line "usage '$args' says how to get help" 2 "Try 'raytrace --help'." "$T/err"
+    n=$(wc -l <"$T/err")
+    [ "$n" -eq 2 ] && pass || fail "usage '$args': $n lines on stderr, expected 2"
+done
+expect_exit "option forms" 0 "$RT" --max-depth=3 -j1 -d 2 --threads 2 -q "$T/small.txt" "$T/forms.ppm"
+expect_exit "-- ends options" 0 "$RT" -- "$T/small.txt" "$T/forms.ppm"
+
+# --- quiet on success when stderr is not a terminal ---
+expect_exit render 0 "$RT" "$scene" "$T/course.ppm"
+[ ! -s "$T/err" ] && [ ! -s "$T/out" ] && pass || fail "render is not quiet" "$(cat "$T/err")"
+expect_clean "render leaves no temporary file" "$T"
+
+# --- the course scene against the reference (independent implementation) ---
+expect_exit "course matches reference" 0 "$CMP" --max-diff 1 --max-fraction 0.005 tests/ref/course.ppm "$T/course.ppm"
+head -c 15 "$T/course.ppm" | od -c | head -1 | grep -q 'P   6  \\n   4   0   0       4   0   0  \\n   2   5   5  \\n' \
+    && pass || fail "PPM header is not 'P6\\n400 400\\n255\\n'"
+
+# --- threads and standard output give the same bytes ---
+expect_exit "threads 1" 0 "$RT" --threads 1 "$scene" "$T/t1.ppm"
+expect_exit "threads 2" 0 "$RT" --threads 2 "$scene" "$T/t2.ppm"
+cmp -s "$T/t1.ppm" "$T/t2.ppm" && cmp -s "$T/t1.ppm" "$T/course.ppm" && pass || fail "threads change the bytes"
+"$RT" "$scene" - >"$T/stdout.ppm" 2>"$T/err" && cmp -s "$T/stdout.ppm" "$T/course.ppm" && pass || fail "'-' output differs"
+"$RT" - "$T/stdin.ppm" <"$scene" 2>"$T/err" && cmp -s "$T/stdin.ppm" "$T/course.ppm" && pass || fail "'-' scene differs"
+
+# --- max depth changes the picture, 0 included ---
+expect_exit "depth 0" 0 "$RT" --max-depth 0 "$scene" "$T/d0.ppm"
+cmp -s "$T/d0.ppm" "$T/course.ppm" && fail "--max-depth 0 renders the same as 10" || pass
+
+# --- bad scenes: positioned error, caret, exit 1, output untouched ---
+printf 'keep me\n' >"$T/keep.ppm"
+printf '0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n8\n0 0 0\n0 5 0 255 255 255\nsphere: 0 0 5 1 200 100 50 1.5\n' >"$T/bad.txt"
+expect_exit "bad scene" 1 "$RT" "$T/bad.txt" "$T/keep.ppm"
+expect_line "bad scene message" 1 "raytrace: $T/bad.txt:8:28: error: the sphere's reflection must be in [0, 1], found '1.5'" "$T/err"
+expect_line "bad scene excerpt" 2 "    8 | sphere: 0 0 5 1 200 100 50 1.5" "$T/err"
+expect_line "bad scene caret" 3 "      |                            ^" "$T/err"
+expect_grep "bad scene keeps output" 'keep me' "$T/keep.ppm"
+expect_clean "bad scene leaves no temporary file" "$T"
+printf '0 0 0\n\t-1\t1 x\n' >"$T/tab.txt"
+expect_exit "tab caret" 1 "$RT" "$T/tab.txt" "$T/keep.ppm"
+expect_line "tab caret aligned" 3 "$(printf '      | \t  \t  ^')" "$T/err"
+expect_exit "missing scene" 1 "$RT" "$T/none.txt" "$T/keep.ppm"
+expect_line "missing scene message" 1 "raytrace: $T/none.txt: error: cannot open: No such file or directory" "$T/err"
+expect_exit "scene is a directory" 1 "$RT" "$T" "$T/keep.ppm"
+expect_grep "scene is a directory" 'Is a directory' "$T/err"
+expect_grep "failed runs keep output" 'keep me' "$T/keep.ppm"
+
+# --- bad outputs: clear error, nothing damaged or left behind ---
+expect_exit "missing directory" 1 "$RT" "$T/small.txt" "$T/no/such/dir/out.ppm"
+expect_grep "missing directory" "No such file or directory" "$T/err"
+expect_exit "output is a directory" 1 "$RT" "$T/small.txt" "$T"
+expect_exit "output is the scene" 1 "$RT" "$T/small.txt" "$T/small.txt"
+expect_grep "output is the scene" "refusing to overwrite" "$T/err"
+head -1 "$T/small.txt" | grep -q '^0 0 0$' && pass || fail "scene was overwritten"
+if [ -w /dev/full ]; then
+    expect_exit "full disk" 1 "$RT" "$T/small.txt" /dev/full
+    expect_grep "full disk" "No space left on device" "$T/err"
+    [ -c /dev/full ] && pass || fail "/dev/full was replaced"
+fi
+mkdir "$T/ro" && chmod 555 "$T/ro"
+if ! (: >"$T/ro/probe") 2>/dev/null; then # not when running as root
+    expect_exit "read-only directory" 1 "$RT" "$T/small.txt" "$T/ro/out.ppm"
+    expect_grep "read-only directory" "Permission denied" "$T/err"
+fi
+rm -f "$T/ro/probe"
+chmod 755 "$T/ro"
+expect_exit "/dev/null output" 0 "$RT" "$T/small.txt" /dev/null
+[ -c /dev/null ] && pass || fail "/dev/null was replaced"
+
+# --- a symbolic link is written through, not replaced ---
+ln -s keep.ppm "$T/link.ppm"
+expect_exit "through a link" 0 "$RT" "$T/small.txt" "$T/link.ppm"
+[ -L "$T/link.ppm" ] && head -c 2 "$T/keep.ppm" | grep -q P6 && pass || fail "link replaced"
+
+# --- an interrupted render leaves the old output and no temporary file ---
+awk 'BEGIN {
+    print "0 0 0"; print "-1 1 1"; print "1 1 1"; print "-1 -1 1"; print "3000";
+    print "0 0 0"; print "0 50 0 255 255 255";
+    for (i = 0; i < 3000; i++) printf "sphere: %d %d 40 0.3 200 100 50 0.5\n", i % 60 - 30, i / 60 - 25
+}' >"$T/slow.txt"
+printf 'old\n' >"$T/slow.ppm"
+"$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
+pid=$!
+n=0
+while [ $n -lt 100 ] && ! ls -A "$T" | grep -q '^\.slow\.ppm\.'; do sleep 0.1; n=$((n + 1)); done
+kill -INT $pid
+wait $pid
+code=$?
+[ "$code" = 130 ] && pass || fail "SIGINT: exit $code, expected 130"
+expect_grep "SIGINT message" "interrupted" "$T/err"
+expect_grep "SIGINT keeps output" "old" "$T/slow.ppm"
+expect_clean "SIGINT leaves no temporary file" "$T"
+"$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
+pid=$!
+n=0
+while [ $n -lt 100 ] && ! ls -A "$T" | grep -q '^\.slow\.ppm\.'; do sleep 0.1; n=$((n + 1)); done
+kill -TERM $pid
+wait $pid
+code=$?
+[ "$code" = 143 ] && pass || fail "SIGTERM: exit $code, expected 143"
+expect_clean "SIGTERM leaves no temporary file" "$T"
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

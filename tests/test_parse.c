@@ -1,0 +1,321 @@
+/* test_parse.c: the course-format parser: accepted forms, and every fault
+ * with its message, line and column. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parse.h"
+#include "test.h"
+
+/* A valid header: the screen is 2 x 2 at z = 1, so 4 x 4 pixels. */
+#define CAMERA "0 0 0\n"
+#define CORNERS "-1 1 1\n1 1 1\n-1 -1 1\n"
+#define HEADER CAMERA CORNERS "4\n10 20 30\n0 5 0 255 128 64\n"
+#define SPHERE "sphere: 0 0 5 1 200 100 50 0.25\n"
+
+static int parse(const char *text, Scene *scene, Error *err)
+{
+    return parse_scene_text("t.txt", text, strlen(text), scene, err);
+}
+
+static void parse_accepts_the_example(void)
+{
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, parse(HEADER SPHERE "sphere: 1 2 3 0.5 0 0 255 1\n", &sc, &err));
+    CHECK_NEAR(-1, sc.camera.top_left.x, 0);
+    CHECK_NEAR(2, sc.camera.u.x, 0);
+    CHECK_NEAR(-2, sc.camera.v.y, 0);
+    CHECK_INT(4, sc.camera.width);
+    CHECK_INT(4, sc.camera.height);
+    CHECK_NEAR(20, sc.background.g, 0);
+    CHECK_NEAR(5, sc.light.position.y, 0);
+    CHECK_NEAR(64, sc.light.colour.b, 0);
+    CHECK_INT(2, (long long)sc.sphere_count);
+    CHECK_NEAR(5, sc.spheres[0].centre.z, 0);
+    CHECK_NEAR(1, sc.spheres[0].radius, 0);
+    CHECK_NEAR(100, sc.spheres[0].colour.g, 0);
+    CHECK_NEAR(0.25, sc.spheres[0].reflection, 0);
+    CHECK_INT(8, sc.spheres[0].line);
+    CHECK_NEAR(1, sc.spheres[1].reflection, 0);
+    scene_free(&sc);
+}
+
+static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
+{
+    const char *text = "\xEF\xBB\xBF# a scene\r\n\r\n  0\t0 0   # camera\r\n-1 1 1#tl\r\n"
+                       "1 1 1\r\n-1 -1 1\r\n\r\n4\r\n10 20 30\r\n0 5 0 255 128 64\r\n"
+                       "sphere:0 0 5 1 200 100 50 0.25\r\n# end";
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, parse(text, &sc, &err));
+    CHECK_INT(1, (long long)sc.sphere_count);
+    CHECK_NEAR(0.25, sc.spheres[0].reflection, 0);
+    CHECK_INT(11, sc.spheres[0].line);
+    scene_free(&sc);
+}
+
+static void parse_accepts_number_forms(void)
+{
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, parse("1. .5 -.5e+1\n-1 1E1 +1\n1 1e1 1\n-1 -1 1\n4\n0 0 0\n1e15 -1e15 "
+                       "0e-999 0 -0 255\n",
+                       &sc, &err));
+    CHECK_NEAR(1, sc.camera.eye.x, 0);
+    CHECK_NEAR(0.5, sc.camera.eye.y, 0);
+    CHECK_NEAR(-5, sc.camera.eye.z, 0);
+    CHECK_NEAR(1e15, sc.light.position.x, 0);
+    CHECK_NEAR(0, sc.light.position.z, 0);
+    CHECK_NEAR(0.1, strtod("0.1", NULL), 0); /* correctly rounded, as strtod */
+    scene_free(&sc);
+}
+
+static void parse_accepts_many_spheres(void)
+{
+    size_t n = 5000, cap = sizeof HEADER + n * 40;
+    char *text = malloc(cap);
+    size_t len = (size_t)sprintf(text, "%s", HEADER);
+    Scene sc;
+    Error err;
+
+    for (size_t i = 0; i < n; i++)
+        len += (size_t)sprintf(text + len, "sphere: %zu 0 9 0.5 1 2 3 0\n", i);
+    CHECK_INT(0, parse_scene_text("t.txt", text, len, &sc, &err));
+    CHECK_INT((long long)n, (long long)sc.sphere_count);
+    CHECK_NEAR(4999, sc.spheres[4999].centre.x, 0);
+    scene_free(&sc);
+    free(text);
+}
+
+static void parse_height_follows_the_screen(void)
+{
+    Scene sc;
+    Error err;
+
+    /* |v| / |u| = 1 / 3 at width 4: 4 / 3 + 0.5 rounds down to 1.83 -> 1. */
+    CHECK_INT(0, parse(CAMERA "0 0 1\n3 0 1\n0 -1 1\n4\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
+    CHECK_INT(1, sc.camera.height);
+    scene_free(&sc);
+    /* Half-way rounds up: 3 * 1 / 2 + 0.5 = 2. */
+    CHECK_INT(0, parse(CAMERA "0 0 1\n2 0 1\n0 -1 1\n3\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
+    CHECK_INT(2, sc.camera.height);
+    scene_free(&sc);
+    /* A sheared screen: |v| = sqrt(2) with the left edge slanted 45 degrees. */
+    CHECK_INT(0, parse(CAMERA "0 0 1\n1 0 1\n1 -1 1\n100\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
+    CHECK_INT(141, sc.camera.height);
+    scene_free(&sc);
+    /* A tiny height still gives one row. */
+    CHECK_INT(0, parse(CAMERA "0 0 1\n1 0 1\n0 -1e-9 1\n100\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
+    CHECK_INT(1, sc.camera.height);
+    scene_free(&sc);
+}
+
+/* One malformed scene and the error it must produce. */
+typedef struct {
+    const char *text;
+    int line, column;
+    const char *message; /* the whole message */
+} BadScene;
+
+static const BadScene parse_bad_scenes[] = {
+    /* missing records */
+    {"", 1, 1, "expected the camera position (3 numbers), found the end of the file"},
+    {"# nothing\n\n", 3, 1, "expected the camera position (3 numbers), found the end of the file"},
+    {CAMERA CORNERS "4\n10 20 30", 6, 9,
+     "expected the light (x y z r g b), found the end of the file"},
+    {CAMERA CORNERS "4\n", 6, 1,
+     "expected the background colour (3 numbers), found the end of the file"},
+    {CAMERA "-1 1 1\n", 3, 1,
+     "expected the screen's top-right corner (3 numbers), found the end of the file"},
+    {CAMERA CORNERS, 5, 1,
+     "expected the horizontal resolution (a whole number of pixels), found the end of the "
+     "file"},
+    {CAMERA CORNERS "4\n10 20 30\n" SPHERE, 7, 1,
+     "expected the light, found the record 'sphere:': the 7 header records (camera, three "
+     "screen corners, resolution, background, light) come first"},
+    /* counts */
+    {"0 0\n", 1, 4, "expected 3 numbers for the camera position, found 2"},
+    {"0 0 0 0\n", 1, 7, "expected 3 numbers for the camera position, found 4"},
+    {"0 0 0 x\n", 1, 7, "expected the end of the line after the camera position, found 'x'"},
+    {CAMERA "90 110 # top-left\n", 2, 7,
+     "expected 3 numbers for the screen's top-left corner, found 2"},
+    {CAMERA CORNERS "4 4\n", 5, 3, "expected 1 number for the horizontal resolution, found 2"},
+    {CAMERA CORNERS "4\n10 20\n", 6, 6, "expected 3 numbers for the background colour, found 2"},
+    {CAMERA CORNERS "4\n10 20 30\n0 5 0 255 128\n", 7, 14,
+     "expected 6 numbers for the light (x y z r g b), found 5"},
+    {HEADER "sphere: 0 0 5 1 200 100 50\n", 8, 27,
+     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 7"},
+    {HEADER "sphere: 0 0 5 1 200 100 50 0 1\n", 8, 30,
+     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 9"},
+    {HEADER "sphere:\n", 8, 8,
+     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 0"},
+    /* numbers */
+    {"0 x 0\n", 1, 3, "expected a number for the camera position's y, found 'x'"},
+    {"0 0 1,5\n", 1, 5, "expected a number for the camera position's z, found '1,5'"},
+    {"0 0 1e\n", 1, 5, "expected a number for the camera position's z, found '1e'"},
+    {"0 0 .\n", 1, 5, "expected a number for the camera position's z, found '.'"},
+    {"0 0 +-1\n", 1, 5, "expected a number for the camera position's z, found '+-1'"},
+    {"0 0 inf\n", 1, 5, "the camera position's z must be a finite number, found 'inf'"},
+    {"-Infinity 0 0\n", 1, 1, "the camera position's x must be a finite number, found '-Infinity'"},
+    {"NaN 0 0\n", 1, 1, "the camera position's x must be a finite number, found 'NaN'"},
+    {"0x10 0 0\n", 1, 1,
+     "the camera position's x must be a decimal number, found '0x10' (hexadecimal is not "
+     "accepted)"},
+    {"1e400 0 0\n", 1, 1,
+     "the camera position's x is out of range: '1e400' exceeds 1e15 in magnitude"},
+    {"0 -1.000001e15 0\n", 1, 3,
+     "the camera position's y is out of range: '-1.000001e15' exceeds 1e15 in magnitude"},
+    {"0 0 1e-400\n", 1, 5,
+     "the camera position's z is out of range: '1e-400' is too small for a double (write 0 "
+     "for zero)"},
+    {"0 0 1e-310\n", 1, 5,
+     "the camera position's z is out of range: '1e-310' is too small for a double (write 0 "
+     "for zero)"},
+    /* resolution */
+    {CAMERA CORNERS "400.0\n", 5, 1,
+     "expected the horizontal resolution as a whole number of pixels (decimal digits only), "
+     "found '400.0'"},
+    {CAMERA CORNERS "+4\n", 5, 1,
+     "expected the horizontal resolution as a whole number of pixels (decimal digits only), "
+     "found '+4'"},
+    {CAMERA CORNERS "0\n", 5, 1,
+     "the horizontal resolution must be between 1 and 32768 pixels, found '0'"},
+    {CAMERA CORNERS "32769\n", 5, 1,
+     "the horizontal resolution must be between 1 and 32768 pixels, found '32769'"},
+    {CAMERA CORNERS "99999999999999999999\n", 5, 1,
+     "the horizontal resolution must be between 1 and 32768 pixels, found "
+     "'99999999999999999999'"},
+    {CAMERA "0 0 1\n0.001 0 1\n0 -2 1\n20\n", 5, 1,
+     "the image would be 20 x 40000 pixels: its height, set by the screen's proportions, must "
+     "be at most 32768"},
+    /* screen */
+    {CAMERA "-1 1 1\n-1 1 1\n-1 -1 1\n", 3, 1,
+     "the screen's top-right corner is its top-left corner: the screen has no width"},
+    {CAMERA "-1 1 1\n1 1 1\n-1 1 1\n", 4, 1,
+     "the screen's bottom-left corner is its top-left corner: the screen has no height"},
+    {CAMERA "0 0 1\n1 1 1\n3 3 1\n", 4, 1,
+     "the screen's top and left edges are parallel: its three corners lie on one line"},
+    {CAMERA "0.1 0.2 0.3\n0.2 0.4 0.6\n0.7 1.4 2.1\n", 4, 1,
+     "the screen's top and left edges are parallel: its three corners lie on one line"},
+    /* ranges */
+    {CAMERA CORNERS "4\n10 20 256\n", 6, 7,
+     "the background colour's blue must be in [0, 255], found '256'"},
+    {CAMERA CORNERS "4\n-1 20 30\n", 6, 1,
+     "the background colour's red must be in [0, 255], found '-1'"},
+    {CAMERA CORNERS "4\n10 20 30\n0 5 0 255 300 64\n", 7, 11,
+     "the light's green must be in [0, 255], found '300'"},
+    {HEADER "sphere: 0 0 5 0 200 100 50 0.25\n", 8, 15,
+     "the sphere's radius must be greater than 0, found '0'"},
+    {HEADER "sphere: 0 0 5 -0 200 100 50 0.25\n", 8, 15,
+     "the sphere's radius must be greater than 0, found '-0'"},
+    {HEADER "sphere: 0 0 5 1 200 100 50 1.5\n", 8, 28,
+     "the sphere's reflection must be in [0, 1], found '1.5'"},
+    {HEADER "sphere: 0 0 5 1 200 100 50 -0.1\n", 8, 28,
+     "the sphere's reflection must be in [0, 1], found '-0.1'"},
+    {HEADER "sphere: 0 0 5 1 255.5 100 50 0\n", 8, 17,
+     "the sphere's red must be in [0, 255], found '255.5'"},
+    {HEADER "sphere: 0 0 nan 1 2 3 4 0\n", 8, 13,
+     "the sphere's centre z must be a finite number, found 'nan'"},
+    /* keywords */
+    {HEADER "Sphere: 0 0 5 1 200 100 50 0.25\n", 8, 1,
+     "unknown record 'Sphere:': keywords are lower case ('sphere:')"},
+    {HEADER "SPHERE: 0 0 5 1 200 100 50 0.25\n", 8, 1,
+     "unknown record 'SPHERE:': keywords are lower case ('sphere:')"},
+    {HEADER "sphere 0 0 5 1 200 100 50 0.25\n", 8, 1,
+     "expected 'sphere:' with its colon attached, found 'sphere'"},
+    {HEADER "  triangle: 0 0 0\n", 8, 3, "unknown record 'triangle:' (expected 'sphere:')"},
+    {HEADER SPHERE "1 2 3\n", 9, 1,
+     "expected a record such as 'sphere:', found the number '1': the 7 header records are "
+     "complete"},
+    {"camera: 0 0 0\n", 1, 1,
+     "expected the camera position, found the record 'camera:': the 7 header records (camera, "
+     "three screen corners, resolution, background, light) come first"},
+    /* bytes */
+    {"0 0\r0\n", 1, 4, "carriage return inside a line: lines must end with LF or CRLF"},
+    {"0 0 0\n# \x01\x02 fine\n-1 1 1\n1 1\x00 1\n", 4, 4,
+     "NUL byte in the scene file: a scene is a text file"},
+    {"0 0 \xff\xfe\n", 1, 5, "expected a number for the camera position's z, found '\xff\xfe'"},
+    {"0 0 \x1b[31m\n", 1, 5, "expected a number for the camera position's z, found '?[31m'"},
+};
+
+static void parse_rejects_bad_scenes_with_position(void)
+{
+    for (size_t i = 0; i < sizeof parse_bad_scenes / sizeof parse_bad_scenes[0]; i++) {
+        const BadScene *b = &parse_bad_scenes[i];
+        /* NUL bytes inside: the length is that of the literal, known by scanning for "\n\0". */
+        size_t len = strlen(b->text);
+        Scene sc;
+        Error err;
+        int rc;
+
+        if (strstr(b->message, "NUL byte"))
+            len += 1 + strlen(b->text + len + 1);
+        rc = parse_scene_text("t.txt", b->text, len, &sc, &err);
+        CHECK_INT(-1, rc);
+        if (rc != -1) {
+            scene_free(&sc);
+            continue;
+        }
+        CHECK_INT(0, (long long)sc.sphere_count);
+        CHECK_CONTAINS(err.file, "t.txt");
+        if (strcmp(err.message, b->message) != 0)
+            test_fail(__FILE__, __LINE__, "case %zu: expected message \"%s\", got \"%s\"", i,
+                      b->message, err.message);
+        if (err.line != b->line || err.column != b->column)
+            test_fail(__FILE__, __LINE__, "case %zu (%s): expected %d:%d, got %d:%d", i,
+                      b->message, b->line, b->column, err.line, err.column);
+    }
+}
+
+static void parse_error_excerpt_and_caret(void)
+{
+    Scene sc;
+    Error err;
+
+    CHECK_INT(-1, parse(CAMERA "90\t110 # top-left\n", &sc, &err));
+    CHECK_CONTAINS(err.excerpt, "90\t110 # top-left");
+    CHECK_INT(6, err.caret);
+    /* A long line is cut to a window around the column. */
+    {
+        char text[2000];
+        memset(text, ' ', sizeof text);
+        memcpy(text + 1500, "0 0 x\n", 6);
+        CHECK_INT(-1, parse_scene_text("t.txt", text, 1506, &sc, &err));
+        CHECK_INT(1505, err.column);
+        CHECK(strlen(err.excerpt) < 180);
+        CHECK_INT('x', err.excerpt[err.caret]);
+    }
+}
+
+static void parse_file_errors(void)
+{
+    Scene sc;
+    Error err;
+
+    CHECK_INT(-1, parse_scene_file("tests/no-such-file.txt", &sc, &err));
+    CHECK_CONTAINS(err.file, "tests/no-such-file.txt");
+    CHECK_CONTAINS(err.message, "cannot open");
+    CHECK_INT(0, err.line);
+    CHECK_INT(-1, parse_scene_file("tests", &sc, &err));
+    CHECK_CONTAINS(err.message, "cannot read");
+    CHECK_INT(0, parse_scene_file("scenes/course.txt", &sc, &err));
+    CHECK_INT(3, (long long)sc.sphere_count);
+    CHECK_INT(400, sc.camera.height);
+    scene_free(&sc);
+}
+
+const TestCase parse_tests[] = {
+    {"parse_accepts_the_example", parse_accepts_the_example},
+    {"parse_accepts_comments_blanks_crlf_tabs_bom", parse_accepts_comments_blanks_crlf_tabs_bom},
+    {"parse_accepts_number_forms", parse_accepts_number_forms},
+    {"parse_accepts_many_spheres", parse_accepts_many_spheres},
+    {"parse_height_follows_the_screen", parse_height_follows_the_screen},
+    {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
+    {"parse_error_excerpt_and_caret", parse_error_excerpt_and_caret},
+    {"parse_file_errors", parse_file_errors},
+    {NULL, NULL},
+};
