@@ -79,6 +79,17 @@ cmp -s "$T/t1.ppm" "$T/t2.ppm" && cmp -s "$T/t1.ppm" "$T/course.ppm" && pass || 
 "$RT" "$scene" - >"$T/stdout.ppm" 2>"$T/err" && cmp -s "$T/stdout.ppm" "$T/course.ppm" && pass || fail "'-' output differs"
 "$RT" - "$T/stdin.ppm" <"$scene" 2>"$T/err" && cmp -s "$T/stdin.ppm" "$T/course.ppm" && pass || fail "'-' scene differs"
 
+# --- every example scene renders to its golden bytes ---
+grep -v '^#' tests/golden.sha256 >"$T/golden"
+while read -r hash file opts; do
+    # shellcheck disable=SC2086
+    got=$("$RT" $opts "$file" - 2>"$T/err" | sha256sum | cut -d' ' -f1)
+    [ "$got" = "$hash" ] && pass || fail "golden render of $file $opts changed: $got" "$(cat "$T/err")"
+done <"$T/golden"
+for file in scenes/*.txt; do
+    grep -q " $file\$" "$T/golden" && pass || fail "$file has no golden hash in tests/golden.sha256"
+done
+
 # --- max depth changes the picture, 0 included ---
 expect_exit "depth 0" 0 "$RT" --max-depth 0 "$scene" "$T/d0.ppm"
 cmp -s "$T/d0.ppm" "$T/course.ppm" && fail "--max-depth 0 renders the same as 10" || pass
