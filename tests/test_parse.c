@@ -271,6 +271,101 @@ static void parse_rejects_bad_scenes_with_position(void)
     }
 }
 
+/* The records of a valid scene, and how the parser names them. */
+static const struct {
+    const char *text;   /* the record's line, valid */
+    const char *what;   /* its name in messages */
+    const char *syntax; /* the hint in count messages, "" if none */
+    const char *first;  /* the name of its first number */
+    int numbers;        /* numbers in it */
+    int first_column;   /* column of its first number */
+} parse_records[] = {
+    {"0 0 0", "the camera position", "", "x", 3, 1},
+    {"-1 1 1", "the screen's top-left corner", "", "x", 3, 1},
+    {"1 1 1", "the screen's top-right corner", "", "x", 3, 1},
+    {"-1 -1 1", "the screen's bottom-left corner", "", "x", 3, 1},
+    {"4", "the horizontal resolution", "", "", 1, 1},
+    {"10 20 30", "the background colour", "", "red", 3, 1},
+    {"0 5 0 255 128 64", "the light", " (x y z r g b)", "x", 6, 1},
+    {"sphere: 0 0 5 1 200 100 50 0.25", "the sphere", " (cx cy cz radius r g b reflection)",
+     "centre x", 8, 9},
+};
+enum { PARSE_RECORDS = sizeof parse_records / sizeof parse_records[0] };
+
+/* Builds a scene of all records with record k's line replaced by line (or,
+ * when line is NULL, with the file cut just before record k). */
+static void parse_scene_with(char *buf, size_t size, int k, const char *line)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < PARSE_RECORDS && !(i == k && !line); i++)
+        n += (size_t)snprintf(buf + n, size - n, "%s\n", i == k ? line : parse_records[i].text);
+}
+
+/* Parses text, expecting the fault `message` at line:column. */
+static void parse_expect_fault(const char *text, int line, int column, const char *message)
+{
+    Scene sc;
+    Error err;
+
+    if (parse(text, &sc, &err) != -1) {
+        test_fail(__FILE__, __LINE__, "accepted: %s", text);
+        scene_free(&sc);
+        return;
+    }
+    if (strcmp(err.message, message) != 0 || err.line != line || err.column != column)
+        test_fail(__FILE__, __LINE__, "expected %d:%d \"%s\", got %d:%d \"%s\"", line, column,
+                  message, err.line, err.column, err.message);
+}
+
+static void parse_every_record_rejects_each_fault(void)
+{
+    for (int k = 0; k < PARSE_RECORDS; k++) {
+        char line[200], text[600], msg[300];
+        const char *t = parse_records[k].text, *what = parse_records[k].what;
+        int col = parse_records[k].first_column, n = parse_records[k].numbers;
+        const char *rest = strchr(t + col - 1, ' '); /* after the first number */
+
+        if (n == 1)
+            continue; /* the resolution has its own cases above */
+        /* one number missing: the caret is just past the line */
+        snprintf(line, sizeof line, "%.*s", (int)(strrchr(t, ' ') - t), t);
+        parse_scene_with(text, sizeof text, k, line);
+        snprintf(msg, sizeof msg, "expected %d numbers for %s%s, found %d", n, what,
+                 parse_records[k].syntax, n - 1);
+        parse_expect_fault(text, k + 1, (int)strlen(line) + 1, msg);
+        /* one number too many: the caret is on it */
+        snprintf(line, sizeof line, "%s 7", t);
+        parse_scene_with(text, sizeof text, k, line);
+        snprintf(msg, sizeof msg, "expected %d numbers for %s%s, found %d", n, what,
+                 parse_records[k].syntax, n + 1);
+        parse_expect_fault(text, k + 1, (int)strlen(t) + 2, msg);
+        /* the first number replaced by a word, infinity, a value too large */
+        snprintf(line, sizeof line, "%.*sabc%s", col - 1, t, rest);
+        parse_scene_with(text, sizeof text, k, line);
+        snprintf(msg, sizeof msg, "expected a number for %s's %s, found 'abc'", what,
+                 parse_records[k].first);
+        parse_expect_fault(text, k + 1, col, msg);
+        snprintf(line, sizeof line, "%.*s-inf%s", col - 1, t, rest);
+        parse_scene_with(text, sizeof text, k, line);
+        snprintf(msg, sizeof msg, "%s's %s must be a finite number, found '-inf'", what,
+                 parse_records[k].first);
+        parse_expect_fault(text, k + 1, col, msg);
+        snprintf(line, sizeof line, "%.*s2e15%s", col - 1, t, rest);
+        parse_scene_with(text, sizeof text, k, line);
+        snprintf(msg, sizeof msg, "%s's %s is out of range: '2e15' exceeds 1e15 in magnitude",
+                 what, parse_records[k].first);
+        parse_expect_fault(text, k + 1, col, msg);
+        /* the file ends before the record (spheres are optional) */
+        if (k < PARSE_RECORDS - 1) {
+            parse_scene_with(text, sizeof text, k, NULL);
+            snprintf(msg, sizeof msg, "expected %s%s, found the end of the file", what,
+                     *parse_records[k].syntax ? parse_records[k].syntax : " (3 numbers)");
+            parse_expect_fault(text, k + 1, 1, msg);
+        }
+    }
+}
+
 static void parse_error_excerpt_and_caret(void)
 {
     Scene sc;
@@ -315,6 +410,7 @@ const TestCase parse_tests[] = {
     {"parse_accepts_many_spheres", parse_accepts_many_spheres},
     {"parse_height_follows_the_screen", parse_height_follows_the_screen},
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
+    {"parse_every_record_rejects_each_fault", parse_every_record_rejects_each_fault},
     {"parse_error_excerpt_and_caret", parse_error_excerpt_and_caret},
     {"parse_file_errors", parse_file_errors},
     {NULL, NULL},
