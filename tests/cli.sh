@@ -146,26 +146,24 @@ awk 'BEGIN {
     for (i = 0; i < 3000; i++) printf "sphere: %d %d 40 0.3 200 100 50 0.5\n", i % 60 - 30, i / 60 - 25
 }' >"$T/slow.txt"
 printf 'old\n' >"$T/slow.ppm"
-"$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
-pid=$!
-n=0
-while [ $n -lt 100 ] && ! ls -A "$T" | grep -q '^\.slow\.ppm\.'; do sleep 0.1; n=$((n + 1)); done
-kill -INT $pid
-wait $pid
-code=$?
-[ "$code" = 130 ] && pass || fail "SIGINT: exit $code, expected 130"
-expect_grep "SIGINT message" "interrupted" "$T/err"
-expect_grep "SIGINT keeps output" "old" "$T/slow.ppm"
-expect_clean "SIGINT leaves no temporary file" "$T"
-"$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
-pid=$!
-n=0
-while [ $n -lt 100 ] && ! ls -A "$T" | grep -q '^\.slow\.ppm\.'; do sleep 0.1; n=$((n + 1)); done
-kill -TERM $pid
-wait $pid
-code=$?
-[ "$code" = 143 ] && pass || fail "SIGTERM: exit $code, expected 143"
-expect_clean "SIGTERM leaves no temporary file" "$T"
+
+# interrupt SIGNAL STATUS: starts the slow render, sends SIGNAL once its
+# temporary file exists, and checks the exit status and that nothing changed.
+interrupt() {
+    "$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
+    pid=$!
+    n=0
+    while [ $n -lt 100 ] && ! ls -A "$T" | grep -q '^\.slow\.ppm\.'; do sleep 0.1; n=$((n + 1)); done
+    kill -"$1" $pid
+    wait $pid
+    code=$?
+    [ "$code" = "$2" ] && pass || fail "SIG$1: exit $code, expected $2"
+    expect_grep "SIG$1 message" "interrupted" "$T/err"
+    expect_grep "SIG$1 keeps output" "old" "$T/slow.ppm"
+    expect_clean "SIG$1 leaves no temporary file" "$T"
+}
+interrupt INT 130
+interrupt TERM 143
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
