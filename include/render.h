@@ -16,8 +16,8 @@ typedef struct {
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's
- * camera width and height; cannot fail. */
-void render(const Scene *scene, const RenderOptions *opts, Image *img);
+ * camera width and height; cannot fail. Returns the number of threads used. */
+int render(const Scene *scene, const RenderOptions *opts, Image *img);
 
 /* Returns the number of threads render() can use by default: the number of
  * processors when built with OpenMP, else 1. */

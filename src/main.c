@@ -122,6 +122,7 @@ static int main_render(const Options *opts)
     Image img;
     OutFile out;
     Error err;
+    int threads;
 
     if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
         main_report(&err);
@@ -147,7 +148,7 @@ static int main_render(const Options *opts)
     if (outfile_open(&out, opts->output_path, &err) != 0)
         goto fail_image;
     main_temp_path = out.temp[0] ? out.temp : NULL;
-    render(&scene, &ropts, &img);
+    threads = render(&scene, &ropts, &img);
     main_mask_signals(SIG_BLOCK);
     if (ppm_write(out.fp, img.width, img.height, img.rgb) != 0) {
         error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
@@ -162,9 +163,11 @@ static int main_render(const Options *opts)
     main_temp_path = NULL;
     main_mask_signals(SIG_UNBLOCK);
     if (!opts->quiet && isatty(STDERR_FILENO))
-        fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu spheres, %.2f s, %d threads\n",
+        fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu sphere%s, %.2f s, %d thread%s\n",
                 strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
-                img.width, img.height, scene.sphere_count, main_now() - start, opts->threads);
+                img.width, img.height, scene.sphere_count, scene.sphere_count == 1 ? "" : "s",
+                main_now() - start, threads,
+                threads == 1 ? "" : "s");
     image_free(&img);
     scene_free(&scene);
     return 0;

@@ -17,7 +17,7 @@ static void render_row(const Scene *scene, const RenderOptions *opts, Image *img
     }
 }
 
-void render(const Scene *scene, const RenderOptions *opts, Image *img)
+int render(const Scene *scene, const RenderOptions *opts, Image *img)
 {
 #ifdef _OPENMP
     /* Rows are handed out one at a time: their costs differ widely. */
@@ -25,6 +25,11 @@ void render(const Scene *scene, const RenderOptions *opts, Image *img)
 #endif
     for (int y = 0; y < img->height; y++)
         render_row(scene, opts, img, y);
+#ifdef _OPENMP
+    return opts->threads;
+#else
+    return 1;
+#endif
 }
 
 int render_default_threads(void)

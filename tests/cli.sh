@@ -67,6 +67,14 @@ expect_exit render 0 "$RT" "$scene" "$T/course.ppm"
 [ ! -s "$T/err" ] && [ ! -s "$T/out" ] && pass || fail "render is not quiet" "$(cat "$T/err")"
 expect_clean "render leaves no temporary file" "$T"
 
+# --- on a terminal: a one-line summary, unless -q (util-linux's script fakes one) ---
+if script -qc true /dev/null >/dev/null 2>&1; then
+    script -qc "$RT $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
+    expect_grep "summary on a terminal" "raytrace: wrote $T/tty.ppm: 8 x 8 pixels, 1 sphere," "$T/tty"
+    script -qc "$RT -q $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
+    [ ! -s "$T/tty" ] && pass || fail "-q prints on a terminal" "$(cat "$T/tty")"
+fi
+
 # --- the course scene against the reference (independent implementation) ---
 expect_exit "course matches reference" 0 "$CMP" --max-diff 1 --max-fraction 0.005 tests/ref/course.ppm "$T/course.ppm"
 head -c 15 "$T/course.ppm" | od -c | head -1 | grep -q 'P   6  \\n   4   0   0       4   0   0  \\n   2   5   5  \\n' \
