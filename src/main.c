@@ -144,10 +144,13 @@ static int main_render(const Options *opts)
                   image_size(scene.camera.width, scene.camera.height));
         goto fail_scene;
     }
+    /* From the temporary file's creation on, an interrupt must remove it. */
     main_catch_signals();
+    main_mask_signals(SIG_BLOCK);
     if (outfile_open(&out, opts->output_path, &err) != 0)
         goto fail_image;
     main_temp_path = out.temp[0] ? out.temp : NULL;
+    main_mask_signals(SIG_UNBLOCK);
     threads = render(&scene, &ropts, &img);
     main_mask_signals(SIG_BLOCK);
     if (ppm_write(out.fp, img.width, img.height, img.rgb) != 0) {

@@ -250,7 +250,8 @@ static NumberStatus parse_non_decimal(const char *s, size_t len)
         len--;
     }
     if (parse_word_is(s, len, "inf") || parse_word_is(s, len, "infinity") ||
-        (len >= 3 && parse_word_is(s, 3, "nan")))
+        parse_word_is(s, len, "nan") ||
+        (len > 4 && parse_word_is(s, 4, "nan(") && s[len - 1] == ')'))
         return NUMBER_NONFINITE;
     if (len > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
         return NUMBER_HEX;

@@ -162,6 +162,8 @@ static const BadScene parse_bad_scenes[] = {
     {"0 0 inf\n", 1, 5, "the camera position's z must be a finite number, found 'inf'"},
     {"-Infinity 0 0\n", 1, 1, "the camera position's x must be a finite number, found '-Infinity'"},
     {"NaN 0 0\n", 1, 1, "the camera position's x must be a finite number, found 'NaN'"},
+    {"0 nan(0x1) 0\n", 1, 3, "the camera position's y must be a finite number, found 'nan(0x1)'"},
+    {"0 nano 0\n", 1, 3, "expected a number for the camera position's y, found 'nano'"},
     {"0x10 0 0\n", 1, 1,
      "the camera position's x must be a decimal number, found '0x10' (hexadecimal is not "
      "accepted)"},
