@@ -30,7 +30,7 @@ static const char *volatile main_temp_path;
 /* On SIGINT or SIGTERM: remove the temporary file, say so, exit 128 + sig. */
 static void main_on_signal(int sig)
 {
-    static const char msg[] = "raytrace: interrupted; no output written\n";
+    static const char msg[] = "raytrace: interrupted\n";
     const char *temp = main_temp_path;
 
     if (temp)
@@ -52,15 +52,27 @@ static void main_catch_signals(void)
     sigaction(SIGTERM, &sa, NULL);
 }
 
-/* Blocks (how = SIG_BLOCK) or unblocks (SIG_UNBLOCK) SIGINT and SIGTERM. */
-static void main_mask_signals(int how)
+/*
+ * Opens the output like outfile_open() and arranges for SIGINT and SIGTERM to
+ * remove its temporary file. Signals are held while the file is created, so
+ * none can strike between its creation and its registration; no other
+ * thread exists yet, so the mask of this one is enough.
+ */
+static int main_open_output(OutFile *out, const char *path, Error *err)
 {
-    sigset_t set;
+    sigset_t set, old;
+    int rc;
 
+    main_catch_signals();
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
-    sigprocmask(how, &set, NULL);
+    sigprocmask(SIG_BLOCK, &set, &old);
+    rc = outfile_open(out, path, err);
+    if (rc == 0 && out->temp[0])
+        main_temp_path = out->temp;
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return rc;
 }
 
 /* Prints err as "raytrace: FILE:LINE:COL: error: MESSAGE", then the line at
@@ -144,27 +156,19 @@ static int main_render(const Options *opts)
                   image_size(scene.camera.width, scene.camera.height));
         goto fail_scene;
     }
-    /* From the temporary file's creation on, an interrupt must remove it. */
-    main_catch_signals();
-    main_mask_signals(SIG_BLOCK);
-    if (outfile_open(&out, opts->output_path, &err) != 0)
+    if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
-    main_temp_path = out.temp[0] ? out.temp : NULL;
-    main_mask_signals(SIG_UNBLOCK);
     threads = render(&scene, &ropts, &img);
-    main_mask_signals(SIG_BLOCK);
+    /* An interrupt from here on still finds main_temp_path: before the rename
+     * it removes the unfinished file, after it the unlink finds nothing. */
     if (ppm_write(out.fp, img.width, img.height, img.rgb) != 0) {
         error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
         outfile_abort(&out);
-        main_temp_path = NULL;
         goto fail_image;
     }
-    if (outfile_commit(&out, &err) != 0) {
-        main_temp_path = NULL;
+    if (outfile_commit(&out, &err) != 0)
         goto fail_image;
-    }
     main_temp_path = NULL;
-    main_mask_signals(SIG_UNBLOCK);
     if (!opts->quiet && isatty(STDERR_FILENO))
         fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu sphere%s, %.2f s, %d thread%s\n",
                 strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
@@ -176,7 +180,7 @@ static int main_render(const Options *opts)
     return 0;
 
 fail_image:
-    main_mask_signals(SIG_UNBLOCK);
+    main_temp_path = NULL;
     image_free(&img);
 fail_scene:
     main_report(&err);
