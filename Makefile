@@ -8,7 +8,6 @@
 
 CC ?= cc
 CFLAGS ?= -O2 -g
-PREFIX ?= /usr/local
 
 BUILD := build
 

@@ -16,7 +16,8 @@
 #include "scene.h"
 
 /* Reads the scene file at path ("-": standard input) into *scene, which this
- * call initialises; returns 0, or -1 with *err filled and *scene empty. */
+ * call initialises, ready to render (a tiny scene is enlarged exactly by
+ * scene_fit_scale()); returns 0, or -1 with *err filled and *scene empty. */
 int parse_scene_file(const char *path, Scene *scene, Error *err);
 
 /* Same as parse_scene_file() for the len bytes at text (NUL bytes included),

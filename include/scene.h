@@ -26,6 +26,9 @@ typedef struct {
     Sphere *spheres;        /* file order; NULL when there are none */
     size_t sphere_count;    /* spheres in use */
     size_t sphere_capacity; /* spheres allocated */
+    int length_exponent;    /* every length above is the scene file's times
+                               2^length_exponent: 0 unless scene_fit_scale()
+                               enlarged a tiny scene */
 } Scene;
 
 /* Makes *scene an empty scene that owns nothing. */
@@ -37,5 +40,17 @@ void scene_free(Scene *scene);
 /* Appends a copy of *s; returns 0, or -1 with the scene unchanged when
  * memory runs out. */
 int scene_add_sphere(Scene *scene, const Sphere *s);
+
+/*
+ * Enlarges a tiny scene, one whose every coordinate and radius is below
+ * SCENE_TINY in magnitude, by the power of two that brings the largest into
+ * [0.5, 1), and records it in length_exponent. Multiplying every length by a
+ * power of two is exact and commutes with every operation the renderer
+ * uses, so the picture does not change; but squares and products of lengths
+ * no longer underflow. Other scenes are left as they are.
+ */
+void scene_fit_scale(Scene *scene);
+
+#define SCENE_TINY 0x1p-64 /* ~5.4e-20: smaller scenes are enlarged */
 
 #endif

@@ -76,4 +76,16 @@ static inline Vec3 vec3_abs(Vec3 a)
     return vec3(fabs(a.x), fabs(a.y), fabs(a.z));
 }
 
+/* Returns the largest absolute value among a's components. */
+static inline double vec3_max_abs(Vec3 a)
+{
+    return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+}
+
+/* Returns a * 2^k, exactly (barring overflow and underflow). */
+static inline Vec3 vec3_ldexp(Vec3 a, int k)
+{
+    return vec3(ldexp(a.x, k), ldexp(a.y, k), ldexp(a.z, k));
+}
+
 #endif

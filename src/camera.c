@@ -1,14 +1,34 @@
 /* camera.c: the screen's geometry and primary rays (see camera.h). */
 #include "camera.h"
 
+#include <float.h>
 #include <math.h>
 
 /* Below this sine of the angle between u and v the screen is degenerate. */
 #define CAMERA_MIN_SINE 1e-12
 
+/* Scales u and v by the power of two that brings their largest component
+ * into [0.5, 1). Exact, and it changes no ratio of lengths, but it keeps the
+ * squares inside vec3_length() from underflowing on a tiny screen. */
+static void camera_normalise_pair(Vec3 *u, Vec3 *v)
+{
+    double m = fmax(vec3_max_abs(*u), vec3_max_abs(*v));
+    int e;
+
+    if (!(m > 0 && m <= DBL_MAX))
+        return;
+    frexp(m, &e);
+    *u = vec3_ldexp(*u, -e);
+    *v = vec3_ldexp(*v, -e);
+}
+
 CameraScreenFault camera_check_screen(Vec3 u, Vec3 v)
 {
-    double lu = vec3_length(u), lv = vec3_length(v);
+    double lu, lv;
+
+    camera_normalise_pair(&u, &v);
+    lu = vec3_length(u);
+    lv = vec3_length(v);
 
     if (!(lu > 0))
         return CAMERA_SCREEN_NO_WIDTH;
@@ -21,7 +41,10 @@ CameraScreenFault camera_check_screen(Vec3 u, Vec3 v)
 
 double camera_height(Vec3 u, Vec3 v, int width)
 {
-    double h = floor(width * vec3_length(v) / vec3_length(u) + 0.5);
+    double h;
+
+    camera_normalise_pair(&u, &v);
+    h = floor(width * vec3_length(v) / vec3_length(u) + 0.5);
     return h < 1 ? 1 : h;
 }
 

@@ -685,6 +685,7 @@ int parse_scene_text(const char *name, const char *text, size_t len, Scene *scen
         scene_free(scene);
         return -1;
     }
+    scene_fit_scale(scene);
     return 0;
 }
 

@@ -1,6 +1,7 @@
 /* test_render.c: primary rays, thread independence, and renders that must
  * not change when the scene is scaled or moved far away. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -170,7 +171,80 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
     }
 }
 
+/* Writes the course scene with every length multiplied by factor, each
+ * number printed with 17 significant digits (so it reads back exactly). */
+static void course_scaled(char *buf, size_t size, double factor)
+{
+    static const double points[7][3] = {{100, 100, 0}, {90, 110, 30}, {110, 110, 30},
+                                        {90, 90, 30},   {200, 300, 0}, {90, 90, 60},
+                                        {100, 110, 60}};
+    static const double last[3] = {110, 110, 60};
+    const double *p[8];
+    size_t n = 0;
+
+    for (int i = 0; i < 7; i++)
+        p[i] = points[i];
+    p[7] = last;
+    for (int i = 0; i < 4; i++)
+        n += (size_t)snprintf(buf + n, size - n, "%.17g %.17g %.17g\n", p[i][0] * factor,
+                              p[i][1] * factor, p[i][2] * factor);
+    n += (size_t)snprintf(buf + n, size - n, "400\n80 80 100\n%.17g %.17g %.17g 245 200 200\n",
+                          p[4][0] * factor, p[4][1] * factor, p[4][2] * factor);
+    for (int i = 5; i < 8; i++)
+        n += (size_t)snprintf(buf + n, size - n, "sphere: %.17g %.17g %.17g %.17g %s 0.3\n",
+                              p[i][0] * factor, p[i][1] * factor, p[i][2] * factor, 7 * factor,
+                              i == 5 ? "250 0 0" : i == 6 ? "0 250 0" : "0 0 250");
+}
+
+/* Renders the scene text into img (allocated here); returns the scene's
+ * length_exponent, or -99999 (img left empty) if it does not parse. */
+static int render_text(const char *text, Image *img)
+{
+    RenderOptions opts = {10, 2};
+    Scene sc;
+    Error err;
+    int e;
+
+    if (parse_scene_text("t.txt", text, strlen(text), &sc, &err) != 0) {
+        test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
+        img->rgb = NULL;
+        return -99999;
+    }
+    e = sc.length_exponent;
+    CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));
+    render(&sc, &opts, img);
+    scene_free(&sc);
+    return e;
+}
+
+static void render_tiny_scenes_exactly(void)
+{
+    /* A scene 2^-300 times the course's is the same picture to the byte:
+     * it is enlarged by exactly 2^300 before rendering. One 1e-200 times
+     * the course's (not a power of two) is within one level. Without the
+     * enlargement, squares of its lengths underflow to zero. */
+    char text[2000];
+    Image ref, img;
+    size_t size, close = 0;
+
+    course_scaled(text, sizeof text, 1);
+    CHECK_INT(0, render_text(text, &ref));
+    course_scaled(text, sizeof text, 0x1p-300);
+    CHECK_INT(291, render_text(text, &img)); /* 300 * 2^-300 lies in [2^-292, 2^-291) */
+    size = image_size(ref.width, ref.height);
+    CHECK(img.rgb && memcmp(ref.rgb, img.rgb, size) == 0);
+    image_free(&img);
+    course_scaled(text, sizeof text, 1e-200);
+    CHECK(render_text(text, &img) > 600);
+    for (size_t k = 0; img.rgb && k < size; k++)
+        close += abs(ref.rgb[k] - img.rgb[k]) <= 1;
+    CHECK_INT((long long)size, (long long)close);
+    image_free(&img);
+    image_free(&ref);
+}
+
 const TestCase render_tests[] = {
+    {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},
     {"render_pixel_centres_map_to_the_screen", render_pixel_centres_map_to_the_screen},
     {"render_sheared_screen", render_sheared_screen},
     {"render_eye_on_the_screen_sees_background", render_eye_on_the_screen_sees_background},
