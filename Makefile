@@ -33,7 +33,7 @@ ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
 
-LIB_SRC := src/camera.c src/error.c src/file.c src/image.c src/options.c src/outfile.c \
+LIB_SRC := src/camera.c src/colour.c src/error.c src/file.c src/image.c src/options.c src/outfile.c \
 	src/parse.c src/ppm.c src/ray.c src/render.c src/scene.c src/sphere.c src/trace.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c

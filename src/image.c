@@ -1,17 +1,7 @@
-/* image.c: image storage and the one quantiser (see image.h, colour.h). */
+/* image.c: image storage (see image.h). */
 #include "image.h"
 
-#include <math.h>
 #include <stdlib.h>
-
-unsigned char colour_quantise(double x)
-{
-    if (!(x > 0)) /* also catches NaN */
-        return 0;
-    if (x >= 255)
-        return 255;
-    return (unsigned char)floor(x + 0.5);
-}
 
 size_t image_size(int width, int height)
 {
