@@ -134,6 +134,10 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         snprintf(msg, msg_size, npos == 0 ? "missing SCENE and OUTPUT" : "missing OUTPUT");
         return OPTIONS_USAGE;
     }
+    if (!*positional[0] || !*positional[1]) {
+        snprintf(msg, msg_size, "%s is an empty file name", *positional[0] ? "OUTPUT" : "SCENE");
+        return OPTIONS_USAGE;
+    }
     opts->scene_path = positional[0];
     opts->output_path = positional[1];
     return OPTIONS_RENDER;

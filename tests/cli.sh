@@ -59,6 +59,9 @@ for args in "" "$scene" "--bogus $scene x.ppm" "--max-depth $scene x.ppm" \
     n=$(wc -l <"$T/err")
     [ "$n" -eq 2 ] && pass || fail "usage '$args': $n lines on stderr, expected 2"
 done
+expect_exit "empty OUTPUT" 2 "$RT" "$scene" ""
+expect_line "empty OUTPUT" 1 "raytrace: OUTPUT is an empty file name" "$T/err"
+expect_exit "empty SCENE" 2 "$RT" "" "$T/x.ppm"
 expect_exit "option forms" 0 "$RT" --max-depth=3 -j1 -d 2 --threads 2 -q "$T/small.txt" "$T/forms.ppm"
 expect_exit "-- ends options" 0 "$RT" -- "$T/small.txt" "$T/forms.ppm"
 
