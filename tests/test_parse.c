@@ -91,27 +91,35 @@ static void parse_accepts_many_spheres(void)
     free(text);
 }
 
-static void parse_height_follows_the_screen(void)
+/* Returns the image height of the screen with the given corners at width
+ * W, or -1 if the scene does not parse. */
+static int height_of(const char *corners, const char *width)
 {
+    char text[300];
     Scene sc;
     Error err;
+    int h;
 
+    snprintf(text, sizeof text, CAMERA "%s%s\n0 0 0\n0 0 0 1 1 1\n", corners, width);
+    if (parse(text, &sc, &err) != 0)
+        return -1;
+    h = sc.camera.height;
+    scene_free(&sc);
+    return h;
+}
+
+static void parse_height_follows_the_screen(void)
+{
     /* |v| / |u| = 1 / 3 at width 4: 4 / 3 + 0.5 rounds down to 1.83 -> 1. */
-    CHECK_INT(0, parse(CAMERA "0 0 1\n3 0 1\n0 -1 1\n4\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
-    CHECK_INT(1, sc.camera.height);
-    scene_free(&sc);
+    CHECK_INT(1, height_of("0 0 1\n3 0 1\n0 -1 1\n", "4"));
     /* Half-way rounds up: 3 * 1 / 2 + 0.5 = 2. */
-    CHECK_INT(0, parse(CAMERA "0 0 1\n2 0 1\n0 -1 1\n3\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
-    CHECK_INT(2, sc.camera.height);
-    scene_free(&sc);
+    CHECK_INT(2, height_of("0 0 1\n2 0 1\n0 -1 1\n", "3"));
     /* A sheared screen: |v| = sqrt(2) with the left edge slanted 45 degrees. */
-    CHECK_INT(0, parse(CAMERA "0 0 1\n1 0 1\n1 -1 1\n100\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
-    CHECK_INT(141, sc.camera.height);
-    scene_free(&sc);
+    CHECK_INT(141, height_of("0 0 1\n1 0 1\n1 -1 1\n", "100"));
     /* A tiny height still gives one row. */
-    CHECK_INT(0, parse(CAMERA "0 0 1\n1 0 1\n0 -1e-9 1\n100\n0 0 0\n0 0 0 1 1 1\n", &sc, &err));
-    CHECK_INT(1, sc.camera.height);
-    scene_free(&sc);
+    CHECK_INT(1, height_of("0 0 1\n1 0 1\n0 -1e-9 1\n", "100"));
+    /* A screen 1e-200 across keeps its proportions (no underflow). */
+    CHECK_INT(50, height_of("0 0 1e-200\n2e-200 0 1e-200\n0 -1e-200 1e-200\n", "100"));
 }
 
 /* One malformed scene and the error it must produce. */
