@@ -82,6 +82,15 @@ static inline double vec3_max_abs(Vec3 a)
     return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
 }
 
+/* Returns the k for which m * 2^k lies in [0.5, 1), for finite m > 0: the
+ * exact change of unit that brings the magnitude m near 1. */
+static inline int vec3_unit_exponent(double m)
+{
+    int e;
+    frexp(m, &e);
+    return -e;
+}
+
 /* Returns a * 2^k, exactly (barring overflow and underflow). */
 static inline Vec3 vec3_ldexp(Vec3 a, int k)
 {

@@ -13,13 +13,13 @@
 static void camera_normalise_pair(Vec3 *u, Vec3 *v)
 {
     double m = fmax(vec3_max_abs(*u), vec3_max_abs(*v));
-    int e;
+    int k;
 
     if (!(m > 0 && m <= DBL_MAX))
         return;
-    frexp(m, &e);
-    *u = vec3_ldexp(*u, -e);
-    *v = vec3_ldexp(*v, -e);
+    k = vec3_unit_exponent(m);
+    *u = vec3_ldexp(*u, k);
+    *v = vec3_ldexp(*v, k);
 }
 
 CameraScreenFault camera_check_screen(Vec3 u, Vec3 v)

@@ -41,22 +41,22 @@ void scene_fit_scale(Scene *scene)
     Camera *cam = &scene->camera;
     double m = fmax(fmax(vec3_max_abs(cam->eye), vec3_max_abs(cam->top_left)),
                     fmax(vec3_max_abs(cam->u), vec3_max_abs(cam->v)));
-    int e;
+    int k;
 
     m = fmax(m, vec3_max_abs(scene->light.position));
-    for (size_t k = 0; k < scene->sphere_count; k++)
-        m = fmax(m, fmax(vec3_max_abs(scene->spheres[k].centre), scene->spheres[k].radius));
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
     if (!(m > 0 && m < SCENE_TINY))
         return;
-    frexp(m, &e);
-    cam->eye = vec3_ldexp(cam->eye, -e);
-    cam->top_left = vec3_ldexp(cam->top_left, -e);
-    cam->u = vec3_ldexp(cam->u, -e);
-    cam->v = vec3_ldexp(cam->v, -e);
-    scene->light.position = vec3_ldexp(scene->light.position, -e);
-    for (size_t k = 0; k < scene->sphere_count; k++) {
-        scene->spheres[k].centre = vec3_ldexp(scene->spheres[k].centre, -e);
-        scene->spheres[k].radius = ldexp(scene->spheres[k].radius, -e);
+    k = vec3_unit_exponent(m);
+    cam->eye = vec3_ldexp(cam->eye, k);
+    cam->top_left = vec3_ldexp(cam->top_left, k);
+    cam->u = vec3_ldexp(cam->u, k);
+    cam->v = vec3_ldexp(cam->v, k);
+    scene->light.position = vec3_ldexp(scene->light.position, k);
+    for (size_t i = 0; i < scene->sphere_count; i++) {
+        scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
+        scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);
     }
-    scene->length_exponent = -e;
+    scene->length_exponent = k;
 }
