@@ -23,6 +23,13 @@ typedef struct {
     Vec3 v;        /* BL - TL: the screen's left edge, top to bottom */
     int width;     /* pixels per row, 1..CAMERA_MAX_SIZE */
     int height;    /* rows, 1..CAMERA_MAX_SIZE, derived by camera_height() */
+    double aperture; /* lens diameter, scene units; 0 for a pinhole */
+    double focus;    /* distance from the eye to the plane in focus, measured
+                        along forward; used when aperture > 0 */
+    Vec3 forward;    /* unit normal of the screen, away from the eye */
+    Vec3 lens_u;     /* unit vector along u: the lens disk's first axis */
+    Vec3 lens_v;     /* unit vector in the screen's plane, orthogonal to
+                        lens_u, on v's side: the lens disk's second axis */
 } Camera;
 
 /* What camera_check_screen() finds wrong with a screen, if anything. */
@@ -40,8 +47,21 @@ CameraScreenFault camera_check_screen(Vec3 u, Vec3 v);
  * so that the caller can reject heights above CAMERA_MAX_SIZE. */
 double camera_height(Vec3 u, Vec3 v, int width);
 
+/* Gives the camera a thin lens of diameter aperture (> 0) that focuses on
+ * the plane parallel to the screen at distance focus (> 0) from the eye;
+ * returns -1, changing nothing, when the eye lies in the screen's plane (no
+ * direction is forward), else 0. The screen must be valid. */
+int camera_set_lens(Camera *cam, double aperture, double focus);
+
 /* Returns the primary ray from the eye through image position (x, y), with
  * a unit direction (all zero if the point is the eye itself). */
 Ray camera_ray(const Camera *cam, double x, double y);
+
+/* Returns the primary ray through image position (x, y) that leaves the
+ * lens at disk point lens (a point of the unit disk, scaled by half the
+ * aperture): it starts there and passes through the point of the focal
+ * plane that the pinhole ray through (x, y) meets, so points in that plane
+ * stay sharp. Without a lens (aperture 0) it is camera_ray(cam, x, y). */
+Ray camera_lens_ray(const Camera *cam, double x, double y, const double lens[2]);
 
 #endif

@@ -11,6 +11,7 @@ typedef struct {
     const char *output_path; /* image file, "-" for standard output */
     int max_depth;           /* deepest reflected ray traced */
     int threads;             /* render threads, >= 1 */
+    int samples;             /* samples per pixel from --spp, 0 when not given */
     int quiet;               /* 1: no summary even on a terminal */
 } Options;
 

@@ -14,6 +14,13 @@ typedef struct {
     Vec3 dir;    /* direction, any non-zero length */
 } Ray;
 
+/* A point on a surface, with what a secondary ray needs to leave it. */
+typedef struct {
+    Vec3 point;  /* on the surface, re-projected from the ray's hit */
+    Vec3 normal; /* the surface's outward unit normal at point */
+    Vec3 error;  /* per-component bound on |point - true surface point| */
+} SurfacePoint;
+
 /* Returns the point origin + t * dir. */
 static inline Vec3 ray_at(const Ray *ray, double t)
 {
@@ -27,6 +34,22 @@ static inline Vec3 ray_facing_normal(Vec3 n, Vec3 dir)
 {
     return vec3_dot(n, dir) > 0 ? vec3_neg(n) : n;
 }
+
+/* Returns the mirror image of direction d about the unit normal n:
+ * d - 2 (d . n) n. */
+static inline Vec3 ray_reflect(Vec3 d, Vec3 n)
+{
+    return vec3_sub(d, vec3_scale(n, 2 * vec3_dot(d, n)));
+}
+
+/*
+ * Bends direction d (any length) through a surface of unit normal n facing
+ * it (d . n <= 0) by Snell and Descartes' law n1 sin i1 = n2 sin i2, eta =
+ * n1 / n2 being the ratio of the indices on d's side and the far side;
+ * stores the unit refracted direction in *out and returns 1, or returns 0
+ * on total internal reflection (sin i2 would exceed 1).
+ */
+int ray_refract(Vec3 d, Vec3 n, double eta, Vec3 *out);
 
 /*
  * Returns a start point for a ray leaving the surface point p in direction

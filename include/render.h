@@ -1,8 +1,12 @@
 /*
  * render.h: turning a scene into an image, rows shared among threads.
  *
- * Each pixel is traced on its own from its own primary ray, so the bytes do
- * not depend on the number of threads or on how rows are scheduled.
+ * Each pixel is traced on its own from its own primary rays, so the bytes do
+ * not depend on the number of threads or on how rows are scheduled. With one
+ * sample per pixel the ray goes through the pixel's centre (and the lens's
+ * centre); with n, through n points of the pixel (and of the lens) placed by
+ * sampler.h, and the pixel is the mean of their colours, taken before the
+ * colour is clamped and rounded.
  */
 #ifndef RAYTRACE_RENDER_H
 #define RAYTRACE_RENDER_H
@@ -12,6 +16,7 @@
 
 typedef struct {
     int max_depth; /* deepest reflected ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
+    int samples;   /* samples per pixel, 1..SAMPLER_MAX */
     int threads;   /* worker threads, >= 1; 1 without OpenMP */
 } RenderOptions;
 

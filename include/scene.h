@@ -1,8 +1,11 @@
 /*
  * scene.h: everything a render needs, as the parser builds it.
  *
- * A Scene owns its sphere array; scene_free() releases it. Spheres keep the
- * order of the scene file, which decides exact ties between hits.
+ * A Scene owns its arrays of lights, shapes and textures; scene_free()
+ * releases them. Shapes keep the order of the scene file within their kind,
+ * and each records its position among all objects, which decides exact ties
+ * between hits. Flags say which optional features the scene uses, so that
+ * the renderer spends nothing on the others.
  */
 #ifndef RAYTRACE_SCENE_H
 #define RAYTRACE_SCENE_H
@@ -11,7 +14,10 @@
 
 #include "camera.h"
 #include "colour.h"
+#include "plane.h"
 #include "sphere.h"
+#include "texture.h"
+#include "triangle.h"
 #include "vec3.h"
 
 typedef struct {
@@ -20,12 +26,28 @@ typedef struct {
 } Light;
 
 typedef struct {
-    Camera camera;          /* eye, screen and image size */
+    Camera camera;          /* eye, screen, image size and lens */
     Colour background;      /* seen where a ray hits nothing, 0..255 */
-    Light light;            /* the single point light */
+    Colour ambient;         /* Ca, added to every lit surface; 0 by default */
+    int has_ambient;        /* an ambient: record set Ca */
+    Light *lights;          /* lights[0] is the header's light */
+    size_t light_count;     /* lights in use, >= 1 once parsed */
+    size_t light_capacity;  /* lights allocated */
     Sphere *spheres;        /* file order; NULL when there are none */
     size_t sphere_count;    /* spheres in use */
     size_t sphere_capacity; /* spheres allocated */
+    Plane *planes;          /* file order; NULL when there are none */
+    size_t plane_count;
+    size_t plane_capacity;
+    Triangle *triangles;    /* file order; NULL when there are none */
+    size_t triangle_count;
+    size_t triangle_capacity;
+    Texture *textures;      /* one per distinct texture file */
+    size_t texture_count;
+    size_t texture_capacity;
+    int has_transparency;   /* some object has T > 0 */
+    int samples;            /* samples per pixel a samples: record asks for,
+                               0 when the scene does not say */
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()
                                enlarged a tiny scene */
@@ -37,12 +59,23 @@ void scene_init(Scene *scene);
 /* Releases what *scene owns and leaves it empty. */
 void scene_free(Scene *scene);
 
-/* Appends a copy of *s; returns 0, or -1 with the scene unchanged when
- * memory runs out. */
+/* Each scene_add_*() appends a copy of its argument, giving a shape its
+ * position among the scene's objects; returns 0, or -1 with the scene
+ * unchanged when memory runs out. */
+int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
+int scene_add_plane(Scene *scene, const Plane *p);
+int scene_add_triangle(Scene *scene, const Triangle *t);
+
+/* Takes ownership of *tex as the scene's next texture; returns its index, or
+ * -1 (tex released) when memory runs out. */
+int scene_add_texture(Scene *scene, Texture *tex);
+
+/* Returns the number of objects (shapes) in the scene. */
+size_t scene_object_count(const Scene *scene);
 
 /*
- * Enlarges a tiny scene, one whose every coordinate and radius is below
+ * Enlarges a tiny scene, one whose every coordinate and length is below
  * SCENE_TINY in magnitude, by the power of two that brings the largest into
  * [0.5, 1), and records it in length_exponent. Multiplying every length by a
  * power of two is exact and commutes with every operation the renderer

@@ -10,24 +10,16 @@
 #ifndef RAYTRACE_SPHERE_H
 #define RAYTRACE_SPHERE_H
 
-#include "colour.h"
+#include "material.h"
 #include "ray.h"
 #include "vec3.h"
 
 typedef struct {
     Vec3 centre;       /* scene units */
     double radius;     /* scene units, > 0 */
-    Colour colour;     /* diffuse colour Ci, 0..255 per channel */
-    double reflection; /* mirror weight R, 0..1 */
-    int line;          /* line of the sphere's record in its scene file */
+    Material material; /* what the surface looks like */
+    unsigned order;    /* position among the scene's objects, for ties */
 } Sphere;
-
-/* A point on a sphere's surface, with what a secondary ray needs to leave it. */
-typedef struct {
-    Vec3 point;  /* on the surface, re-projected from the ray's hit */
-    Vec3 normal; /* outward unit normal at point */
-    Vec3 error;  /* per-component bound on |point - true surface point| */
-} SurfacePoint;
 
 /*
  * Finds where the ray first crosses s's surface with tmin < t < tmax (an open
@@ -36,8 +28,17 @@ typedef struct {
  */
 int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t);
 
+/* Returns how many times the ray crosses s's surface with tmin < t < tmax:
+ * 0, 1 or 2. */
+int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax);
+
 /* Re-projects p, a point near s's surface, onto the surface and returns it
  * with its outward normal and error bound. */
 SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p);
+
+/* Returns in uv the texture coordinates of the point of outward normal n:
+ * u = 0.5 + atan2(n.x, n.z) / (2 pi) around the y axis, v = 1 - acos(n.y) / pi
+ * from the south pole (v = 0) to the north pole (v = 1). */
+void sphere_uv(Vec3 n, double uv[2]);
 
 #endif

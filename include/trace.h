@@ -1,17 +1,25 @@
 /*
- * trace.h: following one ray through a scene: nearest hit, shadow test and
- * the course's recursive shading.
+ * trace.h: following one ray through a scene: nearest hit, shadows and the
+ * course's recursive shading, extended with its bonus features.
  *
- * The colour seen along a ray that hits sphere S at point P is
- *     C = (1 - R) * local + R * Cr
- *     local = E * max(0, N . L) * (Ci * Cs) / 255   (channel by channel)
- * with N the unit normal facing the ray, L the unit vector from P to the
- * light, E = 0 when any sphere's surface is crossed strictly between P and
- * the light (else 1), R and Ci the sphere's reflection and colour, Cs the
- * light's colour, and Cr the colour seen along the mirror ray d - 2 (d . N) N.
- * A ray that hits nothing sees the background. The primary ray has depth 0;
- * a reflected ray of depth k is traced only when k <= max_depth, otherwise
- * Cr = 0. Functions here are pure: safe to call from many threads at once.
+ * The colour seen along a ray that hits an object at point P is
+ *     C = (1 - R - T) * local + R * Cr + T * Ct
+ *     local = Ca * Ci / 255 + sum over lights of E * max(0, N . L) * Ci * Cs / 255
+ * channel by channel, with N the unit normal facing the ray, L the unit
+ * vector from P to the light, Ci the object's colour (or its texture's at P),
+ * Cs the light's colour, Ca the ambient colour (0 without an ambient:
+ * record), R and T the object's mirror and transparency weights, Cr the
+ * colour seen along the mirror ray d - 2 (d . N) N and Ct the colour seen
+ * along the refracted ray. E is the share of the light that reaches P: the
+ * product of T over every surface crossing strictly between P and the light
+ * (1 with none, 0 when an opaque surface is crossed). Refraction follows
+ * Snell and Descartes from index 1 into the object's index n when the ray
+ * meets the outer side of its surface, from n into 1 when it leaves; on
+ * total internal reflection the share T follows the mirror ray too. A ray
+ * that hits nothing sees the background. The primary ray has depth 0; a
+ * mirror or refracted ray of depth k is traced only when k <= max_depth,
+ * otherwise it contributes 0. Functions here are pure: safe to call from
+ * many threads at once.
  */
 #ifndef RAYTRACE_TRACE_H
 #define RAYTRACE_TRACE_H
@@ -22,21 +30,30 @@
 
 enum { TRACE_MAX_DEPTH_LIMIT = 1000 }; /* deepest max_depth accepted */
 
+/* The kinds of shape a ray can hit. */
+typedef enum { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_TRIANGLE } ShapeKind;
+
 typedef struct {
-    double t;             /* ray parameter of the crossing, > 0 */
-    const Sphere *sphere; /* the sphere crossed */
+    double t;       /* ray parameter of the crossing, > 0 */
+    ShapeKind kind; /* which array the object is in */
+    size_t index;   /* its index there */
+    unsigned order; /* its position among all objects */
 } Hit;
 
-/* Finds the sphere whose surface the ray crosses first at 0 < t < tmax, the
+/* Finds the object whose surface the ray crosses first at 0 < t < tmax, the
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
 int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit);
 
-/* Returns 1 when some sphere's surface crosses the segment from ray->origin
- * to ray->origin + ray->dir (0 < t < 1, ends excluded), else 0. */
+/* Returns 1 when some object's surface crosses the segment from
+ * ray->origin to ray->origin + ray->dir (0 < t < 1, ends excluded), else 0. */
 int trace_occluded(const Scene *scene, const Ray *segment);
 
-/* Returns the colour seen along ray, a ray of reflection depth `depth`
- * (0 for primary rays), tracing reflections down to max_depth. */
+/* Returns the share of light that passes along the segment: the product of
+ * the transparency T of every surface crossing on it (0 < t < 1). */
+double trace_transmittance(const Scene *scene, const Ray *segment);
+
+/* Returns the colour seen along ray, a ray of depth `depth` (0 for primary
+ * rays), tracing mirror and refracted rays down to max_depth. */
 Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth);
 
 #endif

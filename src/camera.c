@@ -62,3 +62,41 @@ Ray camera_ray(const Camera *cam, double x, double y)
     ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
     return ray;
 }
+
+int camera_set_lens(Camera *cam, double aperture, double focus)
+{
+    Vec3 u = cam->u, v = cam->v, n, lens_v;
+    double side;
+
+    camera_normalise_pair(&u, &v);
+    n = vec3_normalize(vec3_cross(u, v));
+    side = vec3_dot(n, vec3_sub(cam->top_left, cam->eye));
+    if (!(side != 0))
+        return -1;
+    if (side < 0)
+        n = vec3_neg(n);
+    cam->forward = n;
+    cam->lens_u = vec3_normalize(u);
+    lens_v = vec3_cross(n, cam->lens_u);
+    cam->lens_v = vec3_dot(lens_v, v) < 0 ? vec3_neg(lens_v) : lens_v;
+    cam->aperture = aperture;
+    cam->focus = focus;
+    return 0;
+}
+
+Ray camera_lens_ray(const Camera *cam, double x, double y, const double lens[2])
+{
+    Ray ray = camera_ray(cam, x, y);
+    double half = cam->aperture / 2;
+    Vec3 focal, start;
+
+    if (!(cam->aperture > 0))
+        return ray;
+    focal = vec3_add(cam->eye,
+                     vec3_scale(ray.dir, cam->focus / vec3_dot(ray.dir, cam->forward)));
+    start = vec3_add(cam->eye, vec3_add(vec3_scale(cam->lens_u, half * lens[0]),
+                                        vec3_scale(cam->lens_v, half * lens[1])));
+    ray.origin = start;
+    ray.dir = vec3_normalize(vec3_sub(focal, start));
+    return ray;
+}

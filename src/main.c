@@ -128,7 +128,7 @@ static double main_now(void)
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    RenderOptions ropts = {opts->max_depth, opts->threads};
+    RenderOptions ropts = {opts->max_depth, 1, opts->threads};
     double start = main_now();
     Scene scene;
     Image img;
@@ -150,6 +150,7 @@ static int main_render(const Options *opts)
                                            "overwrite it");
         goto fail_scene;
     }
+    ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
     if (image_init(&img, scene.camera.width, scene.camera.height) != 0) {
         error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes",
                   scene.camera.width, scene.camera.height,
@@ -170,10 +171,13 @@ static int main_render(const Options *opts)
         goto fail_image;
     main_temp_path = NULL;
     if (!opts->quiet && isatty(STDERR_FILENO))
-        fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu sphere%s, %.2f s, %d thread%s\n",
+        fprintf(stderr,
+                "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "
+                "%.2f s, %d thread%s\n",
                 strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
-                img.width, img.height, scene.sphere_count, scene.sphere_count == 1 ? "" : "s",
-                main_now() - start, threads,
+                img.width, img.height, scene_object_count(&scene),
+                scene_object_count(&scene) == 1 ? "" : "s", ropts.samples,
+                ropts.samples == 1 ? "" : "s", main_now() - start, threads,
                 threads == 1 ? "" : "s");
     image_free(&img);
     scene_free(&scene);

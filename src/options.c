@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "sampler.h"
 #include "trace.h"
 
 enum { OPTIONS_MAX_THREADS = 1024 };
@@ -18,6 +19,9 @@ const char *options_help(void)
            "Options:\n"
            "  -d, --max-depth N  trace reflections down to depth N, 0 to 1000\n"
            "                     (default 10; 0 traces no reflected rays)\n"
+           "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
+           "                     (anti-aliasing; a lens: record blurs with them);\n"
+           "                     default: the scene's samples: record, else 1\n"
            "  -j, --threads N    render with N threads, 1 to 1024 (default: one per\n"
            "                     processor; ignored in builds without OpenMP)\n"
            "  -q, --quiet        print nothing on success, even on a terminal\n"
@@ -93,6 +97,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
 {
     static const IntOption depth = {"--max-depth", "-d", 0, TRACE_MAX_DEPTH_LIMIT};
     static const IntOption threads = {"--threads", "-j", 1, OPTIONS_MAX_THREADS};
+    static const IntOption spp = {"--spp", "-s", 1, SAMPLER_MAX};
     const char *positional[2];
     int npos = 0, only_positional = 0;
 
@@ -100,6 +105,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->max_depth = 10;
     opts->threads = default_threads;
     opts->quiet = 0;
+    opts->samples = 0;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -122,6 +128,8 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         } else if ((m = options_match_int(&depth, argc, argv, &i, &opts->max_depth, msg,
                                           msg_size)) != 0 ||
                    (m = options_match_int(&threads, argc, argv, &i, &opts->threads, msg,
+                                          msg_size)) != 0 ||
+                   (m = options_match_int(&spp, argc, argv, &i, &opts->samples, msg,
                                           msg_size)) != 0) {
             if (m < 0)
                 return OPTIONS_USAGE;

@@ -10,7 +10,17 @@
  *   resolution -> digits                     (1..32768)
  *   background -> r g b                      (0..255 each)
  *   light      -> x y z r g b
- *   sphere     -> 'sphere:' cx cy cz radius r g b reflection
+ *   record     -> sphere | plane | triangle | light | ambient | samples
+ *                 | lens | texture                 (any order, any number)
+ *   sphere     -> 'sphere:' cx cy cz radius material
+ *   plane      -> 'plane:' px py pz nx ny nz material
+ *   triangle   -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 material
+ *   material   -> r g b reflection [transparency index]
+ *   light      -> 'light:' x y z r g b            (a further light)
+ *   ambient    -> 'ambient:' r g b                (at most once)
+ *   samples    -> 'samples:' digits               (at most once)
+ *   lens       -> 'lens:' aperture focus          (at most once)
+ *   texture    -> 'texture:' path [filter] number* (for the object before)
  *
  * Fields are separated by spaces or tabs; a line may end in CRLF.
  */
@@ -24,10 +34,12 @@
 #include <string.h>
 
 #include "file.h"
+#include "sampler.h"
 
 #define PARSE_MAX_MAGNITUDE 1e15 /* largest accepted |number| */
 
-enum { PARSE_MAX_TOKENS = 10 }; /* tokens kept per line: a keyword, 8 numbers, 1 extra */
+enum { PARSE_MAX_TOKENS = 18 }; /* tokens kept per line: a keyword, 15 numbers
+                                   (a transparent triangle), 2 extra */
 
 /* A field of a line: where it starts and how long it is. */
 typedef struct {
@@ -59,21 +71,33 @@ typedef struct {
     const char *end;   /* one past the last input byte */
     int lineno;        /* number of the last line read, 0 before the first */
     Error *err;        /* where faults are described */
+    int ambient_line;  /* line of the ambient: record, 0 before it */
+    int samples_line;  /* line of the samples: record, 0 before it */
+    int lens_line;     /* line of the lens: record, 0 before it */
+    int has_last;      /* an object has been read */
+    int last_kind;     /* which shape the last object is (a PARSE_SHAPE_*) */
+    size_t last_index; /* its index among the scene's shapes of that kind */
 } Parser;
+
+/* The shapes a texture: record may follow. */
+enum { PARSE_SHAPE_SPHERE, PARSE_SHAPE_PLANE, PARSE_SHAPE_TRIANGLE };
 
 /* What a number stands for, and so which values it may take. */
 typedef enum {
-    FIELD_COORD,     /* any finite value */
-    FIELD_COLOUR,    /* 0..255 */
-    FIELD_RADIUS,    /* > 0 */
-    FIELD_REFLECTION /* 0..1 */
+    FIELD_COORD,       /* any finite value */
+    FIELD_COLOUR,      /* 0..255 */
+    FIELD_POSITIVE,    /* > 0: radius, focal distance, tile size */
+    FIELD_NONNEGATIVE, /* >= 0: aperture */
+    FIELD_FRACTION,    /* 0..1: reflection, transparency */
+    FIELD_INDEX        /* > 0: refractive index */
 } FieldKind;
 
 /* The numbers of one record kind. */
 typedef struct {
     const char *what;          /* "the camera position" */
     const char *syntax;        /* "x y z r g b" for messages, or NULL */
-    int count;                 /* numbers in the record */
+    int count;                 /* numbers the record always has */
+    int optional;              /* numbers that may follow them, all or none */
     const char *const *names;  /* the numbers' names */
     const FieldKind *kinds;    /* the numbers' kinds */
 } RecordSpec;
@@ -85,26 +109,69 @@ static const FieldKind parse_rgb_kinds[] = {FIELD_COLOUR, FIELD_COLOUR, FIELD_CO
 static const char *const parse_light_names[] = {"x", "y", "z", "red", "green", "blue"};
 static const FieldKind parse_light_kinds[] = {FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
                                               FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
-static const char *const parse_sphere_names[] = {"centre x", "centre y", "centre z", "radius",
-                                                 "red",      "green",    "blue",     "reflection"};
-static const FieldKind parse_sphere_kinds[] = {FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
-                                               FIELD_RADIUS, FIELD_COLOUR, FIELD_COLOUR,
-                                               FIELD_COLOUR, FIELD_REFLECTION};
+static const char *const parse_sphere_names[] = {
+    "centre x", "centre y", "centre z",   "radius",          "red",
+    "green",    "blue",     "reflection", "transparency", "refractive index"};
+static const FieldKind parse_sphere_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+static const char *const parse_plane_names[] = {
+    "point x", "point y", "point z", "normal x",   "normal y",     "normal z",
+    "red",     "green",   "blue",    "reflection", "transparency", "refractive index"};
+static const FieldKind parse_plane_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+static const char *const parse_triangle_names[] = {
+    "x0",  "y0",    "z0",   "x1",         "y1",           "z1",
+    "x2",  "y2",    "z2",   "red",        "green",        "blue",
+    "reflection", "transparency", "refractive index"};
+static const FieldKind parse_triangle_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COLOUR,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+static const char *const parse_lens_names[] = {"aperture", "focal distance"};
+static const FieldKind parse_lens_kinds[] = {FIELD_NONNEGATIVE, FIELD_POSITIVE};
+static const char *const parse_tile_names[] = {"tile size"};
+static const FieldKind parse_tile_kinds[] = {FIELD_POSITIVE};
+static const char *const parse_uv_names[] = {"u0", "v0", "u1", "v1", "u2", "v2"};
+static const FieldKind parse_uv_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                           FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
-static const RecordSpec parse_camera = {"the camera position", NULL, 3, parse_xyz_names,
+static const RecordSpec parse_camera = {"the camera position", NULL, 3, 0, parse_xyz_names,
                                         parse_xyz_kinds};
-static const RecordSpec parse_top_left = {"the screen's top-left corner", NULL, 3,
+static const RecordSpec parse_top_left = {"the screen's top-left corner", NULL, 3, 0,
                                           parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_top_right = {"the screen's top-right corner", NULL, 3,
+static const RecordSpec parse_top_right = {"the screen's top-right corner", NULL, 3, 0,
                                            parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_bottom_left = {"the screen's bottom-left corner", NULL, 3,
+static const RecordSpec parse_bottom_left = {"the screen's bottom-left corner", NULL, 3, 0,
                                              parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_background = {"the background colour", NULL, 3, parse_rgb_names,
-                                            parse_rgb_kinds};
-static const RecordSpec parse_light = {"the light", "x y z r g b", 6, parse_light_names,
+static const RecordSpec parse_background = {"the background colour", NULL, 3, 0,
+                                            parse_rgb_names, parse_rgb_kinds};
+static const RecordSpec parse_light = {"the light", "x y z r g b", 6, 0, parse_light_names,
                                        parse_light_kinds};
-static const RecordSpec parse_sphere = {"the sphere", "cx cy cz radius r g b reflection", 8,
-                                        parse_sphere_names, parse_sphere_kinds};
+static const RecordSpec parse_sphere = {"the sphere",
+                                        "cx cy cz radius r g b reflection"
+                                        " [transparency index]",
+                                        8, 2, parse_sphere_names, parse_sphere_kinds};
+static const RecordSpec parse_plane = {"the plane",
+                                       "px py pz nx ny nz r g b reflection"
+                                       " [transparency index]",
+                                       10, 2, parse_plane_names, parse_plane_kinds};
+static const RecordSpec parse_triangle = {"the triangle",
+                                          "x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection"
+                                          " [transparency index]",
+                                          13, 2, parse_triangle_names, parse_triangle_kinds};
+static const RecordSpec parse_ambient = {"the ambient light", "r g b", 3, 0, parse_rgb_names,
+                                         parse_rgb_kinds};
+static const RecordSpec parse_lens = {"the lens", "aperture focal_distance", 2, 0,
+                                      parse_lens_names, parse_lens_kinds};
+static const RecordSpec parse_sphere_texture = {"the sphere's texture", "path [filter]", 0, 0,
+                                                NULL, NULL};
+static const RecordSpec parse_plane_texture = {"the plane's texture", "path [filter] [tile_size]",
+                                               0, 1, parse_tile_names, parse_tile_kinds};
+static const RecordSpec parse_triangle_texture = {"the triangle's texture",
+                                                  "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6,
+                                                  parse_uv_names, parse_uv_kinds};
 
 /* Writes tok into buf as 'tok' for a message: at most 40 bytes of it, with
  * control bytes shown as '?' and "..." where cut. */
@@ -359,14 +426,22 @@ static int parse_expect_number(Parser *P, const Record *rec, int k, const Record
             return -1;
         }
         break;
-    case FIELD_RADIUS:
+    case FIELD_POSITIVE:
+    case FIELD_INDEX:
         if (!(v > 0)) {
             parse_fail(P, &rec->line, t->column, "%s's %s must be greater than 0, found %s",
                        what, name, q);
             return -1;
         }
         break;
-    case FIELD_REFLECTION:
+    case FIELD_NONNEGATIVE:
+        if (!(v >= 0)) {
+            parse_fail(P, &rec->line, t->column, "%s's %s must be at least 0, found %s", what,
+                       name, q);
+            return -1;
+        }
+        break;
+    case FIELD_FRACTION:
         if (!(v >= 0 && v <= 1)) {
             parse_fail(P, &rec->line, t->column, "%s's %s must be in [0, 1], found %s", what,
                        name, q);
@@ -378,22 +453,33 @@ static int parse_expect_number(Parser *P, const Record *rec, int k, const Record
     return 0;
 }
 
-/* Records "expected N numbers for WHAT, found M" at column. */
+/* Records "expected N numbers for WHAT, found M" at column ("N or N+K" when
+ * spec has optional numbers). */
 static void parse_fail_count(Parser *P, const Record *rec, int column, const RecordSpec *spec,
                              int found)
 {
-    parse_fail(P, &rec->line, column, "expected %d numbers for %s%s%s%s, found %d", spec->count,
-               spec->what, spec->syntax ? " (" : "", spec->syntax ? spec->syntax : "",
+    char expected[32];
+
+    if (spec->optional)
+        snprintf(expected, sizeof expected, "%d or %d", spec->count,
+                 spec->count + spec->optional);
+    else
+        snprintf(expected, sizeof expected, "%d", spec->count);
+    parse_fail(P, &rec->line, column, "expected %s number%s for %s%s%s%s, found %d", expected,
+               spec->count + spec->optional == 1 ? "" : "s", spec->what,
+               spec->syntax ? " (" : "", spec->syntax ? spec->syntax : "",
                spec->syntax ? ")" : "", found);
 }
 
 /* Reads the numbers of spec from rec's tokens, starting at token `first`,
- * into values; returns 0, or -1 with the fault recorded. */
+ * into values; returns how many it read (count, or count + optional), or -1
+ * with the fault recorded. */
 static int parse_expect_numbers(Parser *P, const Record *rec, int first, const RecordSpec *spec,
                                 double *values)
 {
-    int found = rec->count - first;
-    int present = found < spec->count ? found : spec->count;
+    int found = rec->count - first, most = spec->count + spec->optional;
+    /* The optional numbers are read only when all of them are there. */
+    int present = found >= most ? most : found < spec->count ? found : spec->count;
 
     for (int i = 0; i < present; i++)
         if (parse_expect_number(P, rec, first + i, spec, i, &values[i]) != 0)
@@ -402,8 +488,12 @@ static int parse_expect_numbers(Parser *P, const Record *rec, int first, const R
         parse_fail_count(P, rec, rec->end_column, spec, found);
         return -1;
     }
-    if (found > spec->count) {
-        const Token *extra = &rec->tok[first + spec->count];
+    if (found > spec->count && found < most) {
+        parse_fail_count(P, rec, rec->tok[first + spec->count].column, spec, found);
+        return -1;
+    }
+    if (found > most) {
+        const Token *extra = &rec->tok[first + most];
         double ignored;
         char q[64];
 
@@ -416,7 +506,7 @@ static int parse_expect_numbers(Parser *P, const Record *rec, int first, const R
         parse_fail_count(P, rec, extra->column, spec, found);
         return -1;
     }
-    return 0;
+    return found;
 }
 
 /* Records that the input ends where the record `what` was expected: the
@@ -471,7 +561,7 @@ static int parse_header_numbers(Parser *P, const RecordSpec *spec, Record *rec, 
 
     if (parse_header_record(P, spec, syntax, rec) != 0)
         return -1;
-    return parse_expect_numbers(P, rec, 0, spec, values);
+    return parse_expect_numbers(P, rec, 0, spec, values) < 0 ? -1 : 0;
 }
 
 /* point -> x y z */
@@ -485,42 +575,48 @@ static int parse_point(Parser *P, const RecordSpec *spec, Record *rec, Vec3 *out
     return 0;
 }
 
-/* resolution -> digits, 1..CAMERA_MAX_SIZE */
-static int parse_resolution(Parser *P, Record *rec, int *width)
+/* whole -> digits, 1..max: token k of rec, which is what, counted in unit. */
+static int parse_whole_number(Parser *P, const Record *rec, int k, const char *what,
+                              const char *unit, long max, int *out)
 {
-    static const RecordSpec spec = {"the horizontal resolution", NULL, 1, NULL, NULL};
-    const Token *t;
+    const Token *t = &rec->tok[k];
     long v = 0;
     char q[64];
 
+    parse_quote(q, sizeof q, t->text, t->len);
+    for (size_t i = 0; i < t->len; i++) {
+        if (!isdigit((unsigned char)t->text[i])) {
+            parse_fail(P, &rec->line, t->column,
+                       "expected %s as a whole number of %s (decimal digits only), found %s",
+                       what, unit, q);
+            return -1;
+        }
+        if (v <= max)
+            v = v * 10 + (t->text[i] - '0');
+    }
+    if (v < 1 || v > max) {
+        parse_fail(P, &rec->line, t->column, "%s must be between 1 and %ld %s, found %s", what,
+                   max, unit, q);
+        return -1;
+    }
+    *out = (int)v;
+    return 0;
+}
+
+/* resolution -> digits, 1..CAMERA_MAX_SIZE */
+static int parse_resolution(Parser *P, Record *rec, int *width)
+{
+    static const RecordSpec spec = {"the horizontal resolution", NULL, 1, 0, NULL, NULL};
+
     if (parse_header_record(P, &spec, "a whole number of pixels", rec) != 0)
         return -1;
-    t = &rec->tok[0];
     if (rec->count > 1) {
         parse_fail(P, &rec->line, rec->tok[1].column,
                    "expected 1 number for the horizontal resolution, found %d", rec->count);
         return -1;
     }
-    parse_quote(q, sizeof q, t->text, t->len);
-    for (size_t i = 0; i < t->len; i++) {
-        if (!isdigit((unsigned char)t->text[i])) {
-            parse_fail(P, &rec->line, t->column,
-                       "expected the horizontal resolution as a whole number of pixels "
-                       "(decimal digits only), found %s",
-                       q);
-            return -1;
-        }
-        if (v <= CAMERA_MAX_SIZE)
-            v = v * 10 + (t->text[i] - '0');
-    }
-    if (v < 1 || v > CAMERA_MAX_SIZE) {
-        parse_fail(P, &rec->line, t->column,
-                   "the horizontal resolution must be between 1 and %d pixels, found %s",
-                   CAMERA_MAX_SIZE, q);
-        return -1;
-    }
-    *width = (int)v;
-    return 0;
+    return parse_whole_number(P, rec, 0, "the horizontal resolution", "pixels",
+                              CAMERA_MAX_SIZE, width);
 }
 
 /* colour -> r g b, each 0..255 */
@@ -534,16 +630,28 @@ static int parse_colour(Parser *P, const RecordSpec *spec, Record *rec, Colour *
     return 0;
 }
 
+/* Appends the light of values v (x y z r g b) to the scene. */
+static int parse_add_light(Parser *P, const double *v, Scene *scene)
+{
+    Light light;
+
+    light.position = vec3(v[0], v[1], v[2]);
+    light.colour = colour(v[3], v[4], v[5]);
+    if (scene_add_light(scene, &light) != 0) {
+        error_set(P->err, P->name, "out of memory after %zu lights", scene->light_count);
+        return -1;
+    }
+    return 0;
+}
+
 /* light -> x y z r g b */
-static int parse_light_record(Parser *P, Record *rec, Light *light)
+static int parse_light_record(Parser *P, Record *rec, Scene *scene)
 {
     double v[6];
 
     if (parse_header_numbers(P, &parse_light, rec, v) != 0)
         return -1;
-    light->position = vec3(v[0], v[1], v[2]);
-    light->colour = colour(v[3], v[4], v[5]);
-    return 0;
+    return parse_add_light(P, v, scene);
 }
 
 /* Checks the screen spanned by the corner records tl, tr and bl. */
@@ -599,30 +707,316 @@ static int parse_header(Parser *P, Scene *scene)
     }
     cam->height = (int)height;
     if (parse_colour(P, &parse_background, &rec, &scene->background) != 0 ||
-        parse_light_record(P, &rec, &scene->light) != 0)
+        parse_light_record(P, &rec, scene) != 0)
         return -1;
     return 0;
 }
 
-/* sphere -> 'sphere:' cx cy cz radius r g b reflection */
+/* material -> r g b reflection [transparency index]: the n numbers of spec
+ * from values[first] on (n = 4 or 6), read by parse_expect_numbers() from
+ * rec, where the first number is token first + 1; checks R + T <= 1. */
+static int parse_material(Parser *P, const Record *rec, const RecordSpec *spec, int first,
+                          const double *values, int n, Material *m)
+{
+    const double *v = values + first;
+
+    *m = material_plain(colour(v[0], v[1], v[2]), v[3]);
+    if (n == spec->count + spec->optional) {
+        /* A little slack, so that 0.1 + 0.9 passes whatever the rounding. */
+        if (v[3] + v[4] > 1 + 1e-12) {
+            const Token *t = &rec->tok[first + 1 + 4];
+            parse_fail(P, &rec->line, t->column,
+                       "%s's reflection plus transparency must be at most 1, found %g + %g",
+                       spec->what, v[3], v[4]);
+            return -1;
+        }
+        m->transparency = v[4];
+        m->ior = v[5];
+    }
+    return 0;
+}
+
+/* Remembers the object just added, for a texture: record after it. */
+static void parse_note_object(Parser *P, int kind, size_t index)
+{
+    P->has_last = 1;
+    P->last_kind = kind;
+    P->last_index = index;
+}
+
+/* Returns the material of the last object read (there must be one). */
+static Material *parse_last_material(Parser *P, Scene *scene)
+{
+    switch (P->last_kind) {
+    case PARSE_SHAPE_PLANE:
+        return &scene->planes[P->last_index].material;
+    case PARSE_SHAPE_TRIANGLE:
+        return &scene->triangles[P->last_index].material;
+    default:
+        return &scene->spheres[P->last_index].material;
+    }
+}
+
+/* Records that the scene ran out of memory after count objects. */
+static int parse_fail_memory(Parser *P, const Scene *scene)
+{
+    error_set(P->err, P->name, "out of memory after %zu objects", scene_object_count(scene));
+    return -1;
+}
+
+/* sphere -> 'sphere:' cx cy cz radius r g b reflection [transparency index] */
 static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
 {
-    double v[8];
+    double v[10];
+    int n = parse_expect_numbers(P, rec, 1, &parse_sphere, v);
     Sphere s;
 
-    if (parse_expect_numbers(P, rec, 1, &parse_sphere, v) != 0)
+    if (n < 0 || parse_material(P, rec, &parse_sphere, 4, v, n, &s.material) != 0)
         return -1;
     s.centre = vec3(v[0], v[1], v[2]);
     s.radius = v[3];
-    s.colour = colour(v[4], v[5], v[6]);
-    s.reflection = v[7];
-    s.line = rec->line.number;
-    if (scene_add_sphere(scene, &s) != 0) {
-        error_set(P->err, P->name, "out of memory after %zu spheres", scene->sphere_count);
+    if (scene_add_sphere(scene, &s) != 0)
+        return parse_fail_memory(P, scene);
+    parse_note_object(P, PARSE_SHAPE_SPHERE, scene->sphere_count - 1);
+    return 0;
+}
+
+/* plane -> 'plane:' px py pz nx ny nz r g b reflection [transparency index] */
+static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[12];
+    int n = parse_expect_numbers(P, rec, 1, &parse_plane, v);
+    Material m;
+    Plane pl;
+
+    if (n < 0 || parse_material(P, rec, &parse_plane, 6, v, n, &m) != 0)
+        return -1;
+    if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
+        parse_fail(P, &rec->line, rec->tok[4].column,
+                   "the plane's normal is the zero vector: it must give a direction");
+        return -1;
+    }
+    pl = plane_make(vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m);
+    if (scene_add_plane(scene, &pl) != 0)
+        return parse_fail_memory(P, scene);
+    parse_note_object(P, PARSE_SHAPE_PLANE, scene->plane_count - 1);
+    return 0;
+}
+
+/* triangle -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection
+ *             [transparency index] */
+static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[15];
+    int n = parse_expect_numbers(P, rec, 1, &parse_triangle, v);
+    Material m;
+    Triangle tri;
+
+    if (n < 0 || parse_material(P, rec, &parse_triangle, 9, v, n, &m) != 0)
+        return -1;
+    if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
+                      vec3(v[6], v[7], v[8]), m) != 0) {
+        parse_fail(P, &rec->line, rec->tok[0].column,
+                   "the triangle's three vertices lie on one line: it has no area");
+        return -1;
+    }
+    if (scene_add_triangle(scene, &tri) != 0)
+        return parse_fail_memory(P, scene);
+    parse_note_object(P, PARSE_SHAPE_TRIANGLE, scene->triangle_count - 1);
+    return 0;
+}
+
+/* light -> 'light:' x y z r g b */
+static int parse_extra_light_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[6];
+
+    if (parse_expect_numbers(P, rec, 1, &parse_light, v) < 0)
+        return -1;
+    return parse_add_light(P, v, scene);
+}
+
+/* Checks that the record keyword of rec, which may appear once, has not
+ * appeared before (on line *seen, 0 if not); then notes its line. */
+static int parse_once(Parser *P, const Record *rec, int *seen, const char *what)
+{
+    if (*seen) {
+        parse_fail(P, &rec->line, rec->tok[0].column, "%s is already set, on line %d", what,
+                   *seen);
+        return -1;
+    }
+    *seen = rec->line.number;
+    return 0;
+}
+
+/* ambient -> 'ambient:' r g b */
+static int parse_ambient_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[3];
+
+    if (parse_once(P, rec, &P->ambient_line, "the ambient light") != 0 ||
+        parse_expect_numbers(P, rec, 1, &parse_ambient, v) < 0)
+        return -1;
+    scene->ambient = colour(v[0], v[1], v[2]);
+    scene->has_ambient = 1;
+    return 0;
+}
+
+/* samples -> 'samples:' digits, 1..SAMPLER_MAX */
+static int parse_samples_record(Parser *P, const Record *rec, Scene *scene)
+{
+    if (parse_once(P, rec, &P->samples_line, "the number of samples per pixel") != 0)
+        return -1;
+    if (rec->count != 2) {
+        parse_fail(P, &rec->line, rec->count < 2 ? rec->end_column : rec->tok[2].column,
+                   "expected 1 number for the samples per pixel, found %d", rec->count - 1);
+        return -1;
+    }
+    return parse_whole_number(P, rec, 1, "the number of samples per pixel", "samples",
+                              SAMPLER_MAX, &scene->samples);
+}
+
+/* lens -> 'lens:' aperture focal_distance */
+static int parse_lens_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[2];
+
+    if (parse_once(P, rec, &P->lens_line, "the lens") != 0 ||
+        parse_expect_numbers(P, rec, 1, &parse_lens, v) < 0)
+        return -1;
+    if (v[0] > 0 && camera_set_lens(&scene->camera, v[0], v[1]) != 0) {
+        parse_fail(P, &rec->line, rec->tok[0].column,
+                   "the camera lies in the plane of its screen: a lens needs the screen in "
+                   "front of the camera");
         return -1;
     }
     return 0;
 }
+
+/* Says whether the len bytes at s spell the C string c exactly. */
+static int parse_token_is(const Token *t, const char *c)
+{
+    return t->len == strlen(c) && memcmp(t->text, c, t->len) == 0;
+}
+
+/* Loads the texture file named by token t (relative to the scene file's
+ * directory) into the scene, or finds it there already; returns its index,
+ * or -1 with the fault recorded at t. */
+static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scene *scene)
+{
+    const char *slash = strrchr(P->name, '/');
+    size_t dir = t->text[0] == '/' || !slash ? 0 : (size_t)(slash - P->name) + 1;
+    char *path = malloc(dir + t->len + 1), q[64];
+    Texture tex;
+    Error inner;
+    int index;
+
+    if (!path) {
+        error_set(P->err, P->name, "out of memory");
+        return -1;
+    }
+    memcpy(path, P->name, dir);
+    memcpy(path + dir, t->text, t->len);
+    path[dir + t->len] = '\0';
+    for (size_t i = 0; i < scene->texture_count; i++) {
+        if (strcmp(scene->textures[i].path, path) == 0) {
+            free(path);
+            return (int)i;
+        }
+    }
+    if (texture_load(&tex, path, path, &inner) != 0) {
+        parse_quote(q, sizeof q, t->text, t->len);
+        if (inner.line > 0)
+            parse_fail(P, &rec->line, t->column, "cannot use the texture %s: %s:%d:%d: %s", q,
+                       inner.file, inner.line, inner.column, inner.message);
+        else
+            parse_fail(P, &rec->line, t->column, "cannot use the texture %s: %s", q,
+                       inner.message);
+        free(path);
+        return -1;
+    }
+    free(path);
+    index = scene_add_texture(scene, &tex);
+    if (index < 0)
+        error_set(P->err, P->name, "out of memory after %zu textures", scene->texture_count);
+    return index;
+}
+
+/* texture -> 'texture:' path [nearest | bilinear] number*, for the object
+ * just before: none for a sphere, [tile_size] for a plane, [u0 v0 u1 v1 u2
+ * v2] for a triangle. */
+static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
+{
+    static const RecordSpec *const specs[] = {&parse_sphere_texture, &parse_plane_texture,
+                                              &parse_triangle_texture};
+    const RecordSpec *spec;
+    int first = 2, n, index;
+    double v[6];
+    TextureFilter filter = TEXTURE_BILINEAR;
+    Material *m;
+
+    if (!P->has_last) {
+        parse_fail(P, &rec->line, rec->tok[0].column,
+                   "a texture: record must follow the object it covers, and no object comes "
+                   "before it");
+        return -1;
+    }
+    spec = specs[P->last_kind];
+    m = parse_last_material(P, scene);
+    if (m->texture >= 0) {
+        parse_fail(P, &rec->line, rec->tok[0].column,
+                   "%s is already set: an object takes one texture: record", spec->what);
+        return -1;
+    }
+    if (rec->count < 2) {
+        parse_fail(P, &rec->line, rec->end_column,
+                   "expected the path of a PPM file for %s (%s), found the end of the line",
+                   spec->what, spec->syntax);
+        return -1;
+    }
+    if (rec->count > 2 && parse_token_is(&rec->tok[2], "nearest")) {
+        filter = TEXTURE_NEAREST;
+        first = 3;
+    } else if (rec->count > 2 && parse_token_is(&rec->tok[2], "bilinear")) {
+        first = 3;
+    }
+    n = parse_expect_numbers(P, rec, first, spec, v);
+    if (n < 0)
+        return -1;
+    index = parse_load_texture(P, rec, &rec->tok[1], scene);
+    if (index < 0)
+        return -1;
+    m = parse_last_material(P, scene);
+    m->texture = index;
+    m->filter = filter;
+    if (P->last_kind == PARSE_SHAPE_PLANE && n == 1)
+        scene->planes[P->last_index].tile = v[0];
+    if (P->last_kind == PARSE_SHAPE_TRIANGLE && n == 6)
+        for (int k = 0; k < 3; k++) {
+            scene->triangles[P->last_index].uv[k][0] = v[2 * k];
+            scene->triangles[P->last_index].uv[k][1] = v[2 * k + 1];
+        }
+    return 0;
+}
+
+/* A record that may follow the header, and what reads it. */
+typedef struct {
+    const char *keyword; /* with its colon */
+    int (*parse)(Parser *P, const Record *rec, Scene *scene);
+} RecordKind;
+
+static const RecordKind parse_records[] = {
+    {"sphere:", parse_sphere_record},   {"plane:", parse_plane_record},
+    {"triangle:", parse_triangle_record}, {"light:", parse_extra_light_record},
+    {"ambient:", parse_ambient_record}, {"samples:", parse_samples_record},
+    {"lens:", parse_lens_record},       {"texture:", parse_texture_record},
+};
+
+enum { PARSE_RECORD_KINDS = sizeof parse_records / sizeof parse_records[0] };
+
+#define PARSE_KEYWORD_LIST                                                                    \
+    "'sphere:', 'plane:', 'triangle:', 'light:', 'ambient:', 'samples:', 'lens:' or "         \
+    "'texture:'"
 
 /* Records why the first token of rec is not a known record keyword. */
 static void parse_fail_keyword(Parser *P, const Record *rec)
@@ -632,36 +1026,50 @@ static void parse_fail_keyword(Parser *P, const Record *rec)
     double ignored;
 
     parse_quote(q, sizeof q, t->text, t->len);
-    if (parse_word_is(t->text, t->len, "sphere:"))
-        parse_fail(P, &rec->line, t->column,
-                   "unknown record %s: keywords are lower case ('sphere:')", q);
-    else if (parse_word_is(t->text, t->len, "sphere"))
-        parse_fail(P, &rec->line, t->column,
-                   "expected 'sphere:' with its colon attached, found %s", q);
-    else if (parse_decimal(t->text, t->len, &ignored) != NUMBER_SYNTAX)
+    for (int k = 0; k < PARSE_RECORD_KINDS; k++) {
+        const char *kw = parse_records[k].keyword;
+        size_t n = strlen(kw);
+        char bare[16];
+
+        memcpy(bare, kw, n - 1);
+        bare[n - 1] = '\0';
+        if (parse_word_is(t->text, t->len, kw)) {
+            parse_fail(P, &rec->line, t->column,
+                       "unknown record %s: keywords are lower case ('%s')", q, kw);
+            return;
+        }
+        if (t->len == n - 1 && parse_word_is(t->text, t->len, bare)) {
+            parse_fail(P, &rec->line, t->column,
+                       "expected '%s' with its colon attached, found %s", kw, q);
+            return;
+        }
+    }
+    if (parse_decimal(t->text, t->len, &ignored) != NUMBER_SYNTAX)
         parse_fail(P, &rec->line, t->column,
                    "expected a record such as 'sphere:', found the number %s: the 7 header "
                    "records are complete",
                    q);
     else
-        parse_fail(P, &rec->line, t->column, "unknown record %s (expected 'sphere:')", q);
+        parse_fail(P, &rec->line, t->column, "unknown record %s (expected " PARSE_KEYWORD_LIST
+                   ")", q);
 }
 
-/* objects -> sphere* */
+/* objects -> record* */
 static int parse_objects(Parser *P, Scene *scene)
 {
     Record rec;
     int rc;
 
     while ((rc = parse_next_record(P, &rec)) == 1) {
-        const Token *t = &rec.tok[0];
-        if (t->len == 7 && memcmp(t->text, "sphere:", 7) == 0) {
-            if (parse_sphere_record(P, &rec, scene) != 0)
-                return -1;
-        } else {
+        int k = 0;
+        while (k < PARSE_RECORD_KINDS && !parse_token_is(&rec.tok[0], parse_records[k].keyword))
+            k++;
+        if (k == PARSE_RECORD_KINDS) {
             parse_fail_keyword(P, &rec);
             return -1;
         }
+        if (parse_records[k].parse(P, &rec, scene) != 0)
+            return -1;
     }
     return rc;
 }
@@ -681,6 +1089,10 @@ int parse_scene_text(const char *name, const char *text, size_t len, Scene *scen
     P.end = text + len;
     P.lineno = 0;
     P.err = err;
+    P.ambient_line = P.samples_line = P.lens_line = 0;
+    P.has_last = 0;
+    P.last_kind = PARSE_SHAPE_SPHERE;
+    P.last_index = 0;
     if (parse_header(&P, scene) != 0 || parse_objects(&P, scene) != 0) {
         scene_free(scene);
         return -1;

@@ -2,6 +2,7 @@
 #include "ppm.h"
 
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -101,19 +102,12 @@ void ppm_free(PpmImage *img)
     img->width = img->height = img->maxval = 0;
 }
 
-/* Reads the raster of a P6 file: one or two bytes per sample, big-endian. */
+/* Reads the raster of a P6 file, which holds count samples of one or two
+ * bytes, big-endian. */
 static int ppm_read_binary(PpmCursor *c, PpmImage *img, size_t count)
 {
     size_t bytes = img->maxval > 255 ? 2 : 1;
 
-    if ((size_t)(c->end - c->p) / bytes < count) {
-        char msg[200];
-        snprintf(msg, sizeof msg,
-                 "truncated pixel data: expected %zu bytes, found %zu", count * bytes,
-                 (size_t)(c->end - c->p));
-        ppm_fail(c, msg);
-        return -1;
-    }
     for (size_t k = 0; k < count; k++) {
         unsigned v = bytes == 2 ? (unsigned)(c->p[0] << 8 | c->p[1]) : c->p[0];
         if (v > (unsigned)img->maxval) {
@@ -181,6 +175,23 @@ int ppm_read(const char *path, PpmImage *img, Error *err)
         goto done;
     }
     count = 3 * (size_t)w * (size_t)h;
+    /* A header may promise more pixels than the file holds: say so before
+     * allocating for them. */
+    if (binary && (size_t)(c.end - c.p) / (maxval > 255 ? 2 : 1) < count) {
+        char msg[200];
+        snprintf(msg, sizeof msg, "truncated pixel data: expected %zu bytes, found %zu",
+                 count * (maxval > 255 ? 2 : 1), (size_t)(c.end - c.p));
+        ppm_fail(&c, msg);
+        goto done;
+    }
+    if (!binary && (size_t)(c.end - c.p) < count) {
+        char msg[200];
+        snprintf(msg, sizeof msg,
+                 "truncated pixel data: %zu samples need more than the %zu bytes left", count,
+                 (size_t)(c.end - c.p));
+        ppm_fail(&c, msg);
+        goto done;
+    }
     img->width = (int)w;
     img->height = (int)h;
     img->maxval = (int)maxval;

@@ -27,3 +27,15 @@ Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
     o.z = ray_nudge(o.z, offset.z);
     return o;
 }
+
+int ray_refract(Vec3 d, Vec3 n, double eta, Vec3 *out)
+{
+    Vec3 u = vec3_normalize(d);
+    double cos_i = -vec3_dot(u, n);
+    double k = 1 - eta * eta * (1 - cos_i * cos_i); /* cos^2 of the refracted angle */
+
+    if (k < 0)
+        return 0;
+    *out = vec3_normalize(vec3_add(vec3_scale(u, eta), vec3_scale(n, eta * cos_i - sqrt(k))));
+    return 1;
+}

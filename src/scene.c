@@ -9,43 +9,142 @@
 void scene_init(Scene *scene)
 {
     memset(scene, 0, sizeof *scene);
+    scene->lights = NULL;
     scene->spheres = NULL;
+    scene->planes = NULL;
+    scene->triangles = NULL;
+    scene->textures = NULL;
 }
 
 void scene_free(Scene *scene)
 {
+    for (size_t i = 0; i < scene->texture_count; i++)
+        texture_free(&scene->textures[i]);
+    free(scene->textures);
+    free(scene->lights);
     free(scene->spheres);
+    free(scene->planes);
+    free(scene->triangles);
     scene_init(scene);
+}
+
+/* Makes room for one more item of size bytes in the array *items holding
+ * count of *capacity; returns 0, or -1 leaving the array as it was. */
+static int scene_reserve(void **items, size_t *capacity, size_t count, size_t size)
+{
+    size_t cap;
+    void *grown;
+
+    if (count < *capacity)
+        return 0;
+    cap = *capacity ? 2 * *capacity : 16;
+    if (cap > SIZE_MAX / size)
+        return -1;
+    grown = realloc(*items, cap * size);
+    if (!grown)
+        return -1;
+    *items = grown;
+    *capacity = cap;
+    return 0;
+}
+
+size_t scene_object_count(const Scene *scene)
+{
+    return scene->sphere_count + scene->plane_count + scene->triangle_count;
+}
+
+int scene_add_light(Scene *scene, const Light *light)
+{
+    if (scene_reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count,
+                      sizeof *light) != 0)
+        return -1;
+    scene->lights[scene->light_count++] = *light;
+    return 0;
 }
 
 int scene_add_sphere(Scene *scene, const Sphere *s)
 {
-    if (scene->sphere_count == scene->sphere_capacity) {
-        size_t cap = scene->sphere_capacity ? 2 * scene->sphere_capacity : 16;
-        Sphere *grown;
-
-        if (cap > SIZE_MAX / sizeof *grown)
-            return -1;
-        grown = realloc(scene->spheres, cap * sizeof *grown);
-        if (!grown)
-            return -1;
-        scene->spheres = grown;
-        scene->sphere_capacity = cap;
-    }
-    scene->spheres[scene->sphere_count++] = *s;
+    if (scene_reserve((void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
+                      sizeof *s) != 0)
+        return -1;
+    scene->spheres[scene->sphere_count] = *s;
+    scene->spheres[scene->sphere_count].order = (unsigned)scene_object_count(scene);
+    scene->sphere_count++;
+    scene->has_transparency |= s->material.transparency > 0;
     return 0;
+}
+
+int scene_add_plane(Scene *scene, const Plane *p)
+{
+    if (scene_reserve((void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
+                      sizeof *p) != 0)
+        return -1;
+    scene->planes[scene->plane_count] = *p;
+    scene->planes[scene->plane_count].order = (unsigned)scene_object_count(scene);
+    scene->plane_count++;
+    scene->has_transparency |= p->material.transparency > 0;
+    return 0;
+}
+
+int scene_add_triangle(Scene *scene, const Triangle *t)
+{
+    if (scene_reserve((void **)&scene->triangles, &scene->triangle_capacity,
+                      scene->triangle_count, sizeof *t) != 0)
+        return -1;
+    scene->triangles[scene->triangle_count] = *t;
+    scene->triangles[scene->triangle_count].order = (unsigned)scene_object_count(scene);
+    scene->triangle_count++;
+    scene->has_transparency |= t->material.transparency > 0;
+    return 0;
+}
+
+int scene_add_texture(Scene *scene, Texture *tex)
+{
+    if (scene_reserve((void **)&scene->textures, &scene->texture_capacity,
+                      scene->texture_count, sizeof *tex) != 0) {
+        texture_free(tex);
+        return -1;
+    }
+    scene->textures[scene->texture_count] = *tex;
+    return (int)scene->texture_count++;
+}
+
+/* Returns the largest magnitude of the components of the n points at p. */
+static double scene_points_max(const Vec3 *p, size_t n)
+{
+    double m = 0;
+
+    for (size_t i = 0; i < n; i++)
+        m = fmax(m, vec3_max_abs(p[i]));
+    return m;
+}
+
+/* Returns the largest magnitude of every length in the scene. */
+static double scene_max_length(const Scene *scene)
+{
+    const Camera *cam = &scene->camera;
+    double m = fmax(fmax(vec3_max_abs(cam->eye), vec3_max_abs(cam->top_left)),
+                    fmax(vec3_max_abs(cam->u), vec3_max_abs(cam->v)));
+
+    m = fmax(m, fmax(cam->aperture, cam->aperture > 0 ? cam->focus : 0));
+    for (size_t i = 0; i < scene->light_count; i++)
+        m = fmax(m, vec3_max_abs(scene->lights[i].position));
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
+    for (size_t i = 0; i < scene->plane_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->planes[i].point),
+                        scene->planes[i].material.texture >= 0 ? scene->planes[i].tile : 0));
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        m = fmax(m, scene_points_max(scene->triangles[i].v, 3));
+    return m;
 }
 
 void scene_fit_scale(Scene *scene)
 {
     Camera *cam = &scene->camera;
-    double m = fmax(fmax(vec3_max_abs(cam->eye), vec3_max_abs(cam->top_left)),
-                    fmax(vec3_max_abs(cam->u), vec3_max_abs(cam->v)));
+    double m = scene_max_length(scene);
     int k;
 
-    m = fmax(m, vec3_max_abs(scene->light.position));
-    for (size_t i = 0; i < scene->sphere_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
     if (!(m > 0 && m < SCENE_TINY))
         return;
     k = vec3_unit_exponent(m);
@@ -53,10 +152,20 @@ void scene_fit_scale(Scene *scene)
     cam->top_left = vec3_ldexp(cam->top_left, k);
     cam->u = vec3_ldexp(cam->u, k);
     cam->v = vec3_ldexp(cam->v, k);
-    scene->light.position = vec3_ldexp(scene->light.position, k);
+    cam->aperture = ldexp(cam->aperture, k);
+    cam->focus = ldexp(cam->focus, k);
+    for (size_t i = 0; i < scene->light_count; i++)
+        scene->lights[i].position = vec3_ldexp(scene->lights[i].position, k);
     for (size_t i = 0; i < scene->sphere_count; i++) {
         scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
         scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);
     }
+    for (size_t i = 0; i < scene->plane_count; i++) {
+        scene->planes[i].point = vec3_ldexp(scene->planes[i].point, k);
+        scene->planes[i].tile = ldexp(scene->planes[i].tile, k);
+    }
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        for (int j = 0; j < 3; j++)
+            scene->triangles[i].v[j] = vec3_ldexp(scene->triangles[i].v[j], k);
     scene->length_exponent = k;
 }

@@ -25,7 +25,9 @@ static double sphere_gamma(double n)
     return n * u / (1 - n * u);
 }
 
-int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
+/* Finds the two ray parameters t0 <= t1 at which the ray's line crosses
+ * s's surface; returns 1, or 0 when the line misses the sphere. */
+static int sphere_roots(const Sphere *s, const Ray *ray, double *t0, double *t1)
 {
     Vec3 f = vec3_sub(ray->origin, s->centre);
     Vec3 d = ray->dir;
@@ -36,7 +38,7 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
      * to the line, so r2 - |l|^2 = (h^2 - a c) / a without cancellation. */
     Vec3 l = vec3_sub(f, vec3_scale(d, h / a));
     double disc = r2 - vec3_dot(l, l);
-    double c, q, t0, t1;
+    double c, q;
 
     if (!(disc >= 0))
         return 0;
@@ -44,16 +46,25 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
     q = -(h + copysign(sqrt(a * disc), h));
     if (q == 0) {
         /* h = 0 and disc = 0: the origin is the tangent point, t = 0 twice. */
-        t0 = t1 = 0;
+        *t0 = *t1 = 0;
     } else {
-        t0 = q / a;
-        t1 = c / q;
-        if (t0 > t1) {
-            double tmp = t0;
-            t0 = t1;
-            t1 = tmp;
+        *t0 = q / a;
+        *t1 = c / q;
+        if (*t0 > *t1) {
+            double tmp = *t0;
+            *t0 = *t1;
+            *t1 = tmp;
         }
     }
+    return 1;
+}
+
+int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
+{
+    double t0, t1;
+
+    if (!sphere_roots(s, ray, &t0, &t1))
+        return 0;
     if (t0 > tmin && t0 < tmax) {
         *t = t0;
         return 1;
@@ -63,6 +74,15 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
         return 1;
     }
     return 0;
+}
+
+int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax)
+{
+    double t0, t1;
+
+    if (!sphere_roots(s, ray, &t0, &t1))
+        return 0;
+    return (t0 > tmin && t0 < tmax) + (t1 > tmin && t1 < tmax);
 }
 
 SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
@@ -78,4 +98,13 @@ SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
     sp.point = vec3_add(s->centre, vec3_scale(sp.normal, s->radius));
     sp.error = vec3_scale(vec3_add(vec3_abs(s->centre), vec3(s->radius, s->radius, s->radius)), g);
     return sp;
+}
+
+void sphere_uv(Vec3 n, double uv[2])
+{
+    const double pi = 3.14159265358979323846;
+    double y = n.y > 1 ? 1 : n.y < -1 ? -1 : n.y;
+
+    uv[0] = 0.5 + atan2(n.x, n.z) / (2 * pi);
+    uv[1] = 1 - acos(y) / pi;
 }

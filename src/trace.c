@@ -3,6 +3,55 @@
 
 #include <math.h>
 
+#include "texture.h"
+
+/* Stores in *hit the object of kind, index and order crossed at t. */
+static void trace_set_hit(Hit *hit, double t, ShapeKind kind, size_t index, unsigned order)
+{
+    hit->t = t;
+    hit->kind = kind;
+    hit->index = index;
+    hit->order = order;
+}
+
+/* Says whether a crossing at t of the object of position order beats *hit
+ * (t is at most hit->t): it is nearer, or as near and listed first. */
+static int trace_beats(const Hit *hit, int found, double t, unsigned order)
+{
+    return !found || t < hit->t || order < hit->order;
+}
+
+/* Continues trace_nearest() over planes and triangles, after the spheres
+ * found *hit (when found); returns whether any object is hit. */
+static int trace_nearest_flat(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
+                              int found)
+{
+    /* An exact tie with an earlier-listed object must be seen: the bound is
+     * the next double above the best t. */
+    double bound = found ? nextafter(hit->t, INFINITY) : tmax;
+
+    for (size_t k = 0; k < scene->plane_count; k++) {
+        const Plane *pl = &scene->planes[k];
+        double t;
+        if (plane_intersect(pl, ray, 0, bound, &t) && trace_beats(hit, found, t, pl->order)) {
+            trace_set_hit(hit, t, SHAPE_PLANE, k, pl->order);
+            found = 1;
+            bound = nextafter(t, INFINITY);
+        }
+    }
+    for (size_t k = 0; k < scene->triangle_count; k++) {
+        const Triangle *tri = &scene->triangles[k];
+        double t;
+        if (triangle_intersect(tri, ray, 0, bound, &t) &&
+            trace_beats(hit, found, t, tri->order)) {
+            trace_set_hit(hit, t, SHAPE_TRIANGLE, k, tri->order);
+            found = 1;
+            bound = nextafter(t, INFINITY);
+        }
+    }
+    return found;
+}
+
 int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
 {
     int found = 0;
@@ -12,68 +61,194 @@ int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
         /* The interval is open at tmax, so an exact tie keeps the earlier sphere. */
         if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t)) {
             tmax = t;
-            hit->t = t;
-            hit->sphere = &scene->spheres[k];
+            trace_set_hit(hit, t, SHAPE_SPHERE, k, scene->spheres[k].order);
             found = 1;
         }
     }
+    if (scene->plane_count > 0 || scene->triangle_count > 0)
+        found = trace_nearest_flat(scene, ray, tmax, hit, found);
     return found;
 }
 
 int trace_occluded(const Scene *scene, const Ray *segment)
 {
-    for (size_t k = 0; k < scene->sphere_count; k++) {
-        double t;
+    double t;
+
+    for (size_t k = 0; k < scene->sphere_count; k++)
         if (sphere_intersect(&scene->spheres[k], segment, 0, 1, &t))
             return 1;
-    }
+    for (size_t k = 0; k < scene->plane_count; k++)
+        if (plane_intersect(&scene->planes[k], segment, 0, 1, &t))
+            return 1;
+    for (size_t k = 0; k < scene->triangle_count; k++)
+        if (triangle_intersect(&scene->triangles[k], segment, 0, 1, &t))
+            return 1;
     return 0;
 }
 
-/* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
- * surface point sp of sphere s, whose normal facing the viewer is n. */
-static Colour trace_direct(const Scene *scene, const Sphere *s, const SurfacePoint *sp, Vec3 n)
+/* Multiplies *share by the transparency of material m once per crossing
+ * (crossings of them); returns 0 once nothing is left, else 1. */
+static int trace_attenuate(double *share, const Material *m, int crossings)
 {
-    const Light *light = &scene->light;
-    Vec3 to_light = vec3_sub(light->position, sp->point);
+    for (int i = 0; i < crossings; i++)
+        *share *= m->transparency;
+    return *share > 0;
+}
+
+double trace_transmittance(const Scene *scene, const Ray *segment)
+{
+    double share = 1, t;
+
+    for (size_t k = 0; k < scene->sphere_count; k++) {
+        const Sphere *s = &scene->spheres[k];
+        if (!trace_attenuate(&share, &s->material, sphere_crossings(s, segment, 0, 1)))
+            return 0;
+    }
+    for (size_t k = 0; k < scene->plane_count; k++) {
+        const Plane *pl = &scene->planes[k];
+        if (!trace_attenuate(&share, &pl->material, plane_intersect(pl, segment, 0, 1, &t)))
+            return 0;
+    }
+    for (size_t k = 0; k < scene->triangle_count; k++) {
+        const Triangle *tri = &scene->triangles[k];
+        if (!trace_attenuate(&share, &tri->material, triangle_intersect(tri, segment, 0, 1, &t)))
+            return 0;
+    }
+    return share;
+}
+
+/* What shading needs to know about the point a ray hit. */
+typedef struct {
+    SurfacePoint sp;          /* the point, its outward normal and error */
+    const Material *material; /* the object's material */
+    Colour colour;            /* Ci: the material's colour or its texture's */
+} Shade;
+
+/* Returns the shading record of hit, crossed by ray. */
+static Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *hit)
+{
+    Shade sh;
+    double uv[2] = {0, 0};
+    int clamp_v = 0;
+
+    switch (hit->kind) {
+    case SHAPE_SPHERE: {
+        const Sphere *s = &scene->spheres[hit->index];
+        sh.sp = sphere_surface_at(s, ray_at(ray, hit->t));
+        sh.material = &s->material;
+        if (s->material.texture >= 0)
+            sphere_uv(sh.sp.normal, uv);
+        clamp_v = 1;
+        break;
+    }
+    case SHAPE_PLANE: {
+        const Plane *pl = &scene->planes[hit->index];
+        sh.sp = plane_surface_at(pl, ray_at(ray, hit->t));
+        sh.material = &pl->material;
+        if (pl->material.texture >= 0)
+            plane_uv(pl, sh.sp.point, uv);
+        break;
+    }
+    default: {
+        const Triangle *tri = &scene->triangles[hit->index];
+        sh.sp = triangle_surface_at(tri, ray, uv);
+        sh.material = &tri->material;
+        break;
+    }
+    }
+    if (sh.material->texture >= 0)
+        sh.colour = texture_lookup(&scene->textures[sh.material->texture], uv[0], uv[1],
+                                   sh.material->filter, clamp_v);
+    else
+        sh.colour = sh.material->colour;
+    return sh;
+}
+
+/* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
+ * shaded point sh, whose normal facing the viewer is n. */
+static Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n)
+{
+    Vec3 to_light = vec3_sub(light->position, sh->sp.point);
     double cos_a = vec3_dot(n, vec3_normalize(to_light));
+    Colour ci = sh->colour;
     Ray shadow;
 
     /* Facing away from the light (or the light on the point: NaN) means no
      * light, whatever E is: no shadow ray needed. */
     if (!(cos_a > 0))
         return colour(0, 0, 0);
-    shadow.origin = ray_offset_origin(sp->point, sp->error, n, to_light);
+    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
     shadow.dir = vec3_sub(light->position, shadow.origin);
-    if (trace_occluded(scene, &shadow))
+    if (scene->has_transparency) {
+        cos_a *= trace_transmittance(scene, &shadow);
+        if (!(cos_a > 0))
+            return colour(0, 0, 0);
+    } else if (trace_occluded(scene, &shadow)) {
         return colour(0, 0, 0);
-    return colour(cos_a * (s->colour.r * light->colour.r / 255),
-                  cos_a * (s->colour.g * light->colour.g / 255),
-                  cos_a * (s->colour.b * light->colour.b / 255));
+    }
+    return colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
+                  cos_a * (ci.b * light->colour.b / 255));
+}
+
+/* Returns the local term: the ambient light plus every light's direct
+ * contribution, at sh with facing normal n. */
+static Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
+{
+    Colour c = trace_direct(scene, &scene->lights[0], sh, n);
+
+    for (size_t i = 1; i < scene->light_count; i++)
+        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n));
+    if (scene->has_ambient)
+        c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
+                              scene->ambient.g * sh->colour.g / 255,
+                              scene->ambient.b * sh->colour.b / 255),
+                       c);
+    return c;
+}
+
+/* Returns weight times the colour seen along the ray leaving sh in
+ * direction dir, at depth `depth`. */
+static Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
+                              double weight, int depth, int max_depth)
+{
+    Ray r;
+
+    r.dir = dir;
+    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    return colour_scale(trace_ray(scene, &r, depth, max_depth), weight);
 }
 
 Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth)
 {
     Hit hit;
-    const Sphere *s;
-    SurfacePoint sp;
+    Shade sh;
     Vec3 n;
     Colour c;
+    double r, t, own;
 
     if (!trace_nearest(scene, ray, INFINITY, &hit))
         return scene->background;
-    s = hit.sphere;
-    sp = sphere_surface_at(s, ray_at(ray, hit.t));
-    n = ray_facing_normal(sp.normal, ray->dir);
-    c = colour_scale(trace_direct(scene, s, &sp, n), 1 - s->reflection);
-    if (s->reflection > 0 && depth + 1 <= max_depth) {
-        Vec3 d = ray->dir;
-        Ray mirror;
+    sh = trace_shade(scene, ray, &hit);
+    n = ray_facing_normal(sh.sp.normal, ray->dir);
+    r = sh.material->reflection;
+    t = sh.material->transparency;
+    own = 1 - r - t;
+    c = colour_scale(trace_local(scene, &sh, n), own > 0 ? own : 0);
+    if (depth + 1 > max_depth)
+        return c;
+    if (t > 0) {
+        /* Entering through the outer side, or leaving from inside. */
+        int entering = vec3_dot(ray->dir, sh.sp.normal) < 0;
+        double eta = entering ? 1 / sh.material->ior : sh.material->ior;
+        Vec3 bent;
 
-        mirror.dir = vec3_sub(d, vec3_scale(n, 2 * vec3_dot(d, n)));
-        mirror.origin = ray_offset_origin(sp.point, sp.error, n, mirror.dir);
-        c = colour_add(c, colour_scale(trace_ray(scene, &mirror, depth + 1, max_depth),
-                                       s->reflection));
+        if (ray_refract(ray->dir, n, eta, &bent))
+            c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth));
+        else
+            r += t; /* total internal reflection: the share T is mirrored */
     }
+    if (r > 0)
+        c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, n), r, depth + 1,
+                                          max_depth));
     return c;
 }

@@ -73,7 +73,7 @@ expect_clean "render leaves no temporary file" "$T"
 # --- on a terminal: a one-line summary, unless -q (util-linux's script fakes one) ---
 if script -qc true /dev/null >/dev/null 2>&1; then
     script -qc "$RT $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
-    expect_grep "summary on a terminal" "raytrace: wrote $T/tty.ppm: 8 x 8 pixels, 1 sphere," "$T/tty"
+    expect_grep "summary on a terminal" "raytrace: wrote $T/tty.ppm: 8 x 8 pixels, 1 object," "$T/tty"
     script -qc "$RT -q $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
     [ ! -s "$T/tty" ] && pass || fail "-q prints on a terminal" "$(cat "$T/tty")"
 fi

@@ -30,15 +30,16 @@ static void parse_accepts_the_example(void)
     CHECK_INT(4, sc.camera.width);
     CHECK_INT(4, sc.camera.height);
     CHECK_NEAR(20, sc.background.g, 0);
-    CHECK_NEAR(5, sc.light.position.y, 0);
-    CHECK_NEAR(64, sc.light.colour.b, 0);
+    CHECK_NEAR(5, sc.lights[0].position.y, 0);
+    CHECK_NEAR(64, sc.lights[0].colour.b, 0);
     CHECK_INT(2, (long long)sc.sphere_count);
     CHECK_NEAR(5, sc.spheres[0].centre.z, 0);
     CHECK_NEAR(1, sc.spheres[0].radius, 0);
-    CHECK_NEAR(100, sc.spheres[0].colour.g, 0);
-    CHECK_NEAR(0.25, sc.spheres[0].reflection, 0);
-    CHECK_INT(8, sc.spheres[0].line);
-    CHECK_NEAR(1, sc.spheres[1].reflection, 0);
+    CHECK_NEAR(100, sc.spheres[0].material.colour.g, 0);
+    CHECK_NEAR(0.25, sc.spheres[0].material.reflection, 0);
+    CHECK_INT(0, sc.spheres[0].order);
+    CHECK_INT(1, sc.spheres[1].order);
+    CHECK_NEAR(1, sc.spheres[1].material.reflection, 0);
     scene_free(&sc);
 }
 
@@ -52,8 +53,8 @@ static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
 
     CHECK_INT(0, parse(text, &sc, &err));
     CHECK_INT(1, (long long)sc.sphere_count);
-    CHECK_NEAR(0.25, sc.spheres[0].reflection, 0);
-    CHECK_INT(11, sc.spheres[0].line);
+    CHECK_NEAR(0.25, sc.spheres[0].material.reflection, 0);
+    CHECK_INT(0, sc.spheres[0].order);
     scene_free(&sc);
 }
 
@@ -68,8 +69,8 @@ static void parse_accepts_number_forms(void)
     CHECK_NEAR(1, sc.camera.eye.x, 0);
     CHECK_NEAR(0.5, sc.camera.eye.y, 0);
     CHECK_NEAR(-5, sc.camera.eye.z, 0);
-    CHECK_NEAR(1e15, sc.light.position.x, 0);
-    CHECK_NEAR(0, sc.light.position.z, 0);
+    CHECK_NEAR(1e15, sc.lights[0].position.x, 0);
+    CHECK_NEAR(0, sc.lights[0].position.z, 0);
     CHECK_NEAR(0.1, strtod("0.1", NULL), 0); /* correctly rounded, as strtod */
     scene_free(&sc);
 }
@@ -156,11 +157,14 @@ static const BadScene parse_bad_scenes[] = {
     {CAMERA CORNERS "4\n10 20 30\n0 5 0 255 128\n", 7, 14,
      "expected 6 numbers for the light (x y z r g b), found 5"},
     {HEADER "sphere: 0 0 5 1 200 100 50\n", 8, 27,
-     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 7"},
+     "expected 8 or 10 numbers for the sphere (cx cy cz radius r g b reflection [transparency "
+     "index]), found 7"},
     {HEADER "sphere: 0 0 5 1 200 100 50 0 1\n", 8, 30,
-     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 9"},
+     "expected 8 or 10 numbers for the sphere (cx cy cz radius r g b reflection [transparency "
+     "index]), found 9"},
     {HEADER "sphere:\n", 8, 8,
-     "expected 8 numbers for the sphere (cx cy cz radius r g b reflection), found 0"},
+     "expected 8 or 10 numbers for the sphere (cx cy cz radius r g b reflection [transparency "
+     "index]), found 0"},
     /* numbers */
     {"0 x 0\n", 1, 3, "expected a number for the camera position's y, found 'x'"},
     {"0 0 1,5\n", 1, 5, "expected a number for the camera position's z, found '1,5'"},
@@ -237,7 +241,9 @@ static const BadScene parse_bad_scenes[] = {
      "unknown record 'SPHERE:': keywords are lower case ('sphere:')"},
     {HEADER "sphere 0 0 5 1 200 100 50 0.25\n", 8, 1,
      "expected 'sphere:' with its colon attached, found 'sphere'"},
-    {HEADER "  triangle: 0 0 0\n", 8, 3, "unknown record 'triangle:' (expected 'sphere:')"},
+    {HEADER "  cube: 0 0 0\n", 8, 3,
+     "unknown record 'cube:' (expected 'sphere:', 'plane:', 'triangle:', 'light:', "
+     "'ambient:', 'samples:', 'lens:' or 'texture:')"},
     {HEADER SPHERE "1 2 3\n", 9, 1,
      "expected a record such as 'sphere:', found the number '1': the 7 header records are "
      "complete"},
@@ -286,19 +292,28 @@ static const struct {
     const char *text;   /* the record's line, valid */
     const char *what;   /* its name in messages */
     const char *syntax; /* the hint in count messages, "" if none */
+    const char *counts; /* the counts accepted, as messages say them */
     const char *first;  /* the name of its first number */
     int numbers;        /* numbers in it */
     int first_column;   /* column of its first number */
 } parse_records[] = {
-    {"0 0 0", "the camera position", "", "x", 3, 1},
-    {"-1 1 1", "the screen's top-left corner", "", "x", 3, 1},
-    {"1 1 1", "the screen's top-right corner", "", "x", 3, 1},
-    {"-1 -1 1", "the screen's bottom-left corner", "", "x", 3, 1},
-    {"4", "the horizontal resolution", "", "", 1, 1},
-    {"10 20 30", "the background colour", "", "red", 3, 1},
-    {"0 5 0 255 128 64", "the light", " (x y z r g b)", "x", 6, 1},
-    {"sphere: 0 0 5 1 200 100 50 0.25", "the sphere", " (cx cy cz radius r g b reflection)",
-     "centre x", 8, 9},
+    {"0 0 0", "the camera position", "", "3", "x", 3, 1},
+    {"-1 1 1", "the screen's top-left corner", "", "3", "x", 3, 1},
+    {"1 1 1", "the screen's top-right corner", "", "3", "x", 3, 1},
+    {"-1 -1 1", "the screen's bottom-left corner", "", "3", "x", 3, 1},
+    {"4", "the horizontal resolution", "", "1", "", 1, 1},
+    {"10 20 30", "the background colour", "", "3", "red", 3, 1},
+    {"0 5 0 255 128 64", "the light", " (x y z r g b)", "6", "x", 6, 1},
+    {"sphere: 0 0 5 1 200 100 50 0.25", "the sphere",
+     " (cx cy cz radius r g b reflection [transparency index])", "8 or 10", "centre x", 8, 9},
+    {"plane: 0 -1 0 0 1 0 100 100 100 0", "the plane",
+     " (px py pz nx ny nz r g b reflection [transparency index])", "10 or 12", "point x", 10, 8},
+    {"triangle: -1 0 4 1 0 4 0 1 4 255 0 0 0.5", "the triangle",
+     " (x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection [transparency index])", "13 or 15", "x0",
+     13, 11},
+    {"light: 5 5 0 255 255 255", "the light", " (x y z r g b)", "6", "x", 6, 8},
+    {"ambient: 20 20 20", "the ambient light", " (r g b)", "3", "red", 3, 10},
+    {"lens: 0.5 10", "the lens", " (aperture focal_distance)", "2", "aperture", 2, 7},
 };
 enum { PARSE_RECORDS = sizeof parse_records / sizeof parse_records[0] };
 
@@ -341,14 +356,14 @@ static void parse_every_record_rejects_each_fault(void)
         /* one number missing: the caret is just past the line */
         snprintf(line, sizeof line, "%.*s", (int)(strrchr(t, ' ') - t), t);
         parse_scene_with(text, sizeof text, k, line);
-        snprintf(msg, sizeof msg, "expected %d numbers for %s%s, found %d", n, what,
-                 parse_records[k].syntax, n - 1);
+        snprintf(msg, sizeof msg, "expected %s numbers for %s%s, found %d",
+                 parse_records[k].counts, what, parse_records[k].syntax, n - 1);
         parse_expect_fault(text, k + 1, (int)strlen(line) + 1, msg);
         /* one number too many: the caret is on it */
         snprintf(line, sizeof line, "%s 7", t);
         parse_scene_with(text, sizeof text, k, line);
-        snprintf(msg, sizeof msg, "expected %d numbers for %s%s, found %d", n, what,
-                 parse_records[k].syntax, n + 1);
+        snprintf(msg, sizeof msg, "expected %s numbers for %s%s, found %d",
+                 parse_records[k].counts, what, parse_records[k].syntax, n + 1);
         parse_expect_fault(text, k + 1, (int)strlen(t) + 2, msg);
         /* the first number replaced by a word, infinity, a value too large */
         snprintf(line, sizeof line, "%.*sabc%s", col - 1, t, rest);
@@ -366,8 +381,8 @@ static void parse_every_record_rejects_each_fault(void)
         snprintf(msg, sizeof msg, "%s's %s is out of range: '2e15' exceeds 1e15 in magnitude",
                  what, parse_records[k].first);
         parse_expect_fault(text, k + 1, col, msg);
-        /* the file ends before the record (spheres are optional) */
-        if (k < PARSE_RECORDS - 1) {
+        /* the file ends before a header record (the rest are optional) */
+        if (k < 7) {
             parse_scene_with(text, sizeof text, k, NULL);
             snprintf(msg, sizeof msg, "expected %s%s, found the end of the file", what,
                      *parse_records[k].syntax ? parse_records[k].syntax : " (3 numbers)");

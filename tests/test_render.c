@@ -12,7 +12,8 @@
 
 static Camera camera_square(void)
 {
-    Camera cam = {{0, 0, 0}, {-1, 1, 1}, {2, 0, 0}, {0, -2, 0}, 4, 4};
+    Camera cam = {{0, 0, 0}, {-1, 1, 1}, {2, 0, 0}, {0, -2, 0}, 4, 4, 0, 0, {0, 0, 0}, {0, 0, 0},
+                  {0, 0, 0}};
     return cam;
 }
 
@@ -34,7 +35,8 @@ static void render_pixel_centres_map_to_the_screen(void)
 static void render_sheared_screen(void)
 {
     /* Left edge slanted: row j's pixels shift right by (j + .5) / H of v.x. */
-    Camera cam = {{0, 0, 0}, {0, 0, 1}, {4, 0, 0}, {2, -2, 0}, 4, 2};
+    Camera cam = {{0, 0, 0}, {0, 0, 1}, {4, 0, 0}, {2, -2, 0}, 4, 2, 0, 0, {0, 0, 0}, {0, 0, 0},
+                  {0, 0, 0}};
     Ray r = camera_ray(&cam, 0.5, 1.5);
     Vec3 p = vec3(0.5 + 0.75 * 2, -0.75 * 2, 1);
     Vec3 expect = vec3_normalize(p);
@@ -47,7 +49,8 @@ static void render_sheared_screen(void)
 static void render_eye_on_the_screen_sees_background(void)
 {
     /* The eye is the first pixel's centre: a zero direction, no crash. */
-    Camera cam = {{-0.75, 0.75, 1}, {-1, 1, 1}, {2, 0, 0}, {0, -2, 0}, 4, 4};
+    Camera cam = {{-0.75, 0.75, 1}, {-1, 1, 1}, {2, 0, 0}, {0, -2, 0}, 4, 4, 0, 0, {0, 0, 0},
+                  {0, 0, 0}, {0, 0, 0}};
     Ray r = camera_ray(&cam, 0.5, 0.5);
     CHECK_NEAR(0, vec3_length(r.dir), 0);
 }
@@ -57,7 +60,7 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1}, two = {10, 2}, many = {10, 7};
+    RenderOptions one = {10, 1, 1}, two = {10, 1, 2}, many = {10, 1, 7};
 
     CHECK_INT(0, parse_scene_file("scenes/course.txt", &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -132,8 +135,10 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
         for (size_t oi = 0; oi < 3; oi++) {
             double s = scales[si], o = offsets[oi];
             Scene sc;
-            Sphere sp = {moved(base_centre, s, o), base_radius * s, base_colour, base_refl, 0};
-            RenderOptions opts = {10, 2};
+            Sphere sp = {moved(base_centre, s, o), base_radius * s,
+                         material_plain(base_colour, base_refl), 0};
+            RenderOptions opts = {10, 1, 2};
+            Light light;
             Image img;
             int bad = 0, lit = 0;
 
@@ -144,8 +149,9 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             sc.camera.v = vec3_sub(moved(base_bl, s, o), sc.camera.top_left);
             sc.camera.width = sc.camera.height = BASE_W;
             sc.background = base_bg;
-            sc.light.position = moved(base_light, s, o);
-            sc.light.colour = colour(255, 255, 255);
+            light.position = moved(base_light, s, o);
+            light.colour = colour(255, 255, 255);
+            CHECK_INT(0, scene_add_light(&sc, &light));
             CHECK_INT(0, scene_add_sphere(&sc, &sp));
             CHECK_INT(0, image_init(&img, BASE_W, BASE_W));
             render(&sc, &opts, &img);
@@ -200,7 +206,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 2};
+    RenderOptions opts = {10, 1, 2};
     Scene sc;
     Error err;
     int e;

@@ -10,18 +10,18 @@
 /* An empty scene: white light at `light`, background (10, 20, 30). */
 static Scene scene_lit_from(Vec3 light)
 {
+    Light white = {light, {255, 255, 255}};
     Scene sc;
 
     scene_init(&sc);
     sc.background = colour(10, 20, 30);
-    sc.light.position = light;
-    sc.light.colour = colour(255, 255, 255);
+    CHECK_INT(0, scene_add_light(&sc, &white));
     return sc;
 }
 
 static void add_sphere(Scene *sc, Vec3 c, double r, Colour col, double refl)
 {
-    Sphere s = {c, r, col, refl, 0};
+    Sphere s = {c, r, material_plain(col, refl), 0};
     CHECK_INT(0, scene_add_sphere(sc, &s));
 }
 
@@ -53,13 +53,13 @@ static void trace_lit_head_on_and_at_60_degrees(void)
     /* Ray down the z axis onto the pole (0, 0, 1) of a unit sphere. */
     Scene sc = scene_lit_from(vec3(0, 0, 10));
     add_sphere(&sc, vec3(0, 0, 0), 1, colour(200, 100, 50), 0);
-    sc.light.colour = colour(255, 127.5, 51);
+    sc.lights[0].colour = colour(255, 127.5, 51);
     CHECK_COLOUR(200, 50, 10, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* Light 60 degrees off the normal: cos = 1/2. */
-    sc.light.position = vec3(10 * sin(PI / 3), 0, 1 + 10 * cos(PI / 3));
+    sc.lights[0].position = vec3(10 * sin(PI / 3), 0, 1 + 10 * cos(PI / 3));
     CHECK_COLOUR(100, 25, 5, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* Light below the horizon of the point: cos < 0, no light. */
-    sc.light.position = vec3(10, 0, 0.5);
+    sc.lights[0].position = vec3(10, 0, 0.5);
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 0);
     scene_free(&sc);
 }
@@ -104,10 +104,10 @@ static void trace_mirror_reflects_background_and_spheres(void)
      * the background. */
     CHECK_COLOUR(10, 20, 30, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* Half a mirror: half its own light, half the background. */
-    sc.spheres[0].reflection = 0.5;
+    sc.spheres[0].material.reflection = 0.5;
     CHECK_COLOUR(105, 60, 40, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* A green ball behind the eye, lit from below, is seen in the mirror. */
-    sc.spheres[0].reflection = 1;
+    sc.spheres[0].material.reflection = 1;
     add_sphere(&sc, vec3(0, 0, 8), 1, colour(0, 250, 0), 0);
     CHECK_COLOUR(0, 250, 0, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     scene_free(&sc);
@@ -136,7 +136,7 @@ static void trace_camera_inside_a_sphere(void)
     Scene sc = scene_lit_from(vec3(0, 0, 0));
     add_sphere(&sc, vec3(0, 0, 0), 10, colour(200, 100, 50), 0);
     CHECK_COLOUR(200, 100, 50, seen(&sc, vec3(0, 0, 0), vec3(-3, 1, 2), 10), 1e-9);
-    sc.light.position = vec3(0, 0, 20);
+    sc.lights[0].position = vec3(0, 0, 20);
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(0, 0, 0), vec3(0, 0, -1), 10), 0);
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(0, 0, 0), vec3(0, 0, 1), 10), 0);
     scene_free(&sc);
@@ -162,7 +162,7 @@ static void trace_nearest_and_occluded(void)
     add_sphere(&sc, vec3(0, 0, 5), 1, colour(1, 1, 1), 0);
     CHECK(trace_nearest(&sc, &r, INFINITY, &hit));
     CHECK_NEAR(4, hit.t, 0);
-    CHECK(hit.sphere == &sc.spheres[1]);
+    CHECK(hit.kind == SHAPE_SPHERE && hit.index == 1);
     CHECK(!trace_nearest(&sc, &r, 4, &hit));
     CHECK(!trace_occluded(&sc, &seg)); /* ends exactly on the surface: not crossed */
     seg.dir.z = 4.5;

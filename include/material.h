@@ -1,0 +1,35 @@
+/*
+ * material.h: how a surface answers light: its colour, mirror and
+ * transparency weights, refractive index and texture.
+ *
+ * Every shape carries one. The shading rule that uses it is in trace.h.
+ */
+#ifndef RAYTRACE_MATERIAL_H
+#define RAYTRACE_MATERIAL_H
+
+#include "colour.h"
+
+/* How a texture is read between texel centres. */
+typedef enum {
+    TEXTURE_NEAREST, /* the texel the point falls in */
+    TEXTURE_BILINEAR /* the four nearest texels, weighted by distance */
+} TextureFilter;
+
+typedef struct {
+    Colour colour;         /* diffuse colour Ci, 0..255 per channel */
+    double reflection;     /* mirror weight R, 0..1 */
+    double transparency;   /* transmitted weight T, 0..1, R + T <= 1 */
+    double ior;            /* refractive index n, > 0 (1 when T = 0) */
+    int texture;           /* index in the scene's textures, or -1: Ci is
+                              then the colour above */
+    TextureFilter filter;  /* lookup used with the texture */
+} Material;
+
+/* Returns the opaque, untextured material of colour c and mirror weight r. */
+static inline Material material_plain(Colour c, double r)
+{
+    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST};
+    return m;
+}
+
+#endif

@@ -1,0 +1,42 @@
+/*
+ * sampler.h: where in a pixel, and where on the lens, each sample goes.
+ *
+ * A pixel's n samples follow a multi-jittered pattern (Chiu, Shirley and
+ * Wang, "Multi-jittered sampling", Graphics Gems IV): the pixel is cut into
+ * m columns and n / m rows (m the largest divisor of n not above its square
+ * root), every cell holds one sample, and, seen along either axis alone,
+ * the n samples also fall one in each of n equal strips. Positions come
+ * from a hash of the pixel's coordinates, the sample's number and the
+ * dimension (pixel area, lens disk): no state, no allocation, and the same
+ * numbers whichever thread renders the pixel.
+ */
+#ifndef RAYTRACE_SAMPLER_H
+#define RAYTRACE_SAMPLER_H
+
+enum {
+    SAMPLER_MAX = 65536,   /* most samples per pixel */
+    SAMPLER_DIM_PIXEL = 0, /* positions in the pixel */
+    SAMPLER_DIM_LENS = 1   /* positions on the lens */
+};
+
+/* The layout of n samples: columns x rows = n. */
+typedef struct {
+    unsigned n;    /* samples, 1..SAMPLER_MAX */
+    unsigned cols; /* largest divisor of n at most sqrt(n) */
+    unsigned rows; /* n / cols */
+} SamplerGrid;
+
+/* Returns the layout of n samples (1 <= n <= SAMPLER_MAX). */
+SamplerGrid sampler_grid(unsigned n);
+
+/* Stores in xy sample k (0 <= k < g->n) of pixel (px, py) in dimension dim:
+ * a point of the unit square [0, 1]^2. With one sample it is the centre,
+ * (0.5, 0.5). */
+void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2]);
+
+/* Maps the point xy of the unit square to the unit disk, preserving area
+ * and keeping neighbours together (Shirley and Chiu's concentric map); the
+ * square's centre goes to the disk's. */
+void sampler_disk(const double xy[2], double disk[2]);
+
+#endif
