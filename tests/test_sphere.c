@@ -1,8 +1,8 @@
 /* test_sphere.c: ray/sphere intersection and safe secondary-ray origins. */
 #include <math.h>
-#include <stdint.h>
 
 #include "ray.h"
+#include "rng.h"
 #include "sphere.h"
 #include "test.h"
 
@@ -130,38 +130,6 @@ static void sphere_far_away_off_axis_exact_t(void)
     CHECK_NEAR(1, vec3_length(vec3_sub(ray_at(&r, t), c)), 1e-7);
 }
 
-/* splitmix64: a small, fixed random stream so every run tests the same cases. */
-static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
-static double rng_uniform(void) /* in [0, 1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1p-53;
-}
-static double rng_range(double lo, double hi)
-{
-    return lo + (hi - lo) * rng_uniform();
-}
-static Vec3 rng_unit_vector(void)
-{
-    double z = rng_range(-1, 1), a = rng_range(0, 2 * PI), r = sqrt(1 - z * z);
-    return vec3(r * cos(a), r * sin(a), z);
-}
-static double rng_log_scale(double lo_exp, double hi_exp)
-{
-    return pow(10, rng_range(lo_exp, hi_exp));
-}
-
-/* Returns a unit direction at angle with cosine `c` to unit n. */
-static Vec3 direction_at_cosine(Vec3 n, double c)
-{
-    Vec3 t = vec3_cross(n, rng_unit_vector());
-    t = vec3_normalize(t);
-    return vec3_normalize(vec3_add(vec3_scale(n, c), vec3_scale(t, sqrt(1 - c * c))));
-}
-
 static void sphere_spawned_rays_never_rehit_their_sphere(void)
 {
     /* pbrt-v4's Reintersect idea: hit a sphere at a random scale and place,
@@ -195,7 +163,7 @@ static void sphere_spawned_rays_never_rehit_their_sphere(void)
         n = ray_facing_normal(sp.normal, ray.dir);
         for (int j = 0; j < 8; j++) {
             double cosine = j < 4 ? pow(10, -4.0 * j) : fmax(rng_uniform(), 1e-12);
-            Vec3 w = direction_at_cosine(n, cosine);
+            Vec3 w = rng_direction_at_cosine(n, cosine);
             Ray away = {ray_offset_origin(sp.point, sp.error, n, w), w};
             Vec3 w_in = vec3_neg(w);
             Ray into = {ray_offset_origin(sp.point, sp.error, n, w_in), w_in};

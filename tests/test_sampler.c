@@ -1,0 +1,2 @@
+#include "test.h"
+const TestCase sampler_tests[] = {{NULL, NULL}};

@@ -1,0 +1,2 @@
+#include "test.h"
+const TestCase texture_tests[] = {{NULL, NULL}};
