@@ -249,12 +249,126 @@ static void render_tiny_scenes_exactly(void)
     image_free(&ref);
 }
 
+/* Renders the scene text with the given samples per pixel and threads into
+ * img (allocated here); returns 0, or -1 (img left empty) if it does not
+ * parse. */
+static int render_text_with(const char *text, int samples, int threads, Image *img)
+{
+    RenderOptions opts = {10, samples, threads};
+    Scene sc;
+    Error err;
+
+    img->rgb = NULL;
+    if (parse_scene_text("t.txt", text, strlen(text), &sc, &err) != 0) {
+        test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
+        return -1;
+    }
+    CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));
+    render(&sc, &opts, img);
+    scene_free(&sc);
+    return 0;
+}
+
+/* A scene with every optional record that changes rays: glass, a plane,
+ * a triangle, a second light, ambient light, and a lens. */
+#define RENDER_BUSY_SCENE                                                                     \
+    "0 1 -6\n-2 2.5 -3\n2 2.5 -3\n-2 0 -3\n48\n30 40 60\n-4 6 -6 200 200 200\n"                \
+    "light: 5 4 -3 120 120 160\nambient: 25 25 25\nplane: 0 0 0 0 1 0 200 200 200 0.2\n"      \
+    "sphere: -1.2 1 2 1 255 80 80 0.1\nsphere: 1.2 1 1.5 1 255 255 255 0 0.9 1.5\n"           \
+    "triangle: -3 0 5 3 0 5 0 3 5 80 200 80 0.3\n"
+
+static void render_supersampled_bytes_do_not_depend_on_threads(void)
+{
+    Image a, b;
+
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE "lens: 0.3 7\n", 9, 1, &a));
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE "lens: 0.3 7\n", 9, 2, &b));
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) == 0);
+    image_free(&b);
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE "lens: 0.3 7\n", 9, 7, &b));
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) == 0);
+    image_free(&b);
+    /* More samples than one do change the picture. */
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE, 1, 2, &b));
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) != 0);
+    image_free(&a);
+    image_free(&b);
+}
+
+static void render_one_sample_is_a_pinhole_render(void)
+{
+    Image a, b;
+
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE, 1, 2, &a));
+    CHECK_INT(0, render_text_with(RENDER_BUSY_SCENE "lens: 0.3 7\n", 1, 2, &b));
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) == 0);
+    image_free(&a);
+    image_free(&b);
+}
+
+static void render_samples_average_a_half_covered_pixel(void)
+{
+    /* A white triangle (ambient light only) whose edge projects onto the
+     * vertical line through the centres of the left pixels of a 2 x 2
+     * image. One sample on the edge sees the triangle; 64 samples, one in
+     * each of 64 column strips, see it 32 times: 127.5, rounded to 128. */
+    const char *text = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n2\n0 0 0\n0 0 -5 0 0 0\n"
+                       "ambient: 255 255 255\n"
+                       "triangle: -1 -100 2 -1 100 2 -100 0 2 255 255 255 0\n";
+    Image img;
+
+    CHECK_INT(0, render_text_with(text, 1, 1, &img));
+    CHECK(img.rgb && img.rgb[0] == 255 && img.rgb[3] == 0);
+    image_free(&img);
+    CHECK_INT(0, render_text_with(text, 64, 1, &img));
+    CHECK(img.rgb != NULL);
+    if (img.rgb) {
+        CHECK_INT(128, img.rgb[0]);
+        CHECK_INT(128, img.rgb[3 * 2]); /* the pixel below */
+        CHECK_INT(0, img.rgb[3]);
+    }
+    image_free(&img);
+}
+
+static void camera_lens_rays_meet_in_the_focal_plane(void)
+{
+    /* Whatever point of the lens a ray leaves from, it passes through the
+     * point where the pinhole ray meets the plane in focus, and it starts
+     * on the lens disk, in the plane through the eye parallel to the screen. */
+    Camera cam = {{1, 2, 3}, {-1, 3, 5}, {4, 0, 0}, {0.5, -3, 0}, 40, 30, 0, 0, {0, 0, 0},
+                  {0, 0, 0}, {0, 0, 0}};
+    static const double lens[][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0.3, -0.4}, {0, 0}};
+
+    CHECK_INT(0, camera_set_lens(&cam, 0.5, 7));
+    CHECK_NEAR(1, cam.forward.z, 1e-15);
+    for (size_t i = 0; i < sizeof lens / sizeof lens[0]; i++) {
+        Ray pin = camera_ray(&cam, 13.25, 7.5);
+        Ray r = camera_lens_ray(&cam, 13.25, 7.5, lens[i]);
+        Vec3 focal = vec3_add(cam.eye, vec3_scale(pin.dir, 7 / vec3_dot(pin.dir, cam.forward)));
+        Vec3 off = vec3_sub(r.origin, cam.eye);
+        double s = vec3_dot(vec3_sub(focal, r.origin), cam.forward) / vec3_dot(r.dir, cam.forward);
+
+        CHECK_NEAR(0, vec3_dot(off, cam.forward), 1e-15);
+        CHECK_NEAR(0.25 * hypot(lens[i][0], lens[i][1]), vec3_length(off), 1e-15);
+        CHECK_NEAR(0, vec3_length(vec3_sub(ray_at(&r, s), focal)), 1e-14);
+        CHECK_NEAR(1, vec3_length(r.dir), 1e-15);
+    }
+    /* The eye in the screen's plane: no forward, no lens. */
+    cam.eye = vec3(0, 0, 5);
+    CHECK_INT(-1, camera_set_lens(&cam, 0.5, 7));
+}
+
 const TestCase render_tests[] = {
     {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},
     {"render_pixel_centres_map_to_the_screen", render_pixel_centres_map_to_the_screen},
     {"render_sheared_screen", render_sheared_screen},
     {"render_eye_on_the_screen_sees_background", render_eye_on_the_screen_sees_background},
     {"render_bytes_do_not_depend_on_threads", render_bytes_do_not_depend_on_threads},
+    {"render_supersampled_bytes_do_not_depend_on_threads",
+     render_supersampled_bytes_do_not_depend_on_threads},
+    {"render_one_sample_is_a_pinhole_render", render_one_sample_is_a_pinhole_render},
+    {"render_samples_average_a_half_covered_pixel", render_samples_average_a_half_covered_pixel},
+    {"camera_lens_rays_meet_in_the_focal_plane", camera_lens_rays_meet_in_the_focal_plane},
     {"render_matches_exact_image_at_any_scale_and_place",
      render_matches_exact_image_at_any_scale_and_place},
     {NULL, NULL},
