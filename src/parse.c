@@ -979,6 +979,20 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
         first = 3;
     } else if (rec->count > 2 && parse_token_is(&rec->tok[2], "bilinear")) {
         first = 3;
+    } else if (rec->count > 2 &&
+               parse_decimal(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
+        char q[64];
+        parse_fail(P, &rec->line, rec->tok[2].column,
+                   "unknown texture filter %s (expected 'nearest' or 'bilinear')",
+                   parse_quote(q, sizeof q, rec->tok[2].text, rec->tok[2].len));
+        return -1;
+    }
+    if (spec->optional == 0 && rec->count > first) {
+        char q[64];
+        const Token *t = &rec->tok[first];
+        parse_fail(P, &rec->line, t->column, "expected the end of the line after %s, found %s",
+                   spec->what, parse_quote(q, sizeof q, t->text, t->len));
+        return -1;
     }
     n = parse_expect_numbers(P, rec, first, spec, v);
     if (n < 0)
