@@ -36,14 +36,15 @@ static void render_row(const Scene *scene, const RenderOptions *opts, Image *img
 {
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
 
-    for (int x = 0; x < img->width; x++) {
-        if (g.n == 1) {
-            /* The pixel's centre through the lens's: a pinhole render. */
-            Ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
-            image_set(img, x, y, trace_ray(scene, &ray, 0, opts->max_depth));
-        } else {
+    if (g.n > 1) {
+        for (int x = 0; x < img->width; x++)
             image_set(img, x, y, render_pixel(scene, opts, &g, x, y));
-        }
+        return;
+    }
+    /* One sample: the pixel's centre, through the lens's centre. */
+    for (int x = 0; x < img->width; x++) {
+        Ray ray = camera_ray(&scene->camera, x + 0.5, y + 0.5);
+        image_set(img, x, y, trace_ray(scene, &ray, 0, opts->max_depth));
     }
 }
 

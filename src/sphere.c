@@ -25,9 +25,7 @@ static double sphere_gamma(double n)
     return n * u / (1 - n * u);
 }
 
-/* Finds the two ray parameters t0 <= t1 at which the ray's line crosses
- * s's surface; returns 1, or 0 when the line misses the sphere. */
-static int sphere_roots(const Sphere *s, const Ray *ray, double *t0, double *t1)
+int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
 {
     Vec3 f = vec3_sub(ray->origin, s->centre);
     Vec3 d = ray->dir;
@@ -38,7 +36,7 @@ static int sphere_roots(const Sphere *s, const Ray *ray, double *t0, double *t1)
      * to the line, so r2 - |l|^2 = (h^2 - a c) / a without cancellation. */
     Vec3 l = vec3_sub(f, vec3_scale(d, h / a));
     double disc = r2 - vec3_dot(l, l);
-    double c, q;
+    double c, q, t0, t1;
 
     if (!(disc >= 0))
         return 0;
@@ -46,25 +44,16 @@ static int sphere_roots(const Sphere *s, const Ray *ray, double *t0, double *t1)
     q = -(h + copysign(sqrt(a * disc), h));
     if (q == 0) {
         /* h = 0 and disc = 0: the origin is the tangent point, t = 0 twice. */
-        *t0 = *t1 = 0;
+        t0 = t1 = 0;
     } else {
-        *t0 = q / a;
-        *t1 = c / q;
-        if (*t0 > *t1) {
-            double tmp = *t0;
-            *t0 = *t1;
-            *t1 = tmp;
+        t0 = q / a;
+        t1 = c / q;
+        if (t0 > t1) {
+            double tmp = t0;
+            t0 = t1;
+            t1 = tmp;
         }
     }
-    return 1;
-}
-
-int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
-{
-    double t0, t1;
-
-    if (!sphere_roots(s, ray, &t0, &t1))
-        return 0;
     if (t0 > tmin && t0 < tmax) {
         *t = t0;
         return 1;
@@ -78,11 +67,12 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
 
 int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax)
 {
-    double t0, t1;
+    double t, t2;
 
-    if (!sphere_roots(s, ray, &t0, &t1))
+    if (!sphere_intersect(s, ray, tmin, tmax, &t))
         return 0;
-    return (t0 > tmin && t0 < tmax) + (t1 > tmin && t1 < tmax);
+    /* The second root, if it is in the interval, lies beyond the first. */
+    return 1 + sphere_intersect(s, ray, t, tmax, &t2);
 }
 
 SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)

@@ -52,22 +52,31 @@ static int trace_nearest_flat(const Scene *scene, const Ray *ray, double tmax, H
     return found;
 }
 
-int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+/* trace_nearest(), inlined into trace_ray(): its hottest caller. */
+static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
 {
     int found = 0;
+    size_t best = 0;
 
     for (size_t k = 0; k < scene->sphere_count; k++) {
         double t;
         /* The interval is open at tmax, so an exact tie keeps the earlier sphere. */
         if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t)) {
             tmax = t;
-            trace_set_hit(hit, t, SHAPE_SPHERE, k, scene->spheres[k].order);
+            best = k;
             found = 1;
         }
     }
+    if (found)
+        trace_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
     if (scene->plane_count > 0 || scene->triangle_count > 0)
         found = trace_nearest_flat(scene, ray, tmax, hit, found);
     return found;
+}
+
+int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+{
+    return trace_find(scene, ray, tmax, hit);
 }
 
 int trace_occluded(const Scene *scene, const Ray *segment)
@@ -125,7 +134,7 @@ typedef struct {
 } Shade;
 
 /* Returns the shading record of hit, crossed by ray. */
-static Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *hit)
+static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *hit)
 {
     Shade sh;
     double uv[2] = {0, 0};
@@ -166,7 +175,7 @@ static Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *hit)
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
  * shaded point sh, whose normal facing the viewer is n. */
-static Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n)
+static inline Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n)
 {
     Vec3 to_light = vec3_sub(light->position, sh->sp.point);
     double cos_a = vec3_dot(n, vec3_normalize(to_light));
@@ -192,7 +201,7 @@ static Colour trace_direct(const Scene *scene, const Light *light, const Shade *
 
 /* Returns the local term: the ambient light plus every light's direct
  * contribution, at sh with facing normal n. */
-static Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
+static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
 {
     Colour c = trace_direct(scene, &scene->lights[0], sh, n);
 
@@ -208,7 +217,7 @@ static Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
 
 /* Returns weight times the colour seen along the ray leaving sh in
  * direction dir, at depth `depth`. */
-static Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
+static inline Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
                               double weight, int depth, int max_depth)
 {
     Ray r;
@@ -226,7 +235,7 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth)
     Colour c;
     double r, t, own;
 
-    if (!trace_nearest(scene, ray, INFINITY, &hit))
+    if (!trace_find(scene, ray, INFINITY, &hit))
         return scene->background;
     sh = trace_shade(scene, ray, &hit);
     n = ray_facing_normal(sh.sp.normal, ray->dir);
