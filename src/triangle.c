@@ -87,16 +87,20 @@ static double triangle_weights(const Triangle *tri, const Ray *ray, double w[3],
 
 int triangle_intersect(const Triangle *tri, const Ray *ray, double tmin, double tmax, double *t)
 {
-    double w[3], det, tt;
-    Vec3 rel[3], p;
+    double w[3], det, den, tt;
+    Vec3 rel[3];
 
     det = triangle_weights(tri, ray, w, rel);
     if (det == 0 || isnan(det))
         return 0;
-    /* The hit point relative to the origin is t d. */
-    p = vec3_add(vec3_add(vec3_scale(rel[0], w[0] / det), vec3_scale(rel[1], w[1] / det)),
-                 vec3_scale(rel[2], w[2] / det));
-    tt = vec3_dot(p, ray->dir) / vec3_dot(ray->dir, ray->dir);
+    /* t from the triangle's plane, through v0: a barycentric blend of the
+     * vertices would round with the triangle's size over the cosine of the
+     * ray's angle to the normal, and a ray leaving the surface could see
+     * itself cross it again. */
+    den = vec3_dot(tri->normal, ray->dir);
+    if (den == 0)
+        return 0;
+    tt = vec3_dot(tri->normal, rel[0]) / den;
     if (!(tt > tmin && tt < tmax))
         return 0;
     *t = tt;
