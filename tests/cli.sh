@@ -52,7 +52,8 @@ expect_exit version 0 "$RT" --version
 expect_grep version 'raytrace ' "$T/out"
 for args in "" "$scene" "--bogus $scene x.ppm" "--max-depth $scene x.ppm" \
     "--max-depth -1 $scene x.ppm" "--max-depth 1001 $scene x.ppm" "--threads 0 $scene x.ppm" \
-    "-j x $scene x.ppm" "$scene a.ppm b.ppm"; do
+    "-j x $scene x.ppm" "$scene a.ppm b.ppm" "--spp 0 $scene x.ppm" "--spp 65537 $scene x.ppm" \
+    "-s 2.5 $scene x.ppm"; do
     # shellcheck disable=SC2086
     expect_exit "usage '$args'" 2 "$RT" $args
     expect_line "usage '$args' says how to get help" 2 "Try 'raytrace --help'." "$T/err"
@@ -64,6 +65,22 @@ expect_line "empty OUTPUT" 1 "raytrace: OUTPUT is an empty file name" "$T/err"
 expect_exit "empty SCENE" 2 "$RT" "" "$T/x.ppm"
 expect_exit "option forms" 0 "$RT" --max-depth=3 -j1 -d 2 --threads 2 -q "$T/small.txt" "$T/forms.ppm"
 expect_exit "-- ends options" 0 "$RT" -- "$T/small.txt" "$T/forms.ppm"
+expect_exit "--spp forms" 0 "$RT" --spp=4 -s 2 --spp 3 "$T/small.txt" "$T/forms.ppm"
+
+# --- --spp overrides a samples: record; textures are found beside the scene ---
+expect_exit "--spp 1 over samples: 4" 0 "$RT" --spp 1 scenes/glass.txt "$T/glass1.ppm"
+sed 's/^samples: 4/samples: 1/' scenes/glass.txt >"$T/glass-1.txt"
+mkdir "$T/textures" && cp scenes/textures/checker.ppm "$T/textures/"
+expect_exit "samples: 1 (texture beside the scene)" 0 "$RT" "$T/glass-1.txt" "$T/glass-1.ppm"
+cmp -s "$T/glass1.ppm" "$T/glass-1.ppm" && pass || fail "--spp 1 differs from samples: 1"
+here=$(pwd)
+(cd / && "$here/$RT" "$here/scenes/textures.txt" "$T/tex.ppm" 2>"$T/err") && pass ||
+    fail "texture paths from another directory" "$(cat "$T/err")"
+rm "$T/textures/checker.ppm"
+expect_exit "missing texture" 1 "$RT" "$T/glass-1.txt" "$T/missing.ppm"
+expect_line "missing texture message" 1 \
+    "raytrace: $T/glass-1.txt:20:10: error: cannot use the texture 'textures/checker.ppm': cannot open: No such file or directory" "$T/err"
+[ ! -e "$T/missing.ppm" ] && pass || fail "missing texture left an output"
 
 # --- quiet on success when stderr is not a terminal ---
 expect_exit render 0 "$RT" "$scene" "$T/course.ppm"
