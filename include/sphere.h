@@ -37,8 +37,8 @@ int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax);
 SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p);
 
 /* Returns in uv the texture coordinates of the point of outward normal n:
- * u = 0.5 + atan2(n.x, n.z) / (2 pi) around the y axis, v = 1 - acos(n.y) / pi
- * from the south pole (v = 0) to the north pole (v = 1). */
+ * u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the y axis (0.5 facing -z), and
+ * v = 1 - acos(n.y) / pi from the south pole (v = 0) to the north (v = 1). */
 void sphere_uv(Vec3 n, double uv[2]);
 
 #endif

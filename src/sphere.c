@@ -95,6 +95,6 @@ void sphere_uv(Vec3 n, double uv[2])
     const double pi = 3.14159265358979323846;
     double y = n.y > 1 ? 1 : n.y < -1 ? -1 : n.y;
 
-    uv[0] = 0.5 + atan2(n.x, n.z) / (2 * pi);
+    uv[0] = 0.5 + atan2(n.x, -n.z) / (2 * pi);
     uv[1] = 1 - acos(y) / pi;
 }
