@@ -1,8 +1,9 @@
 /* sampler.c: multi-jittered pixel and lens samples (see sampler.h). */
 #include "sampler.h"
 
-#include <math.h>
 #include <stdint.h>
+
+#include "angle.h"
 
 /* Returns a well-mixed 64-bit hash of x: a xor-shift-multiply finaliser,
  * each step a bijection, so distinct inputs give distinct outputs. */
@@ -95,20 +96,23 @@ void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned d
 
 void sampler_disk(const double xy[2], double disk[2])
 {
-    const double quarter_pi = 0.78539816339744830962;
-    double a = 2 * xy[0] - 1, b = 2 * xy[1] - 1, r, phi;
+    double a = 2 * xy[0] - 1, b = 2 * xy[1] - 1, r, s, c;
 
     if (a == 0 && b == 0) {
         disk[0] = disk[1] = 0;
         return;
     }
+    /* Square rings map to circles; the angle along a ring's side, at most
+     * pi / 4 from the side's middle, is proportional to the offset. */
     if (a * a > b * b) {
         r = a;
-        phi = quarter_pi * (b / a);
+        angle_sincos(ANGLE_PI / 4 * (b / a), &s, &c);
+        disk[0] = r * c;
+        disk[1] = r * s;
     } else {
         r = b;
-        phi = 2 * quarter_pi - quarter_pi * (a / b);
+        angle_sincos(ANGLE_PI / 4 * (a / b), &s, &c);
+        disk[0] = r * s;
+        disk[1] = r * c;
     }
-    disk[0] = r * cos(phi);
-    disk[1] = r * sin(phi);
 }

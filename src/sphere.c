@@ -4,6 +4,8 @@
 #include <float.h>
 #include <math.h>
 
+#include "angle.h"
+
 /*
  * Relative error bound of sphere_surface_at()'s point, in the style of
  * pbrt's gamma(n) = n u / (1 - n u), u = DBL_EPSILON / 2.
@@ -92,9 +94,6 @@ SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
 
 void sphere_uv(Vec3 n, double uv[2])
 {
-    const double pi = 3.14159265358979323846;
-    double y = n.y > 1 ? 1 : n.y < -1 ? -1 : n.y;
-
-    uv[0] = 0.5 + atan2(n.x, -n.z) / (2 * pi);
-    uv[1] = 1 - acos(y) / pi;
+    uv[0] = 0.5 + angle_atan2(n.x, -n.z) / (2 * ANGLE_PI);
+    uv[1] = 1 - angle_acos(n.y) / ANGLE_PI;
 }
