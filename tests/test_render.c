@@ -358,6 +358,51 @@ static void camera_lens_rays_meet_in_the_focal_plane(void)
     CHECK_INT(-1, camera_set_lens(&cam, 0.5, 7));
 }
 
+/* Writes RENDER_BUSY_SCENE with a lens into buf, every length times
+ * factor (a %s per length in the format below). */
+static void busy_scaled(char *buf, size_t size, double factor)
+{
+    static const double len[] = {0,  1,   -6, -2, 2.5, -3, 2,   2.5, -3, -2, 0, -3, -4, 6,
+                                 -6, 5,   4,  -3, 0,   0,  0,   -1.2, 1, 2,  1, 1.2, 1, 1.5,
+                                 1,  -3,  0,  5,  3,   0,  5,   0,   3, 5,  0.3, 7};
+    char s[40][32];
+
+    for (int i = 0; i < 40; i++)
+        snprintf(s[i], sizeof s[i], "%.17g", len[i] * factor);
+    snprintf(buf, size,
+             "%s %s %s\n%s %s %s\n%s %s %s\n%s %s %s\n48\n30 40 60\n%s %s %s 200 200 200\n"
+             "light: %s %s %s 120 120 160\nambient: 25 25 25\n"
+             "plane: %s %s %s 0 1 0 200 200 200 0.2\n"
+             "sphere: %s %s %s %s 255 80 80 0.1\nsphere: %s %s %s %s 255 255 255 0 0.9 1.5\n"
+             "triangle: %s %s %s %s %s %s %s %s %s 80 200 80 0.3\nlens: %s %s\n",
+             s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11], s[12],
+             s[13], s[14], s[15], s[16], s[17], s[18], s[19], s[20], s[21], s[22], s[23], s[24],
+             s[25], s[26], s[27], s[28], s[29], s[30], s[31], s[32], s[33], s[34], s[35], s[36],
+             s[37], s[38], s[39]);
+}
+
+static void render_tiny_scenes_with_every_shape_exactly(void)
+{
+    /* Planes, triangles, glass, a second light and a lens, scaled by
+     * 2^-300 (enlarged back exactly) and by 2^40: the same bytes. */
+    char text[2000];
+    Image ref, img;
+    size_t size;
+
+    busy_scaled(text, sizeof text, 1);
+    CHECK_INT(0, render_text_with(text, 4, 2, &ref));
+    size = ref.rgb ? image_size(ref.width, ref.height) : 0;
+    busy_scaled(text, sizeof text, 0x1p-300);
+    CHECK_INT(0, render_text_with(text, 4, 2, &img));
+    CHECK(img.rgb && size && memcmp(ref.rgb, img.rgb, size) == 0);
+    image_free(&img);
+    busy_scaled(text, sizeof text, 0x1p40);
+    CHECK_INT(0, render_text_with(text, 4, 2, &img));
+    CHECK(img.rgb && size && memcmp(ref.rgb, img.rgb, size) == 0);
+    image_free(&img);
+    image_free(&ref);
+}
+
 const TestCase render_tests[] = {
     {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},
     {"render_pixel_centres_map_to_the_screen", render_pixel_centres_map_to_the_screen},
@@ -369,6 +414,7 @@ const TestCase render_tests[] = {
     {"render_one_sample_is_a_pinhole_render", render_one_sample_is_a_pinhole_render},
     {"render_samples_average_a_half_covered_pixel", render_samples_average_a_half_covered_pixel},
     {"camera_lens_rays_meet_in_the_focal_plane", camera_lens_rays_meet_in_the_focal_plane},
+    {"render_tiny_scenes_with_every_shape_exactly", render_tiny_scenes_with_every_shape_exactly},
     {"render_matches_exact_image_at_any_scale_and_place",
      render_matches_exact_image_at_any_scale_and_place},
     {NULL, NULL},
