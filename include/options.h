@@ -12,12 +12,18 @@ typedef struct {
     int max_depth;           /* deepest reflected ray traced */
     int threads;             /* render threads, >= 1 */
     int samples;             /* samples per pixel from --spp, 0 when not given */
-    int quiet;               /* 1: no summary even on a terminal */
+    int quiet;               /* 1: no progress or summary even on a terminal */
+    int verbose;             /* 1: print statistics after rendering */
+    int check;               /* 1: only read the scene */
+    int format;              /* an ImageFormat: --format, else from output_path */
+    int ascii;               /* 1: PPM as P3 */
+    int png_stored;          /* 1: PNG with stored deflate blocks */
 } Options;
 
 /* What options_parse() found the command line asks for. */
 typedef enum {
     OPTIONS_RENDER,  /* render scene_path to output_path */
+    OPTIONS_CHECK,   /* only read scene_path (output_path is NULL) */
     OPTIONS_HELP,    /* print the help text */
     OPTIONS_VERSION, /* print the version */
     OPTIONS_USAGE    /* a usage error, described in the message buffer */

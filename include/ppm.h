@@ -17,6 +17,11 @@
  * with errno set when a write fails (the caller closes f either way). */
 int ppm_write(FILE *f, int width, int height, const unsigned char *rgb);
 
+/* Writes the same image as ASCII P3 ("P3\n<width> <height>\n255\n", then
+ * the samples in decimal, one pixel's three a group, at most 70 characters
+ * a line); returns 0, or -1 with errno set. */
+int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb);
+
 typedef struct {
     int width;               /* pixels per row */
     int height;              /* rows */

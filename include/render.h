@@ -13,16 +13,24 @@
 
 #include "image.h"
 #include "scene.h"
+#include "trace.h"
+
+/* Told, one call at a time, that rows_done of rows_total rows are finished;
+ * ctx is RenderOptions' progress_ctx. */
+typedef void (*RenderProgress)(void *ctx, int rows_done, int rows_total);
 
 typedef struct {
-    int max_depth; /* deepest reflected ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
-    int samples;   /* samples per pixel, 1..SAMPLER_MAX */
-    int threads;   /* worker threads, >= 1; 1 without OpenMP */
+    int max_depth;           /* deepest secondary ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
+    int samples;             /* samples per pixel, 1..SAMPLER_MAX */
+    int threads;             /* worker threads, >= 1; 1 without OpenMP */
+    RenderProgress progress; /* called after each row, or NULL */
+    void *progress_ctx;      /* passed to progress */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's
- * camera width and height; cannot fail. Returns the number of threads used. */
-int render(const Scene *scene, const RenderOptions *opts, Image *img);
+ * camera width and height; cannot fail. Adds the rays cast to *counts (may
+ * be NULL). Returns the number of threads used. */
+int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts);
 
 /* Returns the number of threads render() can use by default: the number of
  * processors when built with OpenMP, else 1. */

@@ -18,8 +18,9 @@
  * total internal reflection the share T follows the mirror ray too. A ray
  * that hits nothing sees the background. The primary ray has depth 0; a
  * mirror or refracted ray of depth k is traced only when k <= max_depth,
- * otherwise it contributes 0. Functions here are pure: safe to call from
- * many threads at once.
+ * otherwise it contributes 0. Functions here only read the scene and write
+ * the counters they are given: safe to call from many threads at once, each
+ * with its own counters.
  */
 #ifndef RAYTRACE_TRACE_H
 #define RAYTRACE_TRACE_H
@@ -32,6 +33,14 @@ enum { TRACE_MAX_DEPTH_LIMIT = 1000 }; /* deepest max_depth accepted */
 
 /* The kinds of shape a ray can hit. */
 typedef enum { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_TRIANGLE } ShapeKind;
+
+/* Rays cast, by kind. */
+typedef struct {
+    unsigned long long primary;    /* from the camera (counted by render.c) */
+    unsigned long long shadow;     /* towards a light */
+    unsigned long long reflection; /* mirror rays */
+    unsigned long long refraction; /* refracted rays */
+} RayCounts;
 
 typedef struct {
     double t;       /* ray parameter of the crossing, > 0 */
@@ -53,7 +62,9 @@ int trace_occluded(const Scene *scene, const Ray *segment);
 double trace_transmittance(const Scene *scene, const Ray *segment);
 
 /* Returns the colour seen along ray, a ray of depth `depth` (0 for primary
- * rays), tracing mirror and refracted rays down to max_depth. */
-Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth);
+ * rays), tracing mirror and refracted rays down to max_depth; adds the
+ * shadow, mirror and refracted rays it casts to *counts. */
+Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
+                 RayCounts *counts);
 
 #endif

@@ -1,7 +1,7 @@
 /*
  * main.c: the raytrace command: options, then scene file -> parser -> Scene
- * -> renderer -> Image -> PPM writer -> output file. The only module that
- * prints or exits.
+ * -> renderer -> Image -> writer (PPM, PNG or PFM) -> output file. The only
+ * module that prints or exits.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -18,9 +18,9 @@
 #include "options.h"
 #include "outfile.h"
 #include "parse.h"
-#include "ppm.h"
 #include "render.h"
 #include "scene.h"
+#include "writer.h"
 
 #define RAYTRACE_VERSION "0.1.0"
 
@@ -125,16 +125,84 @@ static double main_now(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+/* The progress bar's state: drawn on standard error, a few times a second. */
+typedef struct {
+    double start;     /* when rendering began */
+    double last_draw; /* when the bar was last drawn */
+    int drawn;        /* the bar is on screen */
+} MainProgress;
+
+/* Draws "  42% [#########...........] 1.2 s, 1.6 s left" at most 5 times a
+ * second (RenderProgress). */
+static void main_progress(void *ctx, int rows_done, int rows_total)
+{
+    MainProgress *p = ctx;
+    double now = main_now(), elapsed = now - p->start, frac = (double)rows_done / rows_total;
+    char bar[31];
+    int filled = (int)(frac * 30);
+
+    if (now - p->last_draw < 0.2 || rows_done == rows_total)
+        return;
+    p->last_draw = now;
+    p->drawn = 1;
+    for (int i = 0; i < 30; i++)
+        bar[i] = i < filled ? '#' : '.';
+    bar[30] = '\0';
+    fprintf(stderr, "\r%4.0f%% [%s] %.1f s, %.1f s left ", 100 * frac, bar, elapsed,
+            frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
+}
+
+/* Prints the -v summary: size, threads, rays by kind, time, speed. */
+static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
+                            const RayCounts *c, double seconds)
+{
+    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction;
+
+    fprintf(stderr, "raytrace: %d x %d pixels, %d sample%s per pixel, %d thread%s\n",
+            img->width, img->height, ropts->samples, ropts->samples == 1 ? "" : "s", threads,
+            threads == 1 ? "" : "s");
+    fprintf(stderr,
+            "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
+            "%llu in all\n",
+            c->primary, c->shadow, c->reflection, c->refraction, all);
+    fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
+            seconds > 0 ? all / seconds / 1e6 : 0.0);
+}
+
+/* Reads opts' scene, reports it and renders nothing; returns the exit status. */
+static int main_check(const Options *opts)
+{
+    Scene scene;
+    Error err;
+
+    if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (!opts->quiet)
+        printf("%s: OK: %d x %d pixels, %zu object%s, %zu light%s\n",
+               strcmp(opts->scene_path, "-") == 0 ? "<stdin>" : opts->scene_path,
+               scene.camera.width, scene.camera.height, scene_object_count(&scene),
+               scene_object_count(&scene) == 1 ? "" : "s", scene.light_count,
+               scene.light_count == 1 ? "" : "s");
+    scene_free(&scene);
+    return 0;
+}
+
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    RenderOptions ropts = {opts->max_depth, 1, opts->threads};
-    double start = main_now();
+    RenderOptions ropts = {opts->max_depth, 1, opts->threads, NULL, NULL};
+    WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
+                           opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
+    MainProgress progress = {0, 0, 0};
+    RayCounts counts = {0, 0, 0, 0};
+    double start = main_now(), render_start, render_time;
     Scene scene;
     Image img;
     OutFile out;
     Error err;
-    int threads;
+    int threads, tty = isatty(STDERR_FILENO);
 
     if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
         main_report(&err);
@@ -151,18 +219,29 @@ static int main_render(const Options *opts)
         goto fail_scene;
     }
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
-    if (image_init(&img, scene.camera.width, scene.camera.height) != 0) {
-        error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes",
+    if (image_init(&img, scene.camera.width, scene.camera.height) != 0 ||
+        (wopts.format == FORMAT_PFM && image_keep_linear(&img) != 0)) {
+        error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s",
                   scene.camera.width, scene.camera.height,
-                  image_size(scene.camera.width, scene.camera.height));
+                  image_size(scene.camera.width, scene.camera.height),
+                  wopts.format == FORMAT_PFM ? ", and 4 times that for PFM" : "");
+        image_free(&img);
         goto fail_scene;
     }
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
-    threads = render(&scene, &ropts, &img);
+    if (tty && !opts->quiet) {
+        ropts.progress = main_progress;
+        ropts.progress_ctx = &progress;
+    }
+    render_start = progress.start = progress.last_draw = main_now();
+    threads = render(&scene, &ropts, &img, &counts);
+    render_time = main_now() - render_start;
+    if (progress.drawn)
+        fputs("\r\033[K", stderr); /* erase the bar */
     /* An interrupt from here on still finds main_temp_path: before the rename
      * it removes the unfinished file, after it the unlink finds nothing. */
-    if (ppm_write(out.fp, img.width, img.height, img.rgb) != 0) {
+    if (writer_write(out.fp, &img, &wopts) != 0) {
         error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
         outfile_abort(&out);
         goto fail_image;
@@ -170,7 +249,9 @@ static int main_render(const Options *opts)
     if (outfile_commit(&out, &err) != 0)
         goto fail_image;
     main_temp_path = NULL;
-    if (!opts->quiet && isatty(STDERR_FILENO))
+    if (opts->verbose)
+        main_statistics(&img, &ropts, threads, &counts, render_time);
+    else if (!opts->quiet && tty)
         fprintf(stderr,
                 "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "
                 "%.2f s, %d thread%s\n",
@@ -206,6 +287,8 @@ int main(int argc, char **argv)
         return 0;
     case OPTIONS_USAGE:
         return main_usage(msg);
+    case OPTIONS_CHECK:
+        return main_check(&opts);
     case OPTIONS_RENDER:
         break;
     }

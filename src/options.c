@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sampler.h"
+#include "writer.h"
 #include "trace.h"
 
 enum { OPTIONS_MAX_THREADS = 1024 };
@@ -12,9 +13,12 @@ enum { OPTIONS_MAX_THREADS = 1024 };
 const char *options_help(void)
 {
     return "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
-           "Render SCENE, a scene file in the course format, to OUTPUT, a binary PPM\n"
-           "image (P6). SCENE may be '-' for standard input, OUTPUT '-' for standard\n"
-           "output. OUTPUT is replaced only when the whole image has been written.\n"
+           "       raytrace --check SCENE\n"
+           "Render SCENE, a scene file in the course format, to OUTPUT: a PPM (P6),\n"
+           "PNG or PFM image, chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM\n"
+           "for any other) or by --format. SCENE may be '-' for standard input,\n"
+           "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
+           "image has been written.\n"
            "\n"
            "Options:\n"
            "  -d, --max-depth N  trace mirror and refracted rays down to depth N,\n"
@@ -24,7 +28,14 @@ const char *options_help(void)
            "                     default: the scene's samples: record, else 1\n"
            "  -j, --threads N    render with N threads, 1 to 1024 (default: one per\n"
            "                     processor; ignored in builds without OpenMP)\n"
-           "  -q, --quiet        print nothing on success, even on a terminal\n"
+           "  --format F         write F: ppm, png or pfm (linear floats, unclamped)\n"
+           "  --ascii            write PPM as ASCII (P3) instead of binary (P6)\n"
+           "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
+           "                     default) or stored (no compression, faster)\n"
+           "  --check            read SCENE, report any error, render nothing\n"
+           "  -v, --verbose      after rendering, print the image size, threads, rays\n"
+           "                     cast by kind, time and speed\n"
+           "  -q, --quiet        print nothing on success, not even the progress bar\n"
            "  -h, --help         print this help and exit\n"
            "  -V, --version      print the version and exit\n"
            "\n"
@@ -62,28 +73,45 @@ typedef struct {
     int lo, hi;             /* accepted range */
 } IntOption;
 
-/* If argv[*i] is opt (as "--name N", "--name=N", "-x N" or "-xN"), reads its
- * value into *out and returns 1 (or -1 on a bad value, with msg set);
- * returns 0 when argv[*i] is another argument. */
-static int options_match_int(const IntOption *opt, int argc, char **argv, int *i, int *out,
-                             char *msg, size_t msg_size)
+/* If argv[*i] is the option long_name (or short_name, which may be NULL),
+ * as "--name V", "--name=V", "-x V" or "-xV", points *value at V and
+ * returns 1 (or -1 when V is missing, with msg set); returns 0 when
+ * argv[*i] is another argument. */
+static int options_match_value(const char *long_name, const char *short_name, int argc,
+                               char **argv, int *i, const char **value, char *msg,
+                               size_t msg_size)
 {
-    const char *arg = argv[*i], *value;
-    size_t ln = strlen(opt->long_name), sn = strlen(opt->short_name);
+    const char *arg = argv[*i];
+    size_t ln = strlen(long_name), sn = short_name ? strlen(short_name) : 0;
 
-    if (strcmp(arg, opt->long_name) == 0 || strcmp(arg, opt->short_name) == 0) {
+    if (strcmp(arg, long_name) == 0 || (short_name && strcmp(arg, short_name) == 0)) {
         if (*i + 1 >= argc) {
             snprintf(msg, msg_size, "option '%s' needs a value", arg);
             return -1;
         }
-        value = argv[++*i];
-    } else if (strncmp(arg, opt->long_name, ln) == 0 && arg[ln] == '=') {
-        value = arg + ln + 1;
-    } else if (strncmp(arg, opt->short_name, sn) == 0 && arg[sn] != '\0' && arg[1] != '-') {
-        value = arg + sn;
+        *value = argv[++*i];
+    } else if (strncmp(arg, long_name, ln) == 0 && arg[ln] == '=') {
+        *value = arg + ln + 1;
+    } else if (short_name && strncmp(arg, short_name, sn) == 0 && arg[sn] != '\0' &&
+               arg[1] != '-') {
+        *value = arg + sn;
     } else {
         return 0;
     }
+    return 1;
+}
+
+/* If argv[*i] is opt, reads its value into *out and returns 1 (or -1 on a
+ * bad value, with msg set); returns 0 when argv[*i] is another argument. */
+static int options_match_int(const IntOption *opt, int argc, char **argv, int *i, int *out,
+                             char *msg, size_t msg_size)
+{
+    const char *value;
+    int m = options_match_value(opt->long_name, opt->short_name, argc, argv, i, &value, msg,
+                                msg_size);
+
+    if (m <= 0)
+        return m;
     if (options_int(value, opt->lo, opt->hi, out) != 0) {
         snprintf(msg, msg_size, "option '%s' takes a whole number from %d to %d, found '%.40s'",
                  opt->long_name, opt->lo, opt->hi, value);
@@ -92,20 +120,49 @@ static int options_match_int(const IntOption *opt, int argc, char **argv, int *i
     return 1;
 }
 
+/* If argv[*i] is the option long_name, whose value must be one of the
+ * count words of choices, stores the index of the word in *out and returns
+ * 1 (or -1 on another value, with msg set); returns 0 for another argument. */
+static int options_match_word(const char *long_name, const char *const *choices, int count,
+                              int argc, char **argv, int *i, int *out, char *msg,
+                              size_t msg_size)
+{
+    const char *value;
+    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
+
+    if (m <= 0)
+        return m;
+    for (int k = 0; k < count; k++) {
+        if (strcmp(value, choices[k]) == 0) {
+            *out = k;
+            return 1;
+        }
+    }
+    snprintf(msg, msg_size, "option '%s' takes %s%s%s, found '%.40s'", long_name, choices[0],
+             count > 2 ? ", " : " or ", count > 2 ? "..." : choices[1], value);
+    return -1;
+}
+
 OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
                             size_t msg_size)
 {
     static const IntOption depth = {"--max-depth", "-d", 0, TRACE_MAX_DEPTH_LIMIT};
     static const IntOption threads = {"--threads", "-j", 1, OPTIONS_MAX_THREADS};
     static const IntOption spp = {"--spp", "-s", 1, SAMPLER_MAX};
+    static const char *const formats[] = {"ppm", "png", "pfm"};
+    static const char *const deflates[] = {"stored", "fixed"};
     const char *positional[2];
-    int npos = 0, only_positional = 0;
+    int npos = 0, only_positional = 0, deflate = 1;
 
     opts->scene_path = opts->output_path = NULL;
     opts->max_depth = 10;
     opts->threads = default_threads;
     opts->quiet = 0;
+    opts->verbose = 0;
+    opts->check = 0;
     opts->samples = 0;
+    opts->format = -1;
+    opts->ascii = 0;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -125,12 +182,22 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
             return OPTIONS_VERSION;
         } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
             opts->quiet = 1;
+        } else if (strcmp(arg, "-v") == 0 || strcmp(arg, "--verbose") == 0) {
+            opts->verbose = 1;
+        } else if (strcmp(arg, "--check") == 0) {
+            opts->check = 1;
+        } else if (strcmp(arg, "--ascii") == 0) {
+            opts->ascii = 1;
         } else if ((m = options_match_int(&depth, argc, argv, &i, &opts->max_depth, msg,
                                           msg_size)) != 0 ||
                    (m = options_match_int(&threads, argc, argv, &i, &opts->threads, msg,
                                           msg_size)) != 0 ||
                    (m = options_match_int(&spp, argc, argv, &i, &opts->samples, msg,
-                                          msg_size)) != 0) {
+                                          msg_size)) != 0 ||
+                   (m = options_match_word("--format", formats, 3, argc, argv, &i,
+                                           &opts->format, msg, msg_size)) != 0 ||
+                   (m = options_match_word("--png-deflate", deflates, 2, argc, argv, &i,
+                                           &deflate, msg, msg_size)) != 0) {
             if (m < 0)
                 return OPTIONS_USAGE;
         } else {
@@ -138,15 +205,30 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
             return OPTIONS_USAGE;
         }
     }
-    if (npos < 2) {
+    opts->png_stored = deflate == 0;
+    if (npos < (opts->check ? 1 : 2)) {
         snprintf(msg, msg_size, npos == 0 ? "missing SCENE and OUTPUT" : "missing OUTPUT");
+        if (opts->check)
+            snprintf(msg, msg_size, "missing SCENE");
         return OPTIONS_USAGE;
     }
-    if (!*positional[0] || !*positional[1]) {
+    if (opts->check && npos > 1) {
+        snprintf(msg, msg_size, "--check takes only SCENE, found '%.40s' after it",
+                 positional[1]);
+        return OPTIONS_USAGE;
+    }
+    if (!*positional[0] || (npos > 1 && !*positional[1])) {
         snprintf(msg, msg_size, "%s is an empty file name", *positional[0] ? "OUTPUT" : "SCENE");
         return OPTIONS_USAGE;
     }
     opts->scene_path = positional[0];
-    opts->output_path = positional[1];
-    return OPTIONS_RENDER;
+    opts->output_path = npos > 1 ? positional[1] : NULL;
+    if (opts->ascii && opts->output_path && opts->format != 0 &&
+        (opts->format > 0 || writer_format_for(opts->output_path) != FORMAT_PPM)) {
+        snprintf(msg, msg_size, "--ascii applies to PPM output only");
+        return OPTIONS_USAGE;
+    }
+    if (opts->format < 0 && opts->output_path)
+        opts->format = (int)writer_format_for(opts->output_path);
+    return opts->check ? OPTIONS_CHECK : OPTIONS_RENDER;
 }

@@ -20,6 +20,31 @@ int ppm_write(FILE *f, int width, int height, const unsigned char *rgb)
     return 0;
 }
 
+int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb)
+{
+    size_t n = (size_t)width * (size_t)height;
+    int col = 0;
+
+    if (fprintf(f, "P3\n%d %d\n255\n", width, height) < 0)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        const unsigned char *p = rgb + 3 * k;
+        int w;
+
+        /* A pixel takes at most 12 characters: " 255 255 255". */
+        if (col > 0 && (col + 12 > 70 || k % (size_t)width == 0)) {
+            if (putc('\n', f) == EOF)
+                return -1;
+            col = 0;
+        }
+        w = fprintf(f, col ? " %d %d %d" : "%d %d %d", p[0], p[1], p[2]);
+        if (w < 0)
+            return -1;
+        col += w;
+    }
+    return putc('\n', f) == EOF ? -1 : 0;
+}
+
 /* Cursor over a PPM file: position kept as line and column for messages. */
 typedef struct {
     const char *name;      /* file name for messages */

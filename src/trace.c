@@ -175,7 +175,8 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
  * shaded point sh, whose normal facing the viewer is n. */
-static inline Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n)
+static inline Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n,
+                                  RayCounts *counts)
 {
     Vec3 to_light = vec3_sub(light->position, sh->sp.point);
     double cos_a = vec3_dot(n, vec3_normalize(to_light));
@@ -186,6 +187,7 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
      * light, whatever E is: no shadow ray needed. */
     if (!(cos_a > 0))
         return colour(0, 0, 0);
+    counts->shadow++;
     shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
     shadow.dir = vec3_sub(light->position, shadow.origin);
     if (scene->has_transparency) {
@@ -201,12 +203,12 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
 
 /* Returns the local term: the ambient light plus every light's direct
  * contribution, at sh with facing normal n. */
-static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
+static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, RayCounts *counts)
 {
-    Colour c = trace_direct(scene, &scene->lights[0], sh, n);
+    Colour c = trace_direct(scene, &scene->lights[0], sh, n, counts);
 
     for (size_t i = 1; i < scene->light_count; i++)
-        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n));
+        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n, counts));
     if (scene->has_ambient)
         c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
                               scene->ambient.g * sh->colour.g / 255,
@@ -218,16 +220,17 @@ static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n)
 /* Returns weight times the colour seen along the ray leaving sh in
  * direction dir, at depth `depth`. */
 static inline Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
-                              double weight, int depth, int max_depth)
+                                     double weight, int depth, int max_depth, RayCounts *counts)
 {
     Ray r;
 
     r.dir = dir;
     r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
-    return colour_scale(trace_ray(scene, &r, depth, max_depth), weight);
+    return colour_scale(trace_ray(scene, &r, depth, max_depth, counts), weight);
 }
 
-Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth)
+Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
+                 RayCounts *counts)
 {
     Hit hit;
     Shade sh;
@@ -242,7 +245,7 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth)
     r = sh.material->reflection;
     t = sh.material->transparency;
     own = 1 - r - t;
-    c = colour_scale(trace_local(scene, &sh, n), own > 0 ? own : 0);
+    c = colour_scale(trace_local(scene, &sh, n, counts), own > 0 ? own : 0);
     if (depth + 1 > max_depth)
         return c;
     if (t > 0) {
@@ -251,13 +254,18 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth)
         double eta = entering ? 1 / sh.material->ior : sh.material->ior;
         Vec3 bent;
 
-        if (ray_refract(ray->dir, n, eta, &bent))
-            c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth));
-        else
+        if (ray_refract(ray->dir, n, eta, &bent)) {
+            counts->refraction++;
+            c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth,
+                                              counts));
+        } else {
             r += t; /* total internal reflection: the share T is mirrored */
+        }
     }
-    if (r > 0)
+    if (r > 0) {
+        counts->reflection++;
         c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, n), r, depth + 1,
-                                          max_depth));
+                                          max_depth, counts));
+    }
     return c;
 }

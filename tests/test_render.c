@@ -60,15 +60,16 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 1}, two = {10, 1, 2}, many = {10, 1, 7};
+    RenderOptions one = {10, 1, 1, NULL, NULL}, two = {10, 1, 2, NULL, NULL},
+                  many = {10, 1, 7, NULL, NULL};
 
     CHECK_INT(0, parse_scene_file("scenes/course.txt", &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
     CHECK_INT(0, image_init(&b, sc.camera.width, sc.camera.height));
-    render(&sc, &one, &a);
-    render(&sc, &two, &b);
+    render(&sc, &one, &a, NULL);
+    render(&sc, &two, &b, NULL);
     CHECK(memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) == 0);
-    render(&sc, &many, &b);
+    render(&sc, &many, &b, NULL);
     CHECK(memcmp(a.rgb, b.rgb, image_size(a.width, a.height)) == 0);
     image_free(&a);
     image_free(&b);
@@ -137,7 +138,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             Scene sc;
             Sphere sp = {moved(base_centre, s, o), base_radius * s,
                          material_plain(base_colour, base_refl), 0};
-            RenderOptions opts = {10, 1, 2};
+            RenderOptions opts = {10, 1, 2, NULL, NULL};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -154,7 +155,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             CHECK_INT(0, scene_add_light(&sc, &light));
             CHECK_INT(0, scene_add_sphere(&sc, &sp));
             CHECK_INT(0, image_init(&img, BASE_W, BASE_W));
-            render(&sc, &opts, &img);
+            render(&sc, &opts, &img, NULL);
             for (int j = 0; j < BASE_W; j++) {
                 for (int i = 0; i < BASE_W; i++) {
                     int edge;
@@ -206,7 +207,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 2};
+    RenderOptions opts = {10, 1, 2, NULL, NULL};
     Scene sc;
     Error err;
     int e;
@@ -218,7 +219,7 @@ static int render_text(const char *text, Image *img)
     }
     e = sc.length_exponent;
     CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));
-    render(&sc, &opts, img);
+    render(&sc, &opts, img, NULL);
     scene_free(&sc);
     return e;
 }
@@ -254,17 +255,18 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, threads};
+    RenderOptions opts = {10, samples, threads, NULL, NULL};
     Scene sc;
     Error err;
 
     img->rgb = NULL;
+    img->linear = NULL;
     if (parse_scene_text("t.txt", text, strlen(text), &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
     }
     CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));
-    render(&sc, &opts, img);
+    render(&sc, &opts, img, NULL);
     scene_free(&sc);
     return 0;
 }
