@@ -33,7 +33,7 @@ ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
 
-LIB_SRC := src/angle.c src/camera.c src/colour.c src/deflate.c src/error.c src/file.c src/image.c \
+LIB_SRC := src/angle.c src/camera.c src/colour.c src/compare.c src/deflate.c src/error.c src/file.c src/image.c \
 	src/options.c src/outfile.c src/parse.c src/pfm.c src/plane.c src/png.c src/ppm.c src/ray.c \
 	src/render.c src/sampler.c src/scene.c src/sphere.c src/texture.c src/trace.c \
 	src/triangle.c src/writer.c
@@ -43,7 +43,7 @@ TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
 .PHONY: all test check clean
 
-all: raytrace
+all: raytrace raytrace-diff
 
 raytrace: $(BUILD)/main.o $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
@@ -51,7 +51,7 @@ raytrace: $(BUILD)/main.o $(LIB_OBJ)
 $(BUILD)/unit: $(TEST_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-$(BUILD)/ppmcmp: $(BUILD)/tests/ppmcmp.o $(LIB_OBJ)
+raytrace-diff: $(BUILD)/diff_main.o $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
@@ -63,13 +63,13 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 # The unit tests, then the command-line and render tests on the real binary.
-test: raytrace $(BUILD)/unit $(BUILD)/ppmcmp
+test: raytrace raytrace-diff $(BUILD)/unit
 	$(BUILD)/unit
-	sh tests/cli.sh ./raytrace $(BUILD)/ppmcmp
+	sh tests/cli.sh ./raytrace ./raytrace-diff
 
 check: test
 
 clean:
-	rm -rf $(BUILD) raytrace
+	rm -rf $(BUILD) raytrace raytrace-diff
 
 -include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d)

@@ -138,8 +138,14 @@ static int options_match_word(const char *long_name, const char *const *choices,
             return 1;
         }
     }
-    snprintf(msg, msg_size, "option '%s' takes %s%s%s, found '%.40s'", long_name, choices[0],
-             count > 2 ? ", " : " or ", count > 2 ? "..." : choices[1], value);
+    {
+        size_t n = (size_t)snprintf(msg, msg_size, "option '%s' takes ", long_name);
+        for (int k = 0; k < count && n < msg_size; k++)
+            n += (size_t)snprintf(msg + n, msg_size - n, "%s%s",
+                                  k == 0 ? "" : k == count - 1 ? " or " : ", ", choices[k]);
+        if (n < msg_size)
+            snprintf(msg + n, msg_size - n, ", found '%.40s'", value);
+    }
     return -1;
 }
 
