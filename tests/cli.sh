@@ -93,6 +93,15 @@ if script -qc true /dev/null >/dev/null 2>&1; then
     expect_grep "summary on a terminal" "raytrace: wrote $T/tty.ppm: 8 x 8 pixels, 1 object," "$T/tty"
     script -qc "$RT -q $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
     [ ! -s "$T/tty" ] && pass || fail "-q prints on a terminal" "$(cat "$T/tty")"
+    # A render long enough for the progress bar, which is then erased.
+    script -qc "$RT --spp 8 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
+    expect_grep "progress bar" "% [#" "$T/tty"
+    expect_grep "progress ETA" " s left" "$T/tty"
+    expect_grep "progress bar erased" "$(printf '\r\033[K')raytrace: wrote" "$T/tty"
+    script -qc "$RT -q --spp 8 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
+    [ ! -s "$T/tty" ] && pass || fail "-q draws a progress bar" "$(cat "$T/tty")"
+elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+    fail "script(1) is missing: the terminal tests cannot run"
 fi
 
 # --- the course scene against the reference (independent implementation):
@@ -127,12 +136,18 @@ expect_exit "png = ppm" 0 "$DIFF" "$T/course.ppm" "$T/course.png"
 expect_exit "png stored" 0 "$RT" --png-deflate stored "$scene" "$T/stored.png"
 expect_exit "stored png = ppm" 0 "$DIFF" "$T/course.ppm" "$T/stored.png"
 [ "$(wc -c <"$T/stored.png")" -gt "$(wc -c <"$T/course.png")" ] && pass || fail "fixed Huffman PNG is not smaller than stored"
+# Independent decoders, when installed (.ci/run installs them and sets
+# RAYTRACE_TEST_TOOLS=required, so that CI cannot skip them).
 if command -v pngcheck >/dev/null; then
     pngcheck -q "$T/course.png" "$T/stored.png" >"$T/out" 2>&1 && pass || fail "pngcheck" "$(cat "$T/out")"
+elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+    fail "pngcheck is missing"
 fi
 if command -v pngtopnm >/dev/null; then
     pngtopnm "$T/course.png" >"$T/netpbm.ppm" 2>"$T/err" && cmp -s "$T/netpbm.ppm" "$T/course.ppm" && pass ||
         fail "netpbm's pngtopnm decodes other pixels" "$(cat "$T/err")"
+elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+    fail "pngtopnm is missing"
 fi
 for f in glass focus; do
     expect_exit "$f png" 0 "$RT" --spp 2 "scenes/$f.txt" "$T/$f.png"
