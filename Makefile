@@ -1,8 +1,12 @@
 # raytrace: a ray tracer for the course scene format.
 #
-# make              build ./raytrace (with OpenMP when the compiler has it)
+# make              build ./raytrace and ./raytrace-diff (with OpenMP when the
+#                   compiler has it)
 # make test         build and run every test (alias: make check)
 # make OPENMP=0     build without OpenMP
+# make install      install the commands and man pages under $(DESTDIR)$(PREFIX)
+#                   (PREFIX defaults to /usr/local); make uninstall removes them
+# make gallery      render every example scene to docs/gallery/*.png
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 
@@ -41,7 +45,15 @@ LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
-.PHONY: all test check clean
+PREFIX ?= /usr/local
+BINDIR := $(PREFIX)/bin
+MANDIR := $(PREFIX)/share/man/man1
+PROGRAMS := raytrace raytrace-diff
+MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
+SCENES := $(wildcard scenes/*.txt)
+GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
+
+.PHONY: all test check clean install uninstall gallery
 
 all: raytrace raytrace-diff
 
@@ -66,6 +78,23 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 test: raytrace raytrace-diff $(BUILD)/unit
 	$(BUILD)/unit
 	sh tests/cli.sh ./raytrace ./raytrace-diff
+	sh tests/install.sh
+
+install: $(PROGRAMS)
+	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
+	install -m 755 $(PROGRAMS) '$(DESTDIR)$(BINDIR)'
+	install -m 644 $(MANPAGES) '$(DESTDIR)$(MANDIR)'
+
+uninstall:
+	rm -f $(PROGRAMS:%='$(DESTDIR)$(BINDIR)'/%) $(MANPAGES:docs/%='$(DESTDIR)$(MANDIR)'/%)
+
+# The README's pictures, rendered from the scenes so that they stay true
+# (tests/cli.sh checks that each has the pixels of its scene's render).
+gallery: $(GALLERY)
+
+docs/gallery/%.png: scenes/%.txt raytrace
+	@mkdir -p $(@D)
+	./raytrace -q $< $@
 
 check: test
 

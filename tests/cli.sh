@@ -122,8 +122,15 @@ cmp -s "$T/t1.ppm" "$T/t2.ppm" && cmp -s "$T/t1.ppm" "$T/course.ppm" && pass || 
 grep -v '^#' tests/golden.sha256 >"$T/golden"
 while read -r hash file opts; do
     # shellcheck disable=SC2086
-    got=$("$RT" $opts "$file" - 2>"$T/err" | sha256sum | cut -d' ' -f1)
+    "$RT" $opts "$file" "$T/golden.ppm" 2>"$T/err"
+    got=$(sha256sum <"$T/golden.ppm" | cut -d' ' -f1)
     [ "$got" = "$hash" ] && pass || fail "golden render of $file $opts changed: $got" "$(cat "$T/err")"
+    # The README's gallery shows these very pixels.
+    if [ -z "$opts" ]; then
+        picture=docs/gallery/$(basename "$file" .txt).png
+        "$DIFF" -q "$T/golden.ppm" "$picture" 2>"$T/err" && pass ||
+            fail "$picture is not the render of $file: run 'make gallery'" "$(cat "$T/err")"
+    fi
 done <"$T/golden"
 for file in scenes/*.txt; do
     grep -q " $file\$" "$T/golden" && pass || fail "$file has no golden hash in tests/golden.sha256"
