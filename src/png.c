@@ -91,8 +91,10 @@ static unsigned char png_residual(int f, const unsigned char *row, const unsigne
 }
 
 /* Filters every row into out (1 + 3 width bytes a row), each with the
- * filter of least sum of |residual| read as signed bytes. */
-static void png_filter(const unsigned char *rgb, int width, int height, unsigned char *out)
+ * filter of least sum of |residual| read as signed bytes, or with none when
+ * choose is 0 (for stored blocks, which filtering cannot shrink). */
+static void png_filter(const unsigned char *rgb, int width, int height, int choose,
+                       unsigned char *out)
 {
     size_t stride = 3 * (size_t)width;
 
@@ -103,7 +105,7 @@ static void png_filter(const unsigned char *rgb, int width, int height, unsigned
         unsigned long best_sum = (unsigned long)-1;
         int best = 0;
 
-        for (int f = 0; f < 5; f++) {
+        for (int f = 0; f < (choose ? 5 : 1); f++) {
             unsigned long sum = 0;
             for (size_t i = 0; i < stride; i++) {
                 int r = (signed char)png_residual(f, row, prev, i, 3);
@@ -131,7 +133,7 @@ int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateM
         errno = ENOMEM;
         return -1;
     }
-    png_filter(rgb, width, height, raw);
+    png_filter(rgb, width, height, mode != DEFLATE_STORED, raw);
     if (deflate_zlib(&z, raw, raw_len, mode) != 0) {
         errno = ENOMEM;
         goto done;
