@@ -27,15 +27,19 @@
 /* The temporary output file, for the signal handler to remove. */
 static const char *volatile main_temp_path;
 
+/* Set while a progress bar is on the terminal, for the handler to erase. */
+static volatile sig_atomic_t main_bar_shown;
+
 /* On SIGINT or SIGTERM: remove the temporary file, say so, exit 128 + sig. */
 static void main_on_signal(int sig)
 {
-    static const char msg[] = "raytrace: interrupted\n";
+    static const char msg[] = "raytrace: interrupted\n", erase[] = "\r\033[K";
     const char *temp = main_temp_path;
 
     if (temp)
         unlink(temp);
-    if (write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
+    if ((main_bar_shown && write(STDERR_FILENO, erase, sizeof erase - 1) < 0) ||
+        write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
         /* Nothing more can be done. */
     }
     _exit(128 + sig);
@@ -145,6 +149,7 @@ static void main_progress(void *ctx, int rows_done, int rows_total)
         return;
     p->last_draw = now;
     p->drawn = 1;
+    main_bar_shown = 1;
     for (int i = 0; i < 30; i++)
         bar[i] = i < filled ? '#' : '.';
     bar[30] = '\0';
@@ -237,8 +242,10 @@ static int main_render(const Options *opts)
     render_start = progress.start = progress.last_draw = main_now();
     threads = render(&scene, &ropts, &img, &counts);
     render_time = main_now() - render_start;
-    if (progress.drawn)
+    if (progress.drawn) {
         fputs("\r\033[K", stderr); /* erase the bar */
+        main_bar_shown = 0;
+    }
     /* An interrupt from here on still finds main_temp_path: before the rename
      * it removes the unfinished file, after it the unlink finds nothing. */
     if (writer_write(out.fp, &img, &wopts) != 0) {
