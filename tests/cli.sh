@@ -153,6 +153,10 @@ fi
 if command -v pngtopnm >/dev/null; then
     pngtopnm "$T/course.png" >"$T/netpbm.ppm" 2>"$T/err" && cmp -s "$T/netpbm.ppm" "$T/course.ppm" && pass ||
         fail "netpbm's pngtopnm decodes other pixels" "$(cat "$T/err")"
+    # And raytrace-diff reads PNGs of other tools (dynamic Huffman codes).
+    pnmtopng "$T/course.ppm" >"$T/netpbm.png" 2>"$T/err" &&
+        "$DIFF" -q "$T/course.ppm" "$T/netpbm.png" 2>>"$T/err" && pass ||
+        fail "raytrace-diff cannot read netpbm's PNG" "$(cat "$T/err")"
 elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
     fail "pngtopnm is missing"
 fi
