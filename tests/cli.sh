@@ -128,8 +128,9 @@ while read -r hash file opts; do
     # The README's gallery shows these very pixels.
     if [ -z "$opts" ]; then
         picture=docs/gallery/$(basename "$file" .txt).png
-        "$DIFF" -q "$T/golden.ppm" "$picture" 2>"$T/err" && pass ||
-            fail "$picture is not the render of $file: run 'make gallery'" "$(cat "$T/err")"
+        "$DIFF" "$picture" "$T/golden.ppm" >"$T/out" 2>"$T/err" && pass ||
+            fail "$file renders other pixels than $picture (if the change is meant, run 'make gallery')" \
+                "$(cat "$T/out" "$T/err")"
     fi
 done <"$T/golden"
 for file in scenes/*.txt; do
