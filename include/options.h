@@ -18,6 +18,7 @@ typedef struct {
     int format;              /* an ImageFormat: --format, else from output_path */
     int ascii;               /* 1: PPM as P3 */
     int png_stored;          /* 1: PNG with stored deflate blocks */
+    int no_accel;            /* 1: no acceleration structure */
 } Options;
 
 /* What options_parse() found the command line asks for. */

@@ -25,7 +25,9 @@ typedef struct {
     Colour colour; /* Cs, 0..255 per channel */
 } Light;
 
-typedef struct {
+struct Bvh;
+
+typedef struct Scene {
     Camera camera;          /* eye, screen, image size and lens */
     Colour background;      /* seen where a ray hits nothing, 0..255 */
     Colour ambient;         /* Ca, added to every lit surface; 0 by default */
@@ -45,6 +47,8 @@ typedef struct {
     Texture *textures;      /* one per distinct texture file */
     size_t texture_count;
     size_t texture_capacity;
+    struct Bvh *accel;      /* hierarchy over spheres and triangles, or NULL:
+                               every ray then tests every object */
     int has_transparency;   /* some object has T > 0 */
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
@@ -70,6 +74,11 @@ int scene_add_triangle(Scene *scene, const Triangle *t);
 /* Takes ownership of *tex as the scene's next texture; returns its index, or
  * -1 (tex released) when memory runs out. */
 int scene_add_texture(Scene *scene, Texture *tex);
+
+/* Builds the acceleration structure (bvh.h) when the scene has enough
+ * spheres and triangles to gain from one; returns 0, or -1 when memory runs
+ * out (the scene is then left without one, and still renders). */
+int scene_build_accel(Scene *scene);
 
 /* Returns the number of objects (shapes) in the scene. */
 size_t scene_object_count(const Scene *scene);

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bvh.h"
 #include "error.h"
 #include "image.h"
 #include "options.h"
@@ -202,7 +203,7 @@ static int main_render(const Options *opts)
                            opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
     MainProgress progress = {0, 0, 0};
     RayCounts counts = {0, 0, 0, 0};
-    double start = main_now(), render_start, render_time;
+    double start = main_now(), render_start, render_time, accel_start, accel_time;
     Scene scene;
     Image img;
     OutFile out;
@@ -224,6 +225,11 @@ static int main_render(const Options *opts)
         goto fail_scene;
     }
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
+    accel_start = main_now();
+    if (!opts->no_accel && scene_build_accel(&scene) != 0)
+        fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
+                        "hierarchy: every ray will test every object\n");
+    accel_time = main_now() - accel_start;
     if (image_init(&img, scene.camera.width, scene.camera.height) != 0 ||
         (wopts.format == FORMAT_PFM && image_keep_linear(&img) != 0)) {
         error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s",
@@ -256,8 +262,13 @@ static int main_render(const Options *opts)
     if (outfile_commit(&out, &err) != 0)
         goto fail_image;
     main_temp_path = NULL;
-    if (opts->verbose)
+    if (opts->verbose) {
+        if (scene.accel)
+            fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
+                            "%.3f s\n",
+                    scene.accel->node_count, scene.accel->depth, accel_time);
         main_statistics(&img, &ropts, threads, &counts, render_time);
+    }
     else if (!opts->quiet && tty)
         fprintf(stderr,
                 "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "

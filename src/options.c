@@ -33,6 +33,8 @@ const char *options_help(void)
            "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
            "                     default) or stored (no compression, faster)\n"
            "  --check            read SCENE, report any error, render nothing\n"
+           "  --no-accel         test every ray against every object (no bounding\n"
+           "                     volume hierarchy): slower, the same image\n"
            "  -v, --verbose      after rendering, print the image size, threads, rays\n"
            "                     cast by kind, time and speed\n"
            "  -q, --quiet        print nothing on success, not even the progress bar\n"
@@ -169,6 +171,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->samples = 0;
     opts->format = -1;
     opts->ascii = 0;
+    opts->no_accel = 0;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -194,6 +197,8 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
             opts->check = 1;
         } else if (strcmp(arg, "--ascii") == 0) {
             opts->ascii = 1;
+        } else if (strcmp(arg, "--no-accel") == 0) {
+            opts->no_accel = 1;
         } else if ((m = options_match_int(&depth, argc, argv, &i, &opts->max_depth, msg,
                                           msg_size)) != 0 ||
                    (m = options_match_int(&threads, argc, argv, &i, &opts->threads, msg,

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bvh.h"
+
 void scene_init(Scene *scene)
 {
     memset(scene, 0, sizeof *scene);
@@ -14,10 +16,15 @@ void scene_init(Scene *scene)
     scene->planes = NULL;
     scene->triangles = NULL;
     scene->textures = NULL;
+    scene->accel = NULL;
 }
 
 void scene_free(Scene *scene)
 {
+    if (scene->accel) {
+        bvh_free(scene->accel);
+        free(scene->accel);
+    }
     for (size_t i = 0; i < scene->texture_count; i++)
         texture_free(&scene->textures[i]);
     free(scene->textures);
@@ -45,6 +52,21 @@ static int scene_reserve(void **items, size_t *capacity, size_t count, size_t si
         return -1;
     *items = grown;
     *capacity = cap;
+    return 0;
+}
+
+int scene_build_accel(Scene *scene)
+{
+    Bvh *bvh;
+
+    if (scene->accel || scene->sphere_count + scene->triangle_count < BVH_MIN_PRIMITIVES)
+        return 0;
+    bvh = malloc(sizeof *bvh);
+    if (!bvh || bvh_build(bvh, scene) != 0) {
+        free(bvh);
+        return -1;
+    }
+    scene->accel = bvh;
     return 0;
 }
 

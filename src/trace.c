@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "bvh.h"
 #include "texture.h"
 
 /* Stores in *hit the object of kind, index and order crossed at t. */
@@ -21,10 +22,10 @@ static int trace_beats(const Hit *hit, int found, double t, unsigned order)
     return !found || t < hit->t || order < hit->order;
 }
 
-/* Continues trace_nearest() over planes and triangles, after the spheres
- * found *hit (when found); returns whether any object is hit. */
-static int trace_nearest_flat(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
-                              int found)
+/* Continues trace_nearest() over planes, after *hit (when found); returns
+ * whether any object is hit. */
+static int trace_nearest_planes(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
+                                int found)
 {
     /* An exact tie with an earlier-listed object must be seen: the bound is
      * the next double above the best t. */
@@ -39,6 +40,15 @@ static int trace_nearest_flat(const Scene *scene, const Ray *ray, double tmax, H
             bound = nextafter(t, INFINITY);
         }
     }
+    return found;
+}
+
+/* Continues trace_nearest() over triangles, tested one by one. */
+static int trace_nearest_triangles(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
+                                   int found)
+{
+    double bound = found ? nextafter(hit->t, INFINITY) : tmax;
+
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
         double t;
@@ -52,12 +62,26 @@ static int trace_nearest_flat(const Scene *scene, const Ray *ray, double tmax, H
     return found;
 }
 
+/* trace_nearest() through the hierarchy, planes aside. */
+static int trace_find_accel(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+{
+    BvhHit bh;
+    int found = bvh_nearest(scene->accel, scene, ray, tmax, &bh);
+
+    if (found)
+        trace_set_hit(hit, bh.t, bh.prim & BVH_TRIANGLE ? SHAPE_TRIANGLE : SHAPE_SPHERE,
+                      bh.prim & ~BVH_TRIANGLE, bh.order);
+    return scene->plane_count > 0 ? trace_nearest_planes(scene, ray, tmax, hit, found) : found;
+}
+
 /* trace_nearest(), inlined into trace_ray(): its hottest caller. */
 static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
 {
     int found = 0;
     size_t best = 0;
 
+    if (scene->accel)
+        return trace_find_accel(scene, ray, tmax, hit);
     for (size_t k = 0; k < scene->sphere_count; k++) {
         double t;
         /* The interval is open at tmax, so an exact tie keeps the earlier sphere. */
@@ -69,8 +93,10 @@ static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hi
     }
     if (found)
         trace_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
-    if (scene->plane_count > 0 || scene->triangle_count > 0)
-        found = trace_nearest_flat(scene, ray, tmax, hit, found);
+    if (scene->plane_count > 0)
+        found = trace_nearest_planes(scene, ray, tmax, hit, found);
+    if (scene->triangle_count > 0)
+        found = trace_nearest_triangles(scene, ray, tmax, hit, found);
     return found;
 }
 
@@ -83,11 +109,13 @@ int trace_occluded(const Scene *scene, const Ray *segment)
 {
     double t;
 
-    for (size_t k = 0; k < scene->sphere_count; k++)
-        if (sphere_intersect(&scene->spheres[k], segment, 0, 1, &t))
-            return 1;
     for (size_t k = 0; k < scene->plane_count; k++)
         if (plane_intersect(&scene->planes[k], segment, 0, 1, &t))
+            return 1;
+    if (scene->accel)
+        return bvh_occluded(scene->accel, scene, segment);
+    for (size_t k = 0; k < scene->sphere_count; k++)
+        if (sphere_intersect(&scene->spheres[k], segment, 0, 1, &t))
             return 1;
     for (size_t k = 0; k < scene->triangle_count; k++)
         if (triangle_intersect(&scene->triangles[k], segment, 0, 1, &t))
@@ -104,20 +132,63 @@ static int trace_attenuate(double *share, const Material *m, int crossings)
     return *share > 0;
 }
 
+/* Multiplies *share by the transparency of every plane the segment
+ * crosses; returns 0 once nothing is left, else 1. */
+static int trace_attenuate_planes(const Scene *scene, const Ray *segment, double *share)
+{
+    double t;
+
+    for (size_t k = 0; k < scene->plane_count; k++) {
+        const Plane *pl = &scene->planes[k];
+        if (!trace_attenuate(share, &pl->material, plane_intersect(pl, segment, 0, 1, &t)))
+            return 0;
+    }
+    return 1;
+}
+
+/* trace_transmittance() through the hierarchy: the crossings it lists are
+ * multiplied in the order of the loop below (spheres, planes, triangles,
+ * each by index), so the product has the very same bits. Returns -1 when
+ * there are too many crossings to list. */
+static double trace_transmittance_accel(const Scene *scene, const Ray *segment)
+{
+    enum { MAX = 64 };
+    BvhCrossing c[MAX];
+    int n = bvh_crossings(scene->accel, scene, segment, c, MAX), i = 0;
+    double share = 1;
+
+    if (n == -2)
+        return 0;
+    if (n < 0)
+        return -1;
+    for (; i < n && !(c[i].prim & BVH_TRIANGLE); i++)
+        if (!trace_attenuate(&share, &scene->spheres[c[i].prim].material, c[i].crossings))
+            return 0;
+    if (!trace_attenuate_planes(scene, segment, &share))
+        return 0;
+    for (; i < n; i++)
+        if (!trace_attenuate(&share, &scene->triangles[c[i].prim & ~BVH_TRIANGLE].material,
+                             c[i].crossings))
+            return 0;
+    return share;
+}
+
 double trace_transmittance(const Scene *scene, const Ray *segment)
 {
     double share = 1, t;
 
+    if (scene->accel) {
+        double s = trace_transmittance_accel(scene, segment);
+        if (s >= 0)
+            return s;
+    }
     for (size_t k = 0; k < scene->sphere_count; k++) {
         const Sphere *s = &scene->spheres[k];
         if (!trace_attenuate(&share, &s->material, sphere_crossings(s, segment, 0, 1)))
             return 0;
     }
-    for (size_t k = 0; k < scene->plane_count; k++) {
-        const Plane *pl = &scene->planes[k];
-        if (!trace_attenuate(&share, &pl->material, plane_intersect(pl, segment, 0, 1, &t)))
-            return 0;
-    }
+    if (!trace_attenuate_planes(scene, segment, &share))
+        return 0;
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
         if (!trace_attenuate(&share, &tri->material, triangle_intersect(tri, segment, 0, 1, &t)))

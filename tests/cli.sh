@@ -211,6 +211,25 @@ expect_exit "-v" 0 "$RT" -v "$scene" "$T/v.ppm"
 expect_grep "-v rays" "raytrace: rays: 160000 primary, 29209 shadow, 47899 reflection, 0 refraction, 237108 in all" "$T/err"
 expect_grep "-v speed" "Mrays/s" "$T/err"
 
+# --- the bounding volume hierarchy changes no byte ---
+awk 'BEGIN {
+    print "0 0 -30"; print "-8 6 0"; print "8 6 0"; print "-8 -6 0"; print "96";
+    print "10 10 30"; print "20 30 -20 255 255 255"; print "light: -20 10 -10 100 100 160";
+    print "plane: 0 -12 0 0 1 0 200 200 200 0.2";
+    for (i = 0; i < 2000; i++) {
+        x = (i * 7919) % 61 - 30; y = (i * 104729) % 41 - 20; z = 20 + (i * 31) % 100;
+        if (i % 3) printf "sphere: %d %d %d 0.9 %d 120 80 0.3\n", x, y, z, i % 256;
+        else printf "sphere: %d %d %d 0.9 200 200 255 0.1 0.6 1.5\n", x, y, z;
+        printf "triangle: %d %d %d %d %d %d %d %d %d 80 200 80 0.2\n", x, y, z + 1, x + 1, y, z + 1, x, y + 1, z + 1;
+    }
+}' >"$T/many.txt"
+expect_exit "many objects, hierarchy" 0 "$RT" "$T/many.txt" "$T/many-bvh.ppm"
+expect_exit "many objects, every object" 0 "$RT" --no-accel "$T/many.txt" "$T/many-all.ppm"
+cmp -s "$T/many-bvh.ppm" "$T/many-all.ppm" && pass || fail "--no-accel changes the picture of 4,000 objects"
+mesh_hash=$(grep ' scenes/mesh.txt$' "$T/golden" | cut -d' ' -f1)
+[ "$("$RT" --no-accel scenes/mesh.txt - | sha256sum | cut -d' ' -f1)" = "$mesh_hash" ] && pass ||
+    fail "--no-accel changes scenes/mesh.txt"
+
 # --- max depth changes the picture, 0 included ---
 expect_exit "depth 0" 0 "$RT" --max-depth 0 "$scene" "$T/d0.ppm"
 cmp -s "$T/d0.ppm" "$T/course.ppm" && fail "--max-depth 0 renders the same as 10" || pass

@@ -1,0 +1,83 @@
+/*
+ * bvh.h: a bounding volume hierarchy over a scene's spheres and triangles,
+ * built with the surface area heuristic on binned centroids.
+ *
+ * Planes are unbounded and stay outside it. Each node is an axis-aligned
+ * box, padded so that every ray the exact primitive tests accept also
+ * enters the boxes around the primitive; a query visits the boxes the ray
+ * crosses, nearest first, and applies the same primitive tests and the same
+ * tie rule as a loop over every object, so renders are the same to the byte
+ * with or without it.
+ */
+#ifndef RAYTRACE_BVH_H
+#define RAYTRACE_BVH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "ray.h"
+
+struct Scene;
+
+enum {
+    BVH_LEAF_MAX = 4,        /* most primitives in a leaf */
+    BVH_MIN_PRIMITIVES = 16  /* scenes with fewer are not worth a hierarchy */
+};
+
+/* A primitive reference: BVH_TRIANGLE set for a triangle, the index below. */
+#define BVH_TRIANGLE 0x80000000u
+
+typedef struct {
+    double lo[3], hi[3]; /* the box */
+    uint32_t index;      /* interior: the right child (the left is the next
+                            node); leaf: the first of its primitives */
+    uint16_t count;      /* primitives in a leaf; 0 for an interior node */
+    uint16_t axis;       /* interior: the axis it was split on */
+} BvhNode;
+
+typedef struct Bvh {
+    BvhNode *nodes;      /* depth-first, the root first */
+    size_t node_count;
+    uint32_t *prims;     /* primitive references, grouped by leaf */
+    size_t prim_count;
+    int depth;           /* deepest node, the root at 0 */
+} Bvh;
+
+/* Builds the hierarchy of scene's spheres and triangles into *bvh in
+ * O(n log n); returns 0, or -1 (nothing allocated) when memory runs out or
+ * the scene holds 2^31 objects of a kind. */
+int bvh_build(Bvh *bvh, const struct Scene *scene);
+
+/* Releases what *bvh owns. */
+void bvh_free(Bvh *bvh);
+
+/* The nearest crossing a query found. */
+typedef struct {
+    double t;       /* ray parameter */
+    uint32_t prim;  /* primitive reference */
+    unsigned order; /* the object's position among all objects */
+} BvhHit;
+
+/* Finds the sphere or triangle the ray crosses first at 0 < t < tmax (the
+ * earliest-listed on an exact tie); returns 1 with *hit set, or 0. */
+int bvh_nearest(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax,
+                BvhHit *hit);
+
+/* Returns 1 when some sphere or triangle crosses the segment from
+ * ray->origin to ray->origin + ray->dir (0 < t < 1), else 0. */
+int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *segment);
+
+/* A surface crossed by a shadow segment, and how many times. */
+typedef struct {
+    uint32_t prim;  /* primitive reference */
+    int crossings;  /* 1 or 2 */
+} BvhCrossing;
+
+/* Lists in out (room for max) the spheres and triangles the segment
+ * crosses (0 < t < 1), sorted spheres first, each kind by index; returns
+ * how many, -1 when more than max, or -2 as soon as an opaque one (T = 0) is
+ * crossed. */
+int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *segment,
+                  BvhCrossing *out, int max);
+
+#endif

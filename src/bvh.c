@@ -1,0 +1,511 @@
+/* bvh.c: building and querying the bounding volume hierarchy (see bvh.h). */
+#include "bvh.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene.h"
+
+enum {
+    BVH_BINS = 16,        /* centroid bins per split */
+    BVH_SAH_DEPTH = 48,   /* below this depth, splits halve the count */
+    BVH_STACK = 128       /* traversal stack: BVH_SAH_DEPTH + 32 + margin */
+};
+
+/* A box, as lo and hi corners. */
+typedef struct {
+    double lo[3], hi[3];
+} Box;
+
+static void box_empty(Box *b)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = INFINITY;
+        b->hi[a] = -INFINITY;
+    }
+}
+
+static void box_grow(Box *b, const Box *c)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = fmin(b->lo[a], c->lo[a]);
+        b->hi[a] = fmax(b->hi[a], c->hi[a]);
+    }
+}
+
+static void box_grow_point(Box *b, const double p[3])
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = fmin(b->lo[a], p[a]);
+        b->hi[a] = fmax(b->hi[a], p[a]);
+    }
+}
+
+/* Half the surface area of b (0 for an empty box). */
+static double box_half_area(const Box *b)
+{
+    double dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
+    return dx < 0 ? 0 : dx * dy + dy * dz + dz * dx;
+}
+
+/* What the build needs of each primitive. */
+typedef struct {
+    Box box;         /* padded bounds */
+    double c[3];     /* centroid of the box */
+    uint32_t ref;    /* primitive reference */
+} BuildPrim;
+
+/* The padding of every box: 2^-36 (1.5e-11) of the scene's largest
+ * coordinate. The primitive tests round at about 1e-16 of the distances
+ * involved, all below twice that coordinate; the margin is 10^4-fold and
+ * costs nothing measurable. */
+static double bvh_padding(const Scene *scene)
+{
+    double m = fmax(vec3_max_abs(scene->camera.eye),
+                    fmax(vec3_max_abs(scene->camera.top_left),
+                         vec3_max_abs(vec3_add(scene->camera.top_left,
+                                               vec3_add(scene->camera.u, scene->camera.v)))));
+
+    for (size_t i = 0; i < scene->light_count; i++)
+        m = fmax(m, vec3_max_abs(scene->lights[i].position));
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        m = fmax(m, vec3_max_abs(scene->spheres[i].centre) + scene->spheres[i].radius);
+    for (size_t i = 0; i < scene->plane_count; i++)
+        m = fmax(m, vec3_max_abs(scene->planes[i].point));
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        for (int k = 0; k < 3; k++)
+            m = fmax(m, vec3_max_abs(scene->triangles[i].v[k]));
+    return ldexp(m, -36);
+}
+
+static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim *p)
+{
+    p->ref = ref;
+    if (ref & BVH_TRIANGLE) {
+        const Triangle *t = &scene->triangles[ref & ~BVH_TRIANGLE];
+        box_empty(&p->box);
+        for (int k = 0; k < 3; k++) {
+            double v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
+            box_grow_point(&p->box, v);
+        }
+        for (int a = 0; a < 3; a++) {
+            p->box.lo[a] -= pad;
+            p->box.hi[a] += pad;
+        }
+    } else {
+        const Sphere *s = &scene->spheres[ref];
+        double c[3] = {s->centre.x, s->centre.y, s->centre.z}, r = s->radius * (1 + 0x1p-40) + pad;
+        for (int a = 0; a < 3; a++) {
+            p->box.lo[a] = c[a] - r;
+            p->box.hi[a] = c[a] + r;
+        }
+    }
+    for (int a = 0; a < 3; a++)
+        p->c[a] = 0.5 * p->box.lo[a] + 0.5 * p->box.hi[a];
+}
+
+/* Orders prims[lo..hi) so that the k-th smallest centroid on axis is at k,
+ * smaller ones before it and larger after (quickselect). */
+static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
+{
+    while (hi - lo > 1) {
+        double pivot = prims[lo + (hi - lo) / 2].c[axis];
+        size_t i = lo, j = hi - 1;
+        for (;;) {
+            while (prims[i].c[axis] < pivot)
+                i++;
+            while (prims[j].c[axis] > pivot)
+                j--;
+            if (i >= j)
+                break;
+            BuildPrim tmp = prims[i];
+            prims[i] = prims[j];
+            prims[j] = tmp;
+            i++;
+            j--;
+        }
+        if (k <= j)
+            hi = j + 1;
+        else
+            lo = j + 1;
+    }
+}
+
+/* A piece of work: build the subtree of prims[start..end) at depth, and
+ * write its root's index into *slot (when slot is not NULL). */
+typedef struct {
+    size_t start, end;
+    int depth;
+    uint32_t *slot;
+    size_t slot_node; /* the node whose index field slot is */
+} BuildTask;
+
+/* Chooses how to split prims[start..end) (count > BVH_LEAF_MAX or SAH says
+ * so); returns the index of the first primitive of the right part, or
+ * start when it is better left a leaf. Sets *axis. */
+static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *bounds, int depth,
+                        int *axis)
+{
+    size_t n = end - start, mid;
+    Box cb;
+    double extent[3];
+
+    box_empty(&cb);
+    for (size_t i = start; i < end; i++)
+        box_grow_point(&cb, prims[i].c);
+    for (int a = 0; a < 3; a++)
+        extent[a] = cb.hi[a] - cb.lo[a];
+    *axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
+    if (!(extent[*axis] > 0)) {
+        /* All centroids at one point: split by count if the leaf is too big. */
+        if (n <= BVH_LEAF_MAX)
+            return start;
+        return start + n / 2;
+    }
+    if (depth >= BVH_SAH_DEPTH) {
+        mid = start + n / 2;
+        bvh_select(prims, start, end, mid, *axis);
+        return mid;
+    }
+    {
+        size_t count[BVH_BINS] = {0}, left_n[BVH_BINS];
+        Box bin[BVH_BINS], left[BVH_BINS], acc;
+        double scale = BVH_BINS / extent[*axis], best = INFINITY, leaf_cost = (double)n;
+        int best_split = -1;
+
+        for (int b = 0; b < BVH_BINS; b++)
+            box_empty(&bin[b]);
+        for (size_t i = start; i < end; i++) {
+            int b = (int)((prims[i].c[*axis] - cb.lo[*axis]) * scale);
+            b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
+            count[b]++;
+            box_grow(&bin[b], &prims[i].box);
+        }
+        box_empty(&acc);
+        for (int b = 0, total = 0; b < BVH_BINS; b++) {
+            box_grow(&acc, &bin[b]);
+            total += (int)count[b];
+            left[b] = acc;
+            left_n[b] = (size_t)total;
+        }
+        box_empty(&acc);
+        for (int b = BVH_BINS - 1; b > 0; b--) {
+            double cost;
+            box_grow(&acc, &bin[b]);
+            if (left_n[b - 1] == 0 || left_n[b - 1] == n)
+                continue;
+            /* SAH: traversal cost 1, intersection cost 1 a primitive. */
+            cost = 1 + (box_half_area(&left[b - 1]) * (double)left_n[b - 1] +
+                        box_half_area(&acc) * (double)(n - left_n[b - 1])) /
+                           box_half_area(bounds);
+            if (cost < best) {
+                best = cost;
+                best_split = b;
+            }
+        }
+        if (best_split < 0 || (best >= leaf_cost && n <= BVH_LEAF_MAX))
+            return n <= BVH_LEAF_MAX ? start : start + n / 2;
+        /* Partition by bin. */
+        {
+            size_t i = start, j = end;
+            while (i < j) {
+                int b = (int)((prims[i].c[*axis] - cb.lo[*axis]) * scale);
+                b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
+                if (b < best_split) {
+                    i++;
+                } else {
+                    BuildPrim tmp = prims[i];
+                    prims[i] = prims[--j];
+                    prims[j] = tmp;
+                }
+            }
+            mid = i;
+        }
+        if (mid == start || mid == end) { /* cannot happen, but never loop */
+            mid = start + n / 2;
+            bvh_select(prims, start, end, mid, *axis);
+        }
+        return mid;
+    }
+}
+
+int bvh_build(Bvh *bvh, const Scene *scene)
+{
+    size_t n = scene->sphere_count + scene->triangle_count, top = 0, cap_nodes;
+    BuildPrim *prims;
+    BuildTask *stack;
+    double pad = bvh_padding(scene);
+
+    memset(bvh, 0, sizeof *bvh);
+    if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0)
+        return -1;
+    cap_nodes = 2 * n;
+    prims = malloc(n * sizeof *prims);
+    stack = malloc((BVH_SAH_DEPTH + 70) * 2 * sizeof *stack);
+    bvh->nodes = malloc(cap_nodes * sizeof *bvh->nodes);
+    bvh->prims = malloc(n * sizeof *bvh->prims);
+    if (!prims || !stack || !bvh->nodes || !bvh->prims) {
+        free(prims);
+        free(stack);
+        bvh_free(bvh);
+        return -1;
+    }
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
+    stack[top++] = (BuildTask){0, n, 0, NULL, 0};
+    while (top > 0) {
+        BuildTask task = stack[--top];
+        size_t id = bvh->node_count++, split;
+        BvhNode *node = &bvh->nodes[id];
+        Box bounds;
+        int axis = 0;
+
+        if (task.slot)
+            bvh->nodes[task.slot_node].index = (uint32_t)id;
+        box_empty(&bounds);
+        for (size_t i = task.start; i < task.end; i++)
+            box_grow(&bounds, &prims[i].box);
+        memcpy(node->lo, bounds.lo, sizeof node->lo);
+        memcpy(node->hi, bounds.hi, sizeof node->hi);
+        if (task.depth > bvh->depth)
+            bvh->depth = task.depth;
+        split = task.end - task.start <= 1
+                    ? task.start
+                    : bvh_split(prims, task.start, task.end, &bounds, task.depth, &axis);
+        if (split == task.start) {
+            node->index = (uint32_t)task.start;
+            node->count = (uint16_t)(task.end - task.start);
+            node->axis = 0;
+            continue;
+        }
+        node->count = 0;
+        node->axis = (uint16_t)axis;
+        /* The left subtree comes next; the right one patches our index. */
+        stack[top++] = (BuildTask){split, task.end, task.depth + 1, &node->index, id};
+        stack[top++] = (BuildTask){task.start, split, task.depth + 1, NULL, 0};
+    }
+    for (size_t i = 0; i < n; i++)
+        bvh->prims[i] = prims[i].ref;
+    bvh->prim_count = n;
+    free(prims);
+    free(stack);
+    return 0;
+}
+
+void bvh_free(Bvh *bvh)
+{
+    free(bvh->nodes);
+    free(bvh->prims);
+    memset(bvh, 0, sizeof *bvh);
+}
+
+/* The ray, prepared for box tests: reciprocal directions (unused where a
+ * component is 0). */
+typedef struct {
+    double o[3], d[3], inv[3];
+} BvhRay;
+
+static BvhRay bvh_ray(const Ray *r)
+{
+    BvhRay b = {{r->origin.x, r->origin.y, r->origin.z}, {r->dir.x, r->dir.y, r->dir.z}, {0, 0, 0}};
+
+    for (int a = 0; a < 3; a++)
+        b.inv[a] = b.d[a] != 0 ? 1 / b.d[a] : 0;
+    return b;
+}
+
+/* Says whether the ray meets node's box at some t in [0, tmax] (the
+ * interval widened by a few ulps, as pbrt does, so that rounding in the
+ * slabs never loses a crossing); stores the entry t in *tnear. */
+static int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax, double *tnear)
+{
+    const double widen = 1 + 4 * DBL_EPSILON;
+    double t0 = 0, t1 = tmax;
+
+    for (int a = 0; a < 3; a++) {
+        double ta, tb;
+        if (r->d[a] == 0) {
+            if (r->o[a] < node->lo[a] || r->o[a] > node->hi[a])
+                return 0;
+            continue;
+        }
+        ta = (node->lo[a] - r->o[a]) * r->inv[a];
+        tb = (node->hi[a] - r->o[a]) * r->inv[a];
+        if (ta > tb) {
+            double tmp = ta;
+            ta = tb;
+            tb = tmp;
+        }
+        tb *= widen;
+        ta = ta > 0 ? ta / widen : ta * widen;
+        if (ta > t0)
+            t0 = ta;
+        if (tb < t1)
+            t1 = tb;
+        if (!(t0 <= t1))
+            return 0;
+    }
+    *tnear = t0;
+    return 1;
+}
+
+/* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
+static int bvh_prim_hit(const Scene *scene, uint32_t ref, const Ray *ray, double tmin, double tmax,
+                        double *t)
+{
+    if (ref & BVH_TRIANGLE)
+        return triangle_intersect(&scene->triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
+    return sphere_intersect(&scene->spheres[ref], ray, tmin, tmax, t);
+}
+
+static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
+{
+    return ref & BVH_TRIANGLE ? scene->triangles[ref & ~BVH_TRIANGLE].order
+                              : scene->spheres[ref].order;
+}
+
+int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax, BvhHit *hit)
+{
+    BvhRay r = bvh_ray(ray);
+    uint32_t stack[BVH_STACK];
+    int top = 0, found = 0;
+    size_t id = 0;
+
+    for (;;) {
+        const BvhNode *node = &bvh->nodes[id];
+        double tnear;
+        /* A box entered exactly at the best t may still hold an
+         * earlier-listed object at that t: keep it. */
+        double limit = found ? hit->t : tmax;
+
+        if (bvh_box_hit(node, &r, limit, &tnear)) {
+            if (node->count > 0) {
+                for (uint32_t k = node->index; k < node->index + node->count; k++) {
+                    uint32_t ref = bvh->prims[k];
+                    double t, bound = found ? nextafter(hit->t, INFINITY) : tmax;
+                    unsigned order;
+                    if (!bvh_prim_hit(scene, ref, ray, 0, bound, &t))
+                        continue;
+                    order = bvh_prim_order(scene, ref);
+                    if (!found || t < hit->t || order < hit->order) {
+                        hit->t = t;
+                        hit->prim = ref;
+                        hit->order = order;
+                        found = 1;
+                    }
+                }
+            } else {
+                /* Visit the child on the ray's side of the split first. */
+                uint32_t near = (uint32_t)id + 1, far = node->index;
+                if (r.d[node->axis] < 0) {
+                    uint32_t tmp = near;
+                    near = far;
+                    far = tmp;
+                }
+                stack[top++] = far;
+                id = near;
+                continue;
+            }
+        }
+        if (top == 0)
+            return found;
+        id = stack[--top];
+    }
+}
+
+int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *segment)
+{
+    BvhRay r = bvh_ray(segment);
+    uint32_t stack[BVH_STACK];
+    int top = 0;
+    size_t id = 0;
+
+    for (;;) {
+        const BvhNode *node = &bvh->nodes[id];
+        double tnear, t;
+
+        if (bvh_box_hit(node, &r, 1, &tnear)) {
+            if (node->count > 0) {
+                for (uint32_t k = node->index; k < node->index + node->count; k++)
+                    if (bvh_prim_hit(scene, bvh->prims[k], segment, 0, 1, &t))
+                        return 1;
+            } else {
+                stack[top++] = node->index;
+                id = id + 1;
+                continue;
+            }
+        }
+        if (top == 0)
+            return 0;
+        id = stack[--top];
+    }
+}
+
+/* Orders crossings: spheres before triangles, each kind by index. */
+static int bvh_crossing_before(const BvhCrossing *a, const BvhCrossing *b)
+{
+    return a->prim < b->prim; /* BVH_TRIANGLE is the top bit */
+}
+
+int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *segment, BvhCrossing *out,
+                  int max)
+{
+    BvhRay r = bvh_ray(segment);
+    uint32_t stack[BVH_STACK];
+    int top = 0, n = 0;
+    size_t id = 0;
+
+    for (;;) {
+        const BvhNode *node = &bvh->nodes[id];
+        double tnear, t;
+
+        if (bvh_box_hit(node, &r, 1, &tnear)) {
+            if (node->count > 0) {
+                for (uint32_t k = node->index; k < node->index + node->count; k++) {
+                    uint32_t ref = bvh->prims[k];
+                    const Material *m;
+                    int c;
+                    if (ref & BVH_TRIANGLE) {
+                        const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
+                        c = triangle_intersect(tri, segment, 0, 1, &t);
+                        m = &tri->material;
+                    } else {
+                        c = sphere_crossings(&scene->spheres[ref], segment, 0, 1);
+                        m = &scene->spheres[ref].material;
+                    }
+                    if (c == 0)
+                        continue;
+                    if (!(m->transparency > 0))
+                        return -2;
+                    if (n == max)
+                        return -1;
+                    out[n].prim = ref;
+                    out[n].crossings = c;
+                    n++;
+                }
+            } else {
+                stack[top++] = node->index;
+                id = id + 1;
+                continue;
+            }
+        }
+        if (top == 0)
+            break;
+        id = stack[--top];
+    }
+    /* Insertion sort: the lists are short. */
+    for (int i = 1; i < n; i++) {
+        BvhCrossing c = out[i];
+        int j = i;
+        while (j > 0 && bvh_crossing_before(&c, &out[j - 1])) {
+            out[j] = out[j - 1];
+            j--;
+        }
+        out[j] = c;
+    }
+    return n;
+}

@@ -1,0 +1,189 @@
+/* test_bvh.c: the hierarchy's structure, and queries equal to the loops. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bvh.h"
+#include "rng.h"
+#include "scene.h"
+#include "test.h"
+#include "trace.h"
+
+/* Adds n random spheres and n random triangles (some transparent, some
+ * exact duplicates, for ties) around the origin at scale s, and a plane. */
+static void random_scene(Scene *sc, int n, double s)
+{
+    Light light = {{0, 10 * s, 0}, {255, 255, 255}};
+
+    scene_init(sc);
+    CHECK_INT(0, scene_add_light(sc, &light));
+    for (int i = 0; i < n; i++) {
+        Material m = material_plain(colour(100, 100, 100), 0);
+        Sphere sp;
+        Triangle tri;
+        Vec3 c = vec3_scale(rng_unit_vector(), s * rng_uniform());
+
+        if (i % 3 == 0) {
+            m.transparency = 0.5;
+            m.ior = 1.3;
+        }
+        sp.centre = c;
+        sp.radius = s * 0.05 * rng_log_scale(-1, 0);
+        sp.material = m;
+        CHECK_INT(0, scene_add_sphere(sc, &sp));
+        if (i % 10 == 0) /* the same sphere again: exact ties */
+            CHECK_INT(0, scene_add_sphere(sc, &sp));
+        if (triangle_make(&tri, c, vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s)),
+                          vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s)), m) == 0) {
+            CHECK_INT(0, scene_add_triangle(sc, &tri));
+            if (i % 10 == 5)
+                CHECK_INT(0, scene_add_triangle(sc, &tri));
+        }
+    }
+    {
+        Plane pl = plane_make(vec3(0, -s, 0), vec3(0, 1, 0), 1, material_plain(colour(1, 2, 3), 0));
+        CHECK_INT(0, scene_add_plane(sc, &pl));
+    }
+}
+
+/* Checks node id's subtree: boxes hold their children's and primitives'
+ * boxes, leaves are small; counts the primitives in seen. */
+static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
+                          unsigned char *seen, int *bad)
+{
+    const BvhNode *n = &bvh->nodes[id];
+
+    if (n->count > 0) {
+        if (n->count > BVH_LEAF_MAX)
+            (*bad)++;
+        for (uint32_t k = n->index; k < n->index + n->count; k++) {
+            uint32_t ref = bvh->prims[k];
+            size_t slot = ref & BVH_TRIANGLE ? sc->sphere_count + (ref & ~BVH_TRIANGLE) : ref;
+            Vec3 lo, hi;
+            seen[slot]++;
+            if (ref & BVH_TRIANGLE) {
+                const Triangle *t = &sc->triangles[ref & ~BVH_TRIANGLE];
+                lo = hi = t->v[0];
+                for (int j = 1; j < 3; j++) {
+                    lo = vec3(fmin(lo.x, t->v[j].x), fmin(lo.y, t->v[j].y), fmin(lo.z, t->v[j].z));
+                    hi = vec3(fmax(hi.x, t->v[j].x), fmax(hi.y, t->v[j].y), fmax(hi.z, t->v[j].z));
+                }
+            } else {
+                const Sphere *s = &sc->spheres[ref];
+                Vec3 r = vec3(s->radius, s->radius, s->radius);
+                lo = vec3_sub(s->centre, r);
+                hi = vec3_add(s->centre, r);
+            }
+            if (lo.x < n->lo[0] || lo.y < n->lo[1] || lo.z < n->lo[2] || hi.x > n->hi[0] ||
+                hi.y > n->hi[1] || hi.z > n->hi[2])
+                (*bad)++;
+        }
+        return;
+    }
+    for (int c = 0; c < 2; c++) {
+        size_t child = c == 0 ? id + 1 : n->index;
+        const BvhNode *k = &bvh->nodes[child];
+        for (int a = 0; a < 3; a++)
+            if (k->lo[a] < n->lo[a] || k->hi[a] > n->hi[a])
+                (*bad)++;
+        check_subtree(bvh, sc, child, depth + 1, seen, bad);
+    }
+}
+
+static void bvh_holds_every_primitive_once_in_nested_boxes(void)
+{
+    Scene sc;
+    Bvh bvh;
+    unsigned char *seen;
+    int bad = 0;
+    size_t n;
+
+    random_scene(&sc, 3000, 10);
+    n = sc.sphere_count + sc.triangle_count;
+    CHECK_INT(0, bvh_build(&bvh, &sc));
+    seen = calloc(n, 1);
+    check_subtree(&bvh, &sc, 0, 0, seen, &bad);
+    CHECK_INT(0, bad);
+    for (size_t i = 0; i < n; i++)
+        bad += seen[i] != 1;
+    CHECK_INT(0, bad);
+    CHECK(bvh.node_count < 2 * n);
+    CHECK(bvh.depth < 40);
+    free(seen);
+    bvh_free(&bvh);
+    scene_free(&sc);
+}
+
+static void bvh_stays_shallow_on_degenerate_scenes(void)
+{
+    /* 5,000 spheres at one point, and 5,000 at exponentially growing
+     * distances: the depth stays within the traversal stack. */
+    Scene sc;
+    Bvh bvh;
+    Light light = {{0, 10, 0}, {255, 255, 255}};
+
+    scene_init(&sc);
+    CHECK_INT(0, scene_add_light(&sc, &light));
+    for (int i = 0; i < 5000; i++) {
+        Sphere a = {{1, 2, 3}, 1, material_plain(colour(1, 1, 1), 0), 0};
+        Sphere b = {{pow(1.01, i), 0, 0}, 0.5, material_plain(colour(1, 1, 1), 0), 0};
+        CHECK_INT(0, scene_add_sphere(&sc, &a));
+        CHECK_INT(0, scene_add_sphere(&sc, &b));
+    }
+    CHECK_INT(0, bvh_build(&bvh, &sc));
+    CHECK(bvh.depth <= 48 + 32);
+    bvh_free(&bvh);
+    scene_free(&sc);
+}
+
+static void bvh_queries_equal_the_loops(void)
+{
+    /* The same nearest hit (t, object), occlusion and transmittance (to the
+     * bit) with and without the hierarchy, for rays from outside, from
+     * inside, through exact ties, and shadow segments. */
+    static const double scales[] = {1e-3, 1, 1e6};
+    int differ = 0, hits = 0;
+
+    for (int si = 0; si < 3; si++) {
+        double s = scales[si];
+        Scene sc;
+        struct Bvh *accel;
+
+        random_scene(&sc, 400, s);
+        CHECK_INT(0, scene_build_accel(&sc));
+        accel = sc.accel;
+        CHECK(accel != NULL);
+        for (int i = 0; i < 3000 && accel; i++) {
+            Vec3 o = vec3_scale(rng_unit_vector(), s * (i % 2 ? 3 : 0.5));
+            Ray ray = {o, vec3_sub(vec3_scale(rng_unit_vector(), s * rng_uniform()), o)};
+            Ray seg = {o, vec3_scale(ray.dir, rng_range(0.2, 2))};
+            Hit a, b;
+            int fa, fb, oa, ob;
+            double ta, tb;
+
+            sc.accel = NULL; /* every object, one by one */
+            fa = trace_nearest(&sc, &ray, INFINITY, &a);
+            oa = trace_occluded(&sc, &seg);
+            ta = trace_transmittance(&sc, &seg);
+            sc.accel = accel;
+            fb = trace_nearest(&sc, &ray, INFINITY, &b);
+            ob = trace_occluded(&sc, &seg);
+            tb = trace_transmittance(&sc, &seg);
+            hits += fa;
+            if (fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
+                oa != ob || memcmp(&ta, &tb, sizeof ta) != 0)
+                differ++;
+        }
+        scene_free(&sc);
+    }
+    CHECK(hits > 3000);
+    CHECK_INT(0, differ);
+}
+
+const TestCase bvh_tests[] = {
+    {"bvh_holds_every_primitive_once_in_nested_boxes",
+     bvh_holds_every_primitive_once_in_nested_boxes},
+    {"bvh_stays_shallow_on_degenerate_scenes", bvh_stays_shallow_on_degenerate_scenes},
+    {"bvh_queries_equal_the_loops", bvh_queries_equal_the_loops},
+    {NULL, NULL},
+};
