@@ -291,6 +291,12 @@ int bvh_build(Bvh *bvh, const Scene *scene)
     for (size_t i = 0; i < n; i++)
         bvh->prims[i] = prims[i].ref;
     bvh->prim_count = n;
+    /* Give back the room of the nodes that were not needed. */
+    {
+        BvhNode *fit = realloc(bvh->nodes, bvh->node_count * sizeof *fit);
+        if (fit)
+            bvh->nodes = fit;
+    }
     free(prims);
     free(stack);
     return 0;
@@ -417,32 +423,50 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
     }
 }
 
+/* A walk over the leaves whose boxes a ray meets, in no particular order. */
+typedef struct {
+    uint32_t stack[BVH_STACK]; /* nodes still to visit */
+    int top;                   /* how many */
+} BvhWalk;
+
+/* Returns the next leaf whose box the ray r meets at some t in [0, tmax],
+ * or NULL when there are no more; start w with bvh_walk_start(). */
+static const BvhNode *bvh_next_leaf(const Bvh *bvh, const BvhRay *r, double tmax, BvhWalk *w)
+{
+    while (w->top > 0) {
+        uint32_t id = w->stack[--w->top];
+        const BvhNode *node = &bvh->nodes[id];
+        double tnear;
+
+        if (!bvh_box_hit(node, r, tmax, &tnear))
+            continue;
+        if (node->count > 0)
+            return node;
+        w->stack[w->top++] = node->index;
+        w->stack[w->top++] = id + 1;
+    }
+    return NULL;
+}
+
+static void bvh_walk_start(BvhWalk *w)
+{
+    w->stack[0] = 0;
+    w->top = 1;
+}
+
 int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *segment)
 {
     BvhRay r = bvh_ray(segment);
-    uint32_t stack[BVH_STACK];
-    int top = 0;
-    size_t id = 0;
+    BvhWalk w;
+    const BvhNode *leaf;
+    double t;
 
-    for (;;) {
-        const BvhNode *node = &bvh->nodes[id];
-        double tnear, t;
-
-        if (bvh_box_hit(node, &r, 1, &tnear)) {
-            if (node->count > 0) {
-                for (uint32_t k = node->index; k < node->index + node->count; k++)
-                    if (bvh_prim_hit(scene, bvh->prims[k], segment, 0, 1, &t))
-                        return 1;
-            } else {
-                stack[top++] = node->index;
-                id = id + 1;
-                continue;
-            }
-        }
-        if (top == 0)
-            return 0;
-        id = stack[--top];
-    }
+    bvh_walk_start(&w);
+    while ((leaf = bvh_next_leaf(bvh, &r, 1, &w)) != NULL)
+        for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++)
+            if (bvh_prim_hit(scene, bvh->prims[k], segment, 0, 1, &t))
+                return 1;
+    return 0;
 }
 
 /* Orders crossings: spheres before triangles, each kind by index. */
@@ -455,47 +479,35 @@ int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *segment, BvhCro
                   int max)
 {
     BvhRay r = bvh_ray(segment);
-    uint32_t stack[BVH_STACK];
-    int top = 0, n = 0;
-    size_t id = 0;
+    BvhWalk w;
+    const BvhNode *leaf;
+    int n = 0;
+    double t;
 
-    for (;;) {
-        const BvhNode *node = &bvh->nodes[id];
-        double tnear, t;
-
-        if (bvh_box_hit(node, &r, 1, &tnear)) {
-            if (node->count > 0) {
-                for (uint32_t k = node->index; k < node->index + node->count; k++) {
-                    uint32_t ref = bvh->prims[k];
-                    const Material *m;
-                    int c;
-                    if (ref & BVH_TRIANGLE) {
-                        const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
-                        c = triangle_intersect(tri, segment, 0, 1, &t);
-                        m = &tri->material;
-                    } else {
-                        c = sphere_crossings(&scene->spheres[ref], segment, 0, 1);
-                        m = &scene->spheres[ref].material;
-                    }
-                    if (c == 0)
-                        continue;
-                    if (!(m->transparency > 0))
-                        return -2;
-                    if (n == max)
-                        return -1;
-                    out[n].prim = ref;
-                    out[n].crossings = c;
-                    n++;
-                }
+    bvh_walk_start(&w);
+    while ((leaf = bvh_next_leaf(bvh, &r, 1, &w)) != NULL) {
+        for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++) {
+            uint32_t ref = bvh->prims[k];
+            const Material *m;
+            int c;
+            if (ref & BVH_TRIANGLE) {
+                const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
+                c = triangle_intersect(tri, segment, 0, 1, &t);
+                m = &tri->material;
             } else {
-                stack[top++] = node->index;
-                id = id + 1;
-                continue;
+                c = sphere_crossings(&scene->spheres[ref], segment, 0, 1);
+                m = &scene->spheres[ref].material;
             }
+            if (c == 0)
+                continue;
+            if (!(m->transparency > 0))
+                return -2;
+            if (n == max)
+                return -1;
+            out[n].prim = ref;
+            out[n].crossings = c;
+            n++;
         }
-        if (top == 0)
-            break;
-        id = stack[--top];
     }
     /* Insertion sort: the lists are short. */
     for (int i = 1; i < n; i++) {
