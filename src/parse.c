@@ -34,9 +34,8 @@
 #include <string.h>
 
 #include "file.h"
+#include "number.h"
 #include "sampler.h"
-
-#define PARSE_MAX_MAGNITUDE 1e15 /* largest accepted |number| */
 
 enum { PARSE_MAX_TOKENS = 18 }; /* tokens kept per line: a keyword, 15 numbers
                                    (a transparent triangle), 2 extra */
@@ -286,17 +285,6 @@ static int parse_next_record(Parser *P, Record *rec)
     return rc;
 }
 
-/* Results of parse_decimal(). */
-typedef enum {
-    NUMBER_OK,
-    NUMBER_SYNTAX,    /* not a decimal number */
-    NUMBER_NONFINITE, /* inf, nan */
-    NUMBER_HEX,       /* 0x... */
-    NUMBER_TOO_LARGE, /* |x| > PARSE_MAX_MAGNITUDE, or overflows */
-    NUMBER_UNDERFLOW, /* non-zero digits, but below the smallest normal double */
-    NUMBER_NO_MEMORY
-} NumberStatus;
-
 /* Says whether the len bytes at s spell c (case-insensitively). */
 static int parse_word_is(const char *s, size_t len, const char *c)
 {
@@ -307,73 +295,6 @@ static int parse_word_is(const char *s, size_t len, const char *c)
         if (tolower((unsigned char)s[i]) != c[i])
             return 0;
     return 1;
-}
-
-/* Classifies a token that is not a decimal number. */
-static NumberStatus parse_non_decimal(const char *s, size_t len)
-{
-    if (len > 0 && (s[0] == '+' || s[0] == '-')) {
-        s++;
-        len--;
-    }
-    if (parse_word_is(s, len, "inf") || parse_word_is(s, len, "infinity") ||
-        parse_word_is(s, len, "nan") ||
-        (len > 4 && parse_word_is(s, 4, "nan(") && s[len - 1] == ')'))
-        return NUMBER_NONFINITE;
-    if (len > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
-        return NUMBER_HEX;
-    return NUMBER_SYNTAX;
-}
-
-/*
- * number -> [+-] (digits ['.' digits*] | '.' digits) [('e'|'E') [+-] digits]
- * Converts the len bytes at s to *out, correctly rounded, when they spell a
- * number of this form whose value is finite, at most PARSE_MAX_MAGNITUDE in
- * magnitude, and zero or a normal double.
- */
-static NumberStatus parse_decimal(const char *s, size_t len, double *out)
-{
-    size_t i = 0, digits = 0;
-    int nonzero = 0;
-    char small[64], *buf;
-    double v;
-
-    if (i < len && (s[i] == '+' || s[i] == '-'))
-        i++;
-    for (; i < len && isdigit((unsigned char)s[i]); i++, digits++)
-        nonzero |= s[i] != '0';
-    if (i < len && s[i] == '.')
-        for (i++; i < len && isdigit((unsigned char)s[i]); i++, digits++)
-            nonzero |= s[i] != '0';
-    if (digits == 0)
-        return parse_non_decimal(s, len);
-    if (i < len && (s[i] == 'e' || s[i] == 'E')) {
-        size_t exp_digits = 0;
-        i++;
-        if (i < len && (s[i] == '+' || s[i] == '-'))
-            i++;
-        for (; i < len && isdigit((unsigned char)s[i]); i++)
-            exp_digits++;
-        if (exp_digits == 0)
-            return NUMBER_SYNTAX;
-    }
-    if (i != len)
-        return parse_non_decimal(s, len);
-
-    buf = len < sizeof small ? small : malloc(len + 1);
-    if (!buf)
-        return NUMBER_NO_MEMORY;
-    memcpy(buf, s, len);
-    buf[len] = '\0';
-    v = strtod(buf, NULL);
-    if (buf != small)
-        free(buf);
-    if (!(fabs(v) <= PARSE_MAX_MAGNITUDE))
-        return NUMBER_TOO_LARGE;
-    if ((v == 0 && nonzero) || (v != 0 && fabs(v) < DBL_MIN))
-        return NUMBER_UNDERFLOW;
-    *out = v;
-    return NUMBER_OK;
 }
 
 /* Reads token k of rec, the number `index` of spec, into *out, checking the
@@ -387,7 +308,7 @@ static int parse_expect_number(Parser *P, const Record *rec, int k, const Record
     double v = 0;
 
     parse_quote(q, sizeof q, t->text, t->len);
-    switch (parse_decimal(t->text, t->len, &v)) {
+    switch (number_parse(t->text, t->len, &v)) {
     case NUMBER_OK:
         break;
     case NUMBER_SYNTAX:
@@ -497,7 +418,7 @@ static int parse_expect_numbers(Parser *P, const Record *rec, int first, const R
         double ignored;
         char q[64];
 
-        if (parse_decimal(extra->text, extra->len, &ignored) == NUMBER_SYNTAX) {
+        if (number_parse(extra->text, extra->len, &ignored) == NUMBER_SYNTAX) {
             parse_fail(P, &rec->line, extra->column,
                        "expected the end of the line after %s, found %s", spec->what,
                        parse_quote(q, sizeof q, extra->text, extra->len));
@@ -980,7 +901,7 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
     } else if (rec->count > 2 && parse_token_is(&rec->tok[2], "bilinear")) {
         first = 3;
     } else if (rec->count > 2 &&
-               parse_decimal(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
+               number_parse(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
         char q[64];
         parse_fail(P, &rec->line, rec->tok[2].column,
                    "unknown texture filter %s (expected 'nearest' or 'bilinear')",
@@ -1058,7 +979,7 @@ static void parse_fail_keyword(Parser *P, const Record *rec)
             return;
         }
     }
-    if (parse_decimal(t->text, t->len, &ignored) != NUMBER_SYNTAX)
+    if (number_parse(t->text, t->len, &ignored) != NUMBER_SYNTAX)
         parse_fail(P, &rec->line, t->column,
                    "expected a record such as 'sphere:', found the number %s: the 7 header "
                    "records are complete",

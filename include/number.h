@@ -1,0 +1,33 @@
+/*
+ * number.h: the decimal numbers of scene and mesh files.
+ *
+ *   number -> [+-] (digits ['.' digits*] | '.' digits) [('e'|'E') [+-] digits]
+ *
+ * parsed independently of the locale and correctly rounded; inf, nan, hex
+ * floats, magnitudes above NUMBER_MAX_MAGNITUDE and values too small for a
+ * normal double are refused, each with its own status so that messages can
+ * say why.
+ */
+#ifndef RAYTRACE_NUMBER_H
+#define RAYTRACE_NUMBER_H
+
+#include <stddef.h>
+
+#define NUMBER_MAX_MAGNITUDE 1e15 /* largest accepted |number| */
+
+typedef enum {
+    NUMBER_OK,
+    NUMBER_SYNTAX,    /* not a decimal number */
+    NUMBER_NONFINITE, /* inf, nan */
+    NUMBER_HEX,       /* 0x... */
+    NUMBER_TOO_LARGE, /* |x| > NUMBER_MAX_MAGNITUDE, or overflows */
+    NUMBER_UNDERFLOW, /* non-zero digits, but below the smallest normal double */
+    NUMBER_NO_MEMORY
+} NumberStatus;
+
+/* Converts the len bytes at s to *out when they spell a number of the form
+ * above whose value is finite, at most NUMBER_MAX_MAGNITUDE in magnitude,
+ * and zero or a normal double; otherwise says what is wrong. */
+NumberStatus number_parse(const char *s, size_t len, double *out);
+
+#endif

@@ -1,0 +1,88 @@
+/* number.c: decimal numbers (see number.h). */
+#include "number.h"
+
+#include <ctype.h>
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Says whether the len bytes at s spell c (case-insensitively). */
+static int number_word_is(const char *s, size_t len, const char *c)
+{
+    size_t n = strlen(c);
+    if (len != n)
+        return 0;
+    for (size_t i = 0; i < n; i++)
+        if (tolower((unsigned char)s[i]) != c[i])
+            return 0;
+    return 1;
+}
+
+/* Classifies a token that is not a decimal number. */
+static NumberStatus number_non_decimal(const char *s, size_t len)
+{
+    if (len > 0 && (s[0] == '+' || s[0] == '-')) {
+        s++;
+        len--;
+    }
+    if (number_word_is(s, len, "inf") || number_word_is(s, len, "infinity") ||
+        number_word_is(s, len, "nan") ||
+        (len > 4 && number_word_is(s, 4, "nan(") && s[len - 1] == ')'))
+        return NUMBER_NONFINITE;
+    if (len > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
+        return NUMBER_HEX;
+    return NUMBER_SYNTAX;
+}
+
+/*
+ * number -> [+-] (digits ['.' digits*] | '.' digits) [('e'|'E') [+-] digits]
+ * Converts the len bytes at s to *out, correctly rounded, when they spell a
+ * number of this form whose value is finite, at most NUMBER_MAX_MAGNITUDE in
+ * magnitude, and zero or a normal double.
+ */
+NumberStatus number_parse(const char *s, size_t len, double *out)
+{
+    size_t i = 0, digits = 0;
+    int nonzero = 0;
+    char small[64], *buf;
+    double v;
+
+    if (i < len && (s[i] == '+' || s[i] == '-'))
+        i++;
+    for (; i < len && isdigit((unsigned char)s[i]); i++, digits++)
+        nonzero |= s[i] != '0';
+    if (i < len && s[i] == '.')
+        for (i++; i < len && isdigit((unsigned char)s[i]); i++, digits++)
+            nonzero |= s[i] != '0';
+    if (digits == 0)
+        return number_non_decimal(s, len);
+    if (i < len && (s[i] == 'e' || s[i] == 'E')) {
+        size_t exp_digits = 0;
+        i++;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+            i++;
+        for (; i < len && isdigit((unsigned char)s[i]); i++)
+            exp_digits++;
+        if (exp_digits == 0)
+            return NUMBER_SYNTAX;
+    }
+    if (i != len)
+        return number_non_decimal(s, len);
+
+    buf = len < sizeof small ? small : malloc(len + 1);
+    if (!buf)
+        return NUMBER_NO_MEMORY;
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    v = strtod(buf, NULL);
+    if (buf != small)
+        free(buf);
+    if (!(fabs(v) <= NUMBER_MAX_MAGNITUDE))
+        return NUMBER_TOO_LARGE;
+    if ((v == 0 && nonzero) || (v != 0 && fabs(v) < DBL_MIN))
+        return NUMBER_UNDERFLOW;
+    *out = v;
+    return NUMBER_OK;
+}
+
