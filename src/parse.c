@@ -15,6 +15,7 @@
  *   sphere     -> 'sphere:' cx cy cz radius material
  *   plane      -> 'plane:' px py pz nx ny nz material
  *   triangle   -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 material
+ *   mesh       -> 'mesh:' path material           (a Wavefront OBJ file)
  *   material   -> r g b reflection [transparency index]
  *   light      -> 'light:' x y z r g b            (a further light)
  *   ambient    -> 'ambient:' r g b                (at most once)
@@ -35,6 +36,7 @@
 
 #include "file.h"
 #include "number.h"
+#include "obj.h"
 #include "sampler.h"
 
 enum { PARSE_MAX_TOKENS = 18 }; /* tokens kept per line: a keyword, 15 numbers
@@ -75,11 +77,13 @@ typedef struct {
     int lens_line;     /* line of the lens: record, 0 before it */
     int has_last;      /* an object has been read */
     int last_kind;     /* which shape the last object is (a PARSE_SHAPE_*) */
-    size_t last_index; /* its index among the scene's shapes of that kind */
+    size_t last_index; /* its index among the scene's shapes of that kind (a
+                          mesh: its first triangle's) */
+    size_t last_count; /* a mesh: how many triangles it added */
 } Parser;
 
 /* The shapes a texture: record may follow. */
-enum { PARSE_SHAPE_SPHERE, PARSE_SHAPE_PLANE, PARSE_SHAPE_TRIANGLE };
+enum { PARSE_SHAPE_SPHERE, PARSE_SHAPE_PLANE, PARSE_SHAPE_TRIANGLE, PARSE_SHAPE_MESH };
 
 /* What a number stands for, and so which values it may take. */
 typedef enum {
@@ -168,6 +172,10 @@ static const RecordSpec parse_sphere_texture = {"the sphere's texture", "path [f
                                                 NULL, NULL};
 static const RecordSpec parse_plane_texture = {"the plane's texture", "path [filter] [tile_size]",
                                                0, 1, parse_tile_names, parse_tile_kinds};
+static const RecordSpec parse_mesh = {"the mesh", "path r g b reflection [transparency index]",
+                                      4, 2, parse_sphere_names + 4, parse_sphere_kinds + 4};
+static const RecordSpec parse_mesh_texture = {"the mesh's texture", "path [filter]", 0, 0, NULL,
+                                              NULL};
 static const RecordSpec parse_triangle_texture = {"the triangle's texture",
                                                   "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6,
                                                   parse_uv_names, parse_uv_kinds};
@@ -633,11 +641,11 @@ static int parse_header(Parser *P, Scene *scene)
     return 0;
 }
 
-/* material -> r g b reflection [transparency index]: the n numbers of spec
- * from values[first] on (n = 4 or 6), read by parse_expect_numbers() from
- * rec, where the first number is token first + 1; checks R + T <= 1. */
-static int parse_material(Parser *P, const Record *rec, const RecordSpec *spec, int first,
-                          const double *values, int n, Material *m)
+/* material -> r g b reflection [transparency index]: the numbers of spec
+ * from values[first] on, read by parse_expect_numbers() (n of them in all)
+ * from rec's tokens, the first number being token tok0; checks R + T <= 1. */
+static int parse_material(Parser *P, const Record *rec, const RecordSpec *spec, int tok0,
+                          int first, const double *values, int n, Material *m)
 {
     const double *v = values + first;
 
@@ -645,7 +653,7 @@ static int parse_material(Parser *P, const Record *rec, const RecordSpec *spec, 
     if (n == spec->count + spec->optional) {
         /* A little slack, so that 0.1 + 0.9 passes whatever the rounding. */
         if (v[3] + v[4] > 1 + 1e-12) {
-            const Token *t = &rec->tok[first + 1 + 4];
+            const Token *t = &rec->tok[tok0 + first + 4];
             parse_fail(P, &rec->line, t->column,
                        "%s's reflection plus transparency must be at most 1, found %g + %g",
                        spec->what, v[3], v[4]);
@@ -672,6 +680,7 @@ static Material *parse_last_material(Parser *P, Scene *scene)
     case PARSE_SHAPE_PLANE:
         return &scene->planes[P->last_index].material;
     case PARSE_SHAPE_TRIANGLE:
+    case PARSE_SHAPE_MESH:
         return &scene->triangles[P->last_index].material;
     default:
         return &scene->spheres[P->last_index].material;
@@ -692,7 +701,7 @@ static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
     int n = parse_expect_numbers(P, rec, 1, &parse_sphere, v);
     Sphere s;
 
-    if (n < 0 || parse_material(P, rec, &parse_sphere, 4, v, n, &s.material) != 0)
+    if (n < 0 || parse_material(P, rec, &parse_sphere, 1, 4, v, n, &s.material) != 0)
         return -1;
     s.centre = vec3(v[0], v[1], v[2]);
     s.radius = v[3];
@@ -710,7 +719,7 @@ static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
     Material m;
     Plane pl;
 
-    if (n < 0 || parse_material(P, rec, &parse_plane, 6, v, n, &m) != 0)
+    if (n < 0 || parse_material(P, rec, &parse_plane, 1, 6, v, n, &m) != 0)
         return -1;
     if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
         parse_fail(P, &rec->line, rec->tok[4].column,
@@ -733,7 +742,7 @@ static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
     Material m;
     Triangle tri;
 
-    if (n < 0 || parse_material(P, rec, &parse_triangle, 9, v, n, &m) != 0)
+    if (n < 0 || parse_material(P, rec, &parse_triangle, 1, 9, v, n, &m) != 0)
         return -1;
     if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
                       vec3(v[6], v[7], v[8]), m) != 0) {
@@ -820,25 +829,53 @@ static int parse_token_is(const Token *t, const char *c)
     return t->len == strlen(c) && memcmp(t->text, c, t->len) == 0;
 }
 
+/* Returns token t as a file path relative to the scene file's directory
+ * (as given when absolute, or when the scene has no directory), in a new
+ * string; NULL with the fault recorded when memory runs out. */
+static char *parse_path(Parser *P, const Token *t)
+{
+    const char *slash = strrchr(P->name, '/');
+    size_t dir = t->text[0] == '/' || !slash ? 0 : (size_t)(slash - P->name) + 1;
+    char *path = malloc(dir + t->len + 1);
+
+    if (!path) {
+        error_set(P->err, P->name, "out of memory");
+        return NULL;
+    }
+    memcpy(path, P->name, dir);
+    memcpy(path + dir, t->text, t->len);
+    path[dir + t->len] = '\0';
+    return path;
+}
+
+/* Records that the file named by token t, a `what` ("texture", "mesh"),
+ * cannot be used, with the fault inner found in it. */
+static void parse_fail_file(Parser *P, const Record *rec, const Token *t, const char *what,
+                            const Error *inner)
+{
+    char q[64];
+
+    parse_quote(q, sizeof q, t->text, t->len);
+    if (inner->line > 0)
+        parse_fail(P, &rec->line, t->column, "cannot use the %s %s: %s:%d:%d: %s", what, q,
+                   inner->file, inner->line, inner->column, inner->message);
+    else
+        parse_fail(P, &rec->line, t->column, "cannot use the %s %s: %s", what, q,
+                   inner->message);
+}
+
 /* Loads the texture file named by token t (relative to the scene file's
  * directory) into the scene, or finds it there already; returns its index,
  * or -1 with the fault recorded at t. */
 static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scene *scene)
 {
-    const char *slash = strrchr(P->name, '/');
-    size_t dir = t->text[0] == '/' || !slash ? 0 : (size_t)(slash - P->name) + 1;
-    char *path = malloc(dir + t->len + 1), q[64];
+    char *path = parse_path(P, t);
     Texture tex;
     Error inner;
     int index;
 
-    if (!path) {
-        error_set(P->err, P->name, "out of memory");
+    if (!path)
         return -1;
-    }
-    memcpy(path, P->name, dir);
-    memcpy(path + dir, t->text, t->len);
-    path[dir + t->len] = '\0';
     for (size_t i = 0; i < scene->texture_count; i++) {
         if (strcmp(scene->textures[i].path, path) == 0) {
             free(path);
@@ -846,13 +883,7 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
         }
     }
     if (texture_load(&tex, path, path, &inner) != 0) {
-        parse_quote(q, sizeof q, t->text, t->len);
-        if (inner.line > 0)
-            parse_fail(P, &rec->line, t->column, "cannot use the texture %s: %s:%d:%d: %s", q,
-                       inner.file, inner.line, inner.column, inner.message);
-        else
-            parse_fail(P, &rec->line, t->column, "cannot use the texture %s: %s", q,
-                       inner.message);
+        parse_fail_file(P, rec, t, "texture", &inner);
         free(path);
         return -1;
     }
@@ -863,13 +894,84 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
     return index;
 }
 
+/* Adds the triangles of OBJ mesh m with material mat, and the texture
+ * coordinates of their corners when all three have some; returns how many
+ * it added (triangles without area are left out), or -1 out of memory. */
+static long parse_add_mesh(Parser *P, const ObjMesh *m, const Material *mat, Scene *scene)
+{
+    long added = 0;
+
+    for (size_t i = 0; i < m->tri_count; i++) {
+        const ObjCorner *c = m->tri[i];
+        Triangle tri;
+        if (triangle_make(&tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
+            continue;
+        if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
+            for (int k = 0; k < 3; k++) {
+                tri.uv[k][0] = m->vt[c[k].vt][0];
+                tri.uv[k][1] = m->vt[c[k].vt][1];
+            }
+        if (scene_add_triangle(scene, &tri) != 0) {
+            parse_fail_memory(P, scene);
+            return -1;
+        }
+        added++;
+    }
+    return added;
+}
+
+/* mesh -> 'mesh:' path r g b reflection [transparency index] */
+static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
+{
+    double v[6];
+    Material mat;
+    ObjMesh mesh;
+    Error inner;
+    char *path, q[64];
+    long added;
+    int n;
+
+    if (rec->count < 2) {
+        parse_fail(P, &rec->line, rec->end_column,
+                   "expected the path of an OBJ file for the mesh (%s), found the end of the "
+                   "line",
+                   parse_mesh.syntax);
+        return -1;
+    }
+    n = parse_expect_numbers(P, rec, 2, &parse_mesh, v);
+    if (n < 0 || parse_material(P, rec, &parse_mesh, 2, 0, v, n, &mat) != 0)
+        return -1;
+    path = parse_path(P, &rec->tok[1]);
+    if (!path)
+        return -1;
+    if (obj_load(path, &mesh, &inner) != 0) {
+        parse_fail_file(P, rec, &rec->tok[1], "mesh", &inner);
+        free(path);
+        return -1;
+    }
+    free(path);
+    added = parse_add_mesh(P, &mesh, &mat, scene);
+    obj_free(&mesh);
+    if (added < 0)
+        return -1;
+    if (added == 0) {
+        parse_fail(P, &rec->line, rec->tok[1].column,
+                   "the mesh %s has no faces with an area: nothing to draw",
+                   parse_quote(q, sizeof q, rec->tok[1].text, rec->tok[1].len));
+        return -1;
+    }
+    parse_note_object(P, PARSE_SHAPE_MESH, scene->triangle_count - (size_t)added);
+    P->last_count = (size_t)added;
+    return 0;
+}
+
 /* texture -> 'texture:' path [nearest | bilinear] number*, for the object
  * just before: none for a sphere, [tile_size] for a plane, [u0 v0 u1 v1 u2
  * v2] for a triangle. */
 static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
 {
     static const RecordSpec *const specs[] = {&parse_sphere_texture, &parse_plane_texture,
-                                              &parse_triangle_texture};
+                                              &parse_triangle_texture, &parse_mesh_texture};
     const RecordSpec *spec;
     int first = 2, n, index;
     double v[6];
@@ -921,9 +1023,12 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
     index = parse_load_texture(P, rec, &rec->tok[1], scene);
     if (index < 0)
         return -1;
-    m = parse_last_material(P, scene);
-    m->texture = index;
-    m->filter = filter;
+    for (size_t k = 0; k < (P->last_kind == PARSE_SHAPE_MESH ? P->last_count : 1); k++) {
+        m = P->last_kind == PARSE_SHAPE_MESH ? &scene->triangles[P->last_index + k].material
+                                             : parse_last_material(P, scene);
+        m->texture = index;
+        m->filter = filter;
+    }
     if (P->last_kind == PARSE_SHAPE_PLANE && n == 1)
         scene->planes[P->last_index].tile = v[0];
     if (P->last_kind == PARSE_SHAPE_TRIANGLE && n == 6)
@@ -945,13 +1050,14 @@ static const RecordKind parse_records[] = {
     {"triangle:", parse_triangle_record}, {"light:", parse_extra_light_record},
     {"ambient:", parse_ambient_record}, {"samples:", parse_samples_record},
     {"lens:", parse_lens_record},       {"texture:", parse_texture_record},
+    {"mesh:", parse_mesh_record},
 };
 
 enum { PARSE_RECORD_KINDS = sizeof parse_records / sizeof parse_records[0] };
 
 #define PARSE_KEYWORD_LIST                                                                    \
-    "'sphere:', 'plane:', 'triangle:', 'light:', 'ambient:', 'samples:', 'lens:' or "         \
-    "'texture:'"
+    "'sphere:', 'plane:', 'triangle:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' "   \
+    "or 'texture:'"
 
 /* Records why the first token of rec is not a known record keyword. */
 static void parse_fail_keyword(Parser *P, const Record *rec)
@@ -1026,6 +1132,7 @@ int parse_scene_text(const char *name, const char *text, size_t len, Scene *scen
     P.err = err;
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;
+    P.last_count = 0;
     P.last_kind = PARSE_SHAPE_SPHERE;
     P.last_index = 0;
     if (parse_header(&P, scene) != 0 || parse_objects(&P, scene) != 0) {

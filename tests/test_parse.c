@@ -242,7 +242,7 @@ static const BadScene parse_bad_scenes[] = {
     {HEADER "sphere 0 0 5 1 200 100 50 0.25\n", 8, 1,
      "expected 'sphere:' with its colon attached, found 'sphere'"},
     {HEADER "  cube: 0 0 0\n", 8, 3,
-     "unknown record 'cube:' (expected 'sphere:', 'plane:', 'triangle:', 'light:', "
+     "unknown record 'cube:' (expected 'sphere:', 'plane:', 'triangle:', 'mesh:', 'light:', "
      "'ambient:', 'samples:', 'lens:' or 'texture:')"},
     {HEADER "Plane: 0 0 0 0 1 0 1 2 3 0\n", 8, 1,
      "unknown record 'Plane:': keywords are lower case ('plane:')"},

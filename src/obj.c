@@ -1,0 +1,310 @@
+/* obj.c: Wavefront OBJ reading (see obj.h). */
+#include "obj.h"
+
+#include <limits.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "file.h"
+#include "number.h"
+
+/* Where the reader is: the file and the line being read. */
+typedef struct {
+    const char *name;  /* file name for messages */
+    const char *line;  /* first byte of the line */
+    size_t len;        /* bytes, without the line ending */
+    int lineno;        /* 1-based */
+    Error *err;
+} ObjReader;
+
+/* Records a fault at byte offset `at` of the current line. */
+static int obj_fail(ObjReader *r, size_t at, const char *fmt, ...)
+{
+    char msg[ERROR_MESSAGE_MAX];
+    va_list ap;
+
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    error_set_at(r->err, r->name, r->lineno, (int)at + 1, r->line, r->len, "%s", msg);
+    return -1;
+}
+
+/* Makes room for one more item of size bytes in *items (count used of
+ * *cap); returns 0, or -1 when memory runs out. */
+static int obj_reserve(void **items, size_t *cap, size_t count, size_t size)
+{
+    size_t n;
+    void *grown;
+
+    if (count < *cap)
+        return 0;
+    n = *cap ? 2 * *cap : 64;
+    if (n > SIZE_MAX / size)
+        return -1;
+    grown = realloc(*items, n * size);
+    if (!grown)
+        return -1;
+    *items = grown;
+    *cap = n;
+    return 0;
+}
+
+void obj_free(ObjMesh *mesh)
+{
+    free(mesh->v);
+    free(mesh->vt);
+    free(mesh->vn);
+    free(mesh->tri);
+    memset(mesh, 0, sizeof *mesh);
+}
+
+static int obj_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+/* Moves *i past blanks; returns the token's end (start *i) or *i at the
+ * end of the line. */
+static size_t obj_token(const ObjReader *r, size_t *i)
+{
+    size_t e;
+
+    while (*i < r->len && obj_blank(r->line[*i]))
+        (*i)++;
+    e = *i;
+    while (e < r->len && !obj_blank(r->line[e]))
+        e++;
+    return e;
+}
+
+/* Reads up to max numbers after position *i into out; at least min of
+ * them. Returns how many, or -1 with the fault recorded. */
+static int obj_numbers(ObjReader *r, size_t *i, const char *what, int min, int max, double *out)
+{
+    int n = 0;
+
+    for (;;) {
+        size_t e = obj_token(r, i);
+        double v;
+        if (e == *i)
+            break;
+        if (number_parse(r->line + *i, e - *i, &v) != NUMBER_OK)
+            return obj_fail(r, *i, "expected a number for %s, found '%.*s'", what,
+                            (int)(e - *i > 40 ? 40 : e - *i), r->line + *i);
+        if (n < max)
+            out[n] = v;
+        n++;
+        *i = e;
+    }
+    if (n < min)
+        return obj_fail(r, *i, "expected at least %d numbers for %s, found %d", min, what, n);
+    return n < max ? n : max;
+}
+
+/* Reads a signed index at *p (up to end) into *out; returns 0 or -1. */
+static int obj_index(const char **p, const char *end, long *out)
+{
+    const char *s = *p;
+    long v = 0;
+    int neg = 0, digits = 0;
+
+    if (s < end && *s == '-') {
+        neg = 1;
+        s++;
+    }
+    for (; s < end && *s >= '0' && *s <= '9'; s++, digits++) {
+        if (v > (LONG_MAX - 9) / 10)
+            return -1;
+        v = v * 10 + (*s - '0');
+    }
+    if (!digits)
+        return -1;
+    *out = neg ? -v : v;
+    *p = s;
+    return 0;
+}
+
+/* Turns a 1-based or negative OBJ index into a 0-based one among count;
+ * returns -1 when it names nothing. */
+static long obj_resolve(long i, size_t count)
+{
+    if (i > 0 && (size_t)i <= count)
+        return i - 1;
+    if (i < 0 && (size_t)-i <= count)
+        return (long)count + i;
+    return -1;
+}
+
+/* corner -> v | v '/' vt | v '//' vn | v '/' vt '/' vn */
+static int obj_corner(ObjReader *r, const ObjMesh *m, size_t start, size_t end, ObjCorner *c)
+{
+    const char *p = r->line + start, *e = r->line + end;
+    long raw;
+
+    c->vt = c->vn = -1;
+    if (obj_index(&p, e, &raw) != 0)
+        return obj_fail(r, start, "expected a face corner (v, v/vt, v//vn or v/vt/vn), found "
+                                  "'%.*s'", (int)(end - start > 40 ? 40 : end - start),
+                        r->line + start);
+    if ((c->v = obj_resolve(raw, m->v_count)) < 0)
+        return obj_fail(r, start, "vertex %ld does not exist (%zu vertices so far)", raw,
+                        m->v_count);
+    if (p < e && *p == '/') {
+        p++;
+        if (p < e && *p != '/') {
+            size_t at = (size_t)(p - r->line);
+            if (obj_index(&p, e, &raw) != 0)
+                return obj_fail(r, at, "expected a texture coordinate index after '/'");
+            if ((c->vt = obj_resolve(raw, m->vt_count)) < 0)
+                return obj_fail(r, at, "texture coordinate %ld does not exist (%zu so far)",
+                                raw, m->vt_count);
+        }
+        if (p < e && *p == '/') {
+            size_t at = (size_t)(++p - r->line);
+            if (obj_index(&p, e, &raw) != 0)
+                return obj_fail(r, at, "expected a normal index after '/'");
+            if ((c->vn = obj_resolve(raw, m->vn_count)) < 0)
+                return obj_fail(r, at, "normal %ld does not exist (%zu so far)", raw,
+                                m->vn_count);
+        }
+    }
+    if (p != e)
+        return obj_fail(r, (size_t)(p - r->line), "unexpected '%c' in a face corner", *p);
+    return 0;
+}
+
+/* f -> corner corner corner corner*: a fan of triangles from the first. */
+static int obj_face(ObjReader *r, ObjMesh *m, size_t i, size_t *tri_cap)
+{
+    ObjCorner first, prev, c;
+    int n = 0;
+
+    for (;;) {
+        size_t e = obj_token(r, &i);
+        if (e == i)
+            break;
+        if (obj_corner(r, m, i, e, &c) != 0)
+            return -1;
+        if (n == 0) {
+            first = c;
+        } else if (n >= 2) {
+            if (obj_reserve((void **)&m->tri, tri_cap, m->tri_count, sizeof *m->tri) != 0)
+                return obj_fail(r, i, "out of memory after %zu triangles", m->tri_count);
+            m->tri[m->tri_count][0] = first;
+            m->tri[m->tri_count][1] = prev;
+            m->tri[m->tri_count][2] = c;
+            m->tri_count++;
+        }
+        prev = c;
+        n++;
+        i = e;
+    }
+    if (n < 3)
+        return obj_fail(r, i, "a face needs at least 3 corners, found %d", n);
+    return 0;
+}
+
+/* Reads one line's record. */
+static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
+{
+    static const char *const ignored[] = {"o", "g", "s", "usemtl", "mtllib", "l", "p"};
+    size_t i = 0, e = obj_token(r, &i), kw = i, n = e - i;
+    const char *word = r->line + i;
+    double val[3];
+
+    if (n == 0)
+        return 0;
+    i = e;
+    if (n == 1 && word[0] == 'v') {
+        if (obj_numbers(r, &i, "a vertex (x y z)", 3, 3, val) < 0)
+            return -1;
+        if (obj_reserve((void **)&m->v, &caps[0], m->v_count, sizeof *m->v) != 0)
+            return obj_fail(r, kw, "out of memory after %zu vertices", m->v_count);
+        m->v[m->v_count++] = vec3(val[0], val[1], val[2]);
+    } else if (n == 2 && memcmp(word, "vt", 2) == 0) {
+        int k = obj_numbers(r, &i, "a texture coordinate (u [v [w]])", 1, 3, val);
+        if (k < 0)
+            return -1;
+        if (obj_reserve((void **)&m->vt, &caps[1], m->vt_count, sizeof *m->vt) != 0)
+            return obj_fail(r, kw, "out of memory");
+        m->vt[m->vt_count][0] = val[0];
+        m->vt[m->vt_count][1] = k > 1 ? val[1] : 0;
+        m->vt_count++;
+    } else if (n == 2 && memcmp(word, "vn", 2) == 0) {
+        size_t at = i;
+        int k = obj_numbers(r, &i, "a normal (x y z)", 3, 4, val);
+        if (k < 0)
+            return -1;
+        if (k > 3) {
+            /* Point at the fourth number. */
+            for (int skip = 0; skip < 3; skip++)
+                at = obj_token(r, &at);
+            obj_token(r, &at);
+            return obj_fail(r, at, "a normal has 3 numbers (x y z), found more");
+        }
+        if (obj_reserve((void **)&m->vn, &caps[2], m->vn_count, sizeof *m->vn) != 0)
+            return obj_fail(r, kw, "out of memory");
+        m->vn[m->vn_count++] = vec3(val[0], val[1], val[2]);
+    } else if (n == 1 && word[0] == 'f') {
+        return obj_face(r, m, i, &caps[3]);
+    } else {
+        for (size_t k = 0; k < sizeof ignored / sizeof ignored[0]; k++)
+            if (n == strlen(ignored[k]) && memcmp(word, ignored[k], n) == 0)
+                return 0;
+        return obj_fail(r, kw, "unsupported OBJ record '%.*s' (read: v, vt, vn, f; ignored: o, "
+                               "g, s, usemtl, mtllib, l, p)",
+                        (int)(n > 40 ? 40 : n), word);
+    }
+    return 0;
+}
+
+int obj_load(const char *path, ObjMesh *mesh, Error *err)
+{
+    char *data;
+    size_t len, caps[4] = {0, 0, 0, 0};
+    const char *p, *end;
+    ObjReader r;
+    int rc = 0;
+
+    memset(mesh, 0, sizeof *mesh);
+    if (file_read_all(path, &data, &len, err) != 0)
+        return -1;
+    r.name = file_display_name(path);
+    r.err = err;
+    r.lineno = 0;
+    p = data;
+    end = data + len;
+    if (len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
+        p += 3;
+    while (p < end && rc == 0) {
+        const char *eol = memchr(p, '\n', (size_t)(end - p)), *hash;
+        r.line = p;
+        r.len = (size_t)((eol ? eol : end) - p);
+        r.lineno++;
+        p = eol ? eol + 1 : end;
+        if (r.len > 0 && r.line[r.len - 1] == '\r')
+            r.len--;
+        for (size_t i = 0; i < r.len; i++) {
+            if (r.line[i] == '\0' || r.line[i] == '\r') {
+                rc = obj_fail(&r, i, r.line[i] ? "carriage return inside a line"
+                                               : "NUL byte: an OBJ file is 8-bit text (is it "
+                                                 "UTF-16?)");
+                break;
+            }
+        }
+        if (rc != 0)
+            break;
+        hash = memchr(r.line, '#', r.len);
+        if (hash)
+            r.len = (size_t)(hash - r.line);
+        rc = obj_record(&r, mesh, caps);
+    }
+    free(data);
+    if (rc != 0)
+        obj_free(mesh);
+    return rc;
+}
