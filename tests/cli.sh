@@ -230,6 +230,38 @@ mesh_hash=$(grep ' scenes/mesh.txt$' "$T/golden" | cut -d' ' -f1)
 [ "$("$RT" --no-accel scenes/mesh.txt - | sha256sum | cut -d' ' -f1)" = "$mesh_hash" ] && pass ||
     fail "--no-accel changes scenes/mesh.txt"
 
+# --- OBJ files written by other tools: Debian's assimp-testmodels ---
+models=/usr/share/assimp/models
+if [ -d "$models/OBJ" ]; then
+    # obj_check FILE STATUS [MESSAGE]: a scene with FILE as its mesh checks
+    # with STATUS, and its error (if any) contains MESSAGE.
+    obj_check() {
+        printf '0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n32\n0 0 0\n5 5 -10 255 255 255\nmesh: %s 200 150 100 0\n' \
+            "$1" >"$T/obj.txt"
+        expect_exit "assimp $(basename "$1")" "$2" "$RT" --check "$T/obj.txt"
+        [ -z "$3" ] || expect_grep "assimp $(basename "$1") message" "$3" "$T/err"
+    }
+    obj_check "$models/OBJ/WusonOBJ.obj" 0
+    expect_line "WusonOBJ triangles" 1 "$T/obj.txt: OK: 32 x 32 pixels, 3732 objects, 1 light" "$T/out"
+    for f in box box_longline box_mat_with_spaces box_without_lineending concave_polygon \
+        cube_mtllib_after_g cube_usemtl cube_with_vertexcolors cube_with_vertexcolors_uni \
+        empty_mat multiple_spaces regr01 regr_3429812 space_in_material_name spider testmixed; do
+        obj_check "$models/OBJ/$f.obj" 0
+    done
+    obj_check "$models/OBJ/box_UTF16BE.obj" 1 "box_UTF16BE.obj:1:3: NUL byte"
+    obj_check "$models/OBJ/number_formats.obj" 1 "number_formats.obj:11:14: expected a number for a vertex (x y z), found '3.1+e2'"
+    obj_check "$models/OBJ/point_cloud.obj" 1 "has no faces with an area"
+    obj_check "$models/OBJ/testline.obj" 1 "has no faces with an area"
+    obj_check "$models/invalid/empty.obj" 1 "has no faces with an area"
+    obj_check "$models/invalid/malformed.obj" 1 "malformed.obj:23:5: vertex 12 does not exist (8 vertices so far)"
+    obj_check "$models/invalid/malformed2.obj" 1 "malformed2.obj:23:2: a face needs at least 3 corners, found 0"
+    printf '0 1 -3\n-1 2 -2\n1 2 -2\n-1 0 -2\n48\n20 20 30\n5 5 -10 255 255 255\nmesh: %s 200 150 100 0.2\n' \
+        "$models/OBJ/spider.obj" >"$T/spider.txt"
+    expect_exit "render an assimp model" 0 "$RT" "$T/spider.txt" "$T/spider.ppm"
+elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+    fail "assimp-testmodels is missing: the OBJ files of other tools are not tested"
+fi
+
 # --- max depth changes the picture, 0 included ---
 expect_exit "depth 0" 0 "$RT" --max-depth 0 "$scene" "$T/d0.ppm"
 cmp -s "$T/d0.ppm" "$T/course.ppm" && fail "--max-depth 0 renders the same as 10" || pass
