@@ -17,7 +17,9 @@ typedef struct {
 /* A point on a surface, with what a secondary ray needs to leave it. */
 typedef struct {
     Vec3 point;  /* on the surface, re-projected from the ray's hit */
-    Vec3 normal; /* the surface's outward unit normal at point */
+    Vec3 normal;  /* the surface's outward unit normal at point */
+    Vec3 shading; /* the unit normal shading uses: `normal`, except on a
+                     smooth triangle (interpolated vertex normals) */
     Vec3 error;  /* per-component bound on |point - true surface point| */
 } SurfacePoint;
 

@@ -23,6 +23,8 @@ typedef struct {
     Vec3 v[3];         /* vertices, scene units */
     Vec3 normal;       /* unit (v1 - v0) x (v2 - v0): the front */
     double uv[3][2];   /* texture coordinates of the vertices */
+    Vec3 vn[3];        /* unit vertex normals, when smooth */
+    int smooth;        /* 1: shade with the normal interpolated from vn */
     unsigned swapped;  /* bit k: edge k's vertices are taken in reverse */
     Material material; /* what the surface looks like */
     unsigned order;    /* position among the scene's objects, for ties */
@@ -38,8 +40,10 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m);
 int triangle_intersect(const Triangle *tri, const Ray *ray, double tmin, double tmax, double *t);
 
 /* Returns the point where the ray meets the triangle's plane, computed from
- * its barycentric coordinates, with the normal and error bound; stores in uv
- * the interpolated texture coordinates. The ray must cross the triangle. */
+ * its barycentric coordinates, with the normal (and, on a smooth triangle,
+ * the shading normal interpolated from the vertex normals) and error bound;
+ * stores in uv the interpolated texture coordinates. The ray must cross the
+ * triangle. */
 SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[2]);
 
 #endif

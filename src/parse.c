@@ -906,6 +906,19 @@ static long parse_add_mesh(Parser *P, const ObjMesh *m, const Material *mat, Sce
         Triangle tri;
         if (triangle_make(&tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
             continue;
+        if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
+            /* Vertex normals: smooth shading, unless one is zero. */
+            tri.smooth = 1;
+            for (int k = 0; k < 3; k++) {
+                Vec3 vn = m->vn[c[k].vn];
+                if (!(vec3_length(vn) > 0))
+                    tri.smooth = 0;
+                else
+                    tri.vn[k] = vec3_normalize(vn);
+            }
+            if (!tri.smooth)
+                tri.vn[0] = tri.vn[1] = tri.vn[2] = tri.normal;
+        }
         if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
             for (int k = 0; k < 3; k++) {
                 tri.uv[k][0] = m->vt[c[k].vt][0];

@@ -54,6 +54,7 @@ SurfacePoint plane_surface_at(const Plane *pl, Vec3 p)
 
     sp.point = vec3_sub(p, vec3_scale(pl->normal, dist));
     sp.normal = pl->normal;
+    sp.shading = pl->normal;
     sp.error = vec3_scale(vec3_add(vec3_abs(sp.point), vec3_abs(pl->point)), g);
     return sp;
 }

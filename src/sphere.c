@@ -87,6 +87,7 @@ SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
     /* A hit at the centre (possible only when the radius is below the
      * resolution of the coordinates) has no direction: any unit one will do. */
     sp.normal = len > 0 ? vec3_scale(v, 1.0 / len) : vec3(0, 0, 1);
+    sp.shading = sp.normal;
     sp.point = vec3_add(s->centre, vec3_scale(sp.normal, s->radius));
     sp.error = vec3_scale(vec3_add(vec3_abs(s->centre), vec3(s->radius, s->radius, s->radius)), g);
     return sp;

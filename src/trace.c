@@ -245,12 +245,13 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
 }
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
- * shaded point sh, whose normal facing the viewer is n. */
+ * shaded point sh: ns is its shading normal and n its surface normal, both
+ * facing the viewer. */
 static inline Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n,
-                                  RayCounts *counts)
+                                  Vec3 ns, RayCounts *counts)
 {
     Vec3 to_light = vec3_sub(light->position, sh->sp.point);
-    double cos_a = vec3_dot(n, vec3_normalize(to_light));
+    double cos_a = vec3_dot(ns, vec3_normalize(to_light));
     Colour ci = sh->colour;
     Ray shadow;
 
@@ -273,13 +274,14 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
 }
 
 /* Returns the local term: the ambient light plus every light's direct
- * contribution, at sh with facing normal n. */
-static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, RayCounts *counts)
+ * contribution, at sh with facing normals n and ns (see trace_direct()). */
+static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, Vec3 ns,
+                                 RayCounts *counts)
 {
-    Colour c = trace_direct(scene, &scene->lights[0], sh, n, counts);
+    Colour c = trace_direct(scene, &scene->lights[0], sh, n, ns, counts);
 
     for (size_t i = 1; i < scene->light_count; i++)
-        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n, counts));
+        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n, ns, counts));
     if (scene->has_ambient)
         c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
                               scene->ambient.g * sh->colour.g / 255,
@@ -305,18 +307,22 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
 {
     Hit hit;
     Shade sh;
-    Vec3 n;
+    Vec3 n, ns;
     Colour c;
     double r, t, own;
 
     if (!trace_find(scene, ray, INFINITY, &hit))
         return scene->background;
     sh = trace_shade(scene, ray, &hit);
+    /* n, the surface's normal facing the ray, decides where secondary rays
+     * start; ns, the shading normal on n's side, how light and mirrors
+     * behave. They are the same but on smooth triangles. */
     n = ray_facing_normal(sh.sp.normal, ray->dir);
+    ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
     r = sh.material->reflection;
     t = sh.material->transparency;
     own = 1 - r - t;
-    c = colour_scale(trace_local(scene, &sh, n, counts), own > 0 ? own : 0);
+    c = colour_scale(trace_local(scene, &sh, n, ns, counts), own > 0 ? own : 0);
     if (depth + 1 > max_depth)
         return c;
     if (t > 0) {
@@ -325,7 +331,7 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
         double eta = entering ? 1 / sh.material->ior : sh.material->ior;
         Vec3 bent;
 
-        if (ray_refract(ray->dir, n, eta, &bent)) {
+        if (ray_refract(ray->dir, ns, eta, &bent)) {
             counts->refraction++;
             c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth,
                                               counts));
@@ -335,8 +341,8 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
     }
     if (r > 0) {
         counts->reflection++;
-        c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, n), r, depth + 1,
-                                          max_depth, counts));
+        c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, ns), r,
+                                          depth + 1, max_depth, counts));
     }
     return c;
 }

@@ -53,6 +53,8 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
     for (unsigned k = 0; k < 3; k++)
         if (triangle_vertex_before(tri->v[(k + 2) % 3], tri->v[(k + 1) % 3]))
             tri->swapped |= 1u << k;
+    tri->smooth = 0;
+    tri->vn[0] = tri->vn[1] = tri->vn[2] = tri->normal;
     tri->material = m;
     tri->order = 0;
     return 0;
@@ -120,6 +122,13 @@ SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[
     sp.point = vec3_add(vec3_add(vec3_scale(tri->v[0], b[0]), vec3_scale(tri->v[1], b[1])),
                         vec3_scale(tri->v[2], b[2]));
     sp.normal = tri->normal;
+    sp.shading = tri->normal;
+    if (tri->smooth) {
+        Vec3 ns = vec3_add(vec3_add(vec3_scale(tri->vn[0], b[0]), vec3_scale(tri->vn[1], b[1])),
+                           vec3_scale(tri->vn[2], b[2]));
+        if (vec3_length(ns) > 0)
+            sp.shading = vec3_normalize(ns);
+    }
     m = vec3_abs(tri->v[0]);
     for (int k = 1; k < 3; k++) {
         Vec3 a = vec3_abs(tri->v[k]);

@@ -1,4 +1,5 @@
 /* test_obj.c: Wavefront OBJ files: every face form, and every fault. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -135,6 +136,23 @@ static void mesh_record_adds_the_triangles(void)
         CHECK_NEAR(20, sc.triangles[0].material.colour.g, 0);
         CHECK_NEAR(1, sc.triangles[1].uv[1][0], 0); /* corner 3: vt 3 = (1, 1) */
         CHECK_NEAR(1, sc.triangles[1].uv[1][1], 0);
+    }
+    scene_free(&sc);
+    /* Vertex normals make a smooth triangle (normalised); a zero one, a flat one. */
+    f = fopen("build/t.obj", "wb");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\nvn 0 0 -2\nvn 1 0 -1\nvn 0 0 0\n"
+          "f 1//1 2//2 3//1\nf 1//1 2//3 3//1\n", f);
+    fclose(f);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), &sc, &err));
+    CHECK_INT(2, (long long)sc.triangle_count);
+    if (sc.triangle_count == 2) {
+        CHECK_INT(1, sc.triangles[0].smooth);
+        CHECK_NEAR(-1, sc.triangles[0].vn[0].z, 0);
+        CHECK_NEAR(sqrt(0.5), sc.triangles[0].vn[1].x, 1e-15);
+        CHECK_INT(0, sc.triangles[1].smooth);
     }
     scene_free(&sc);
     /* A fault in the OBJ file is reported at the path, quoting the file's

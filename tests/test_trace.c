@@ -358,6 +358,36 @@ static void trace_exact_tie_across_kinds_keeps_the_first_listed(void)
     scene_free(&sc);
 }
 
+static void trace_smooth_triangle_shades_with_its_vertex_normals(void)
+{
+    /* A triangle facing the eye, lit from behind the eye. Flat, cos = 1.
+     * With all vertex normals tilted 60 degrees, cos = 0.5; with the three
+     * normals differing, the centroid takes their normalised mean. */
+    Scene sc = scene_lit_from(vec3(0, 0, -1e6));
+    Triangle tri;
+    double s60 = sqrt(0.75), a = 0.3;
+    Vec3 tilt[3] = {{s60, 0, -0.5}, {0, s60, -0.5}, {-s60, 0, -0.5}}, mean;
+    Vec3 centroid = vec3(0, 1.0 / 3, 5);
+
+    CHECK_INT(0, triangle_make(&tri, vec3(-1, 0, 5), vec3(1, 0, 5), vec3(0, 1, 5),
+                               material_plain(colour(200, 100, 50), 0)));
+    CHECK_INT(0, scene_add_triangle(&sc, &tri));
+    CHECK_COLOUR(200, 100, 50, seen(&sc, vec3(0, 0, 0), centroid, 0), 1e-9);
+    sc.triangles[0].smooth = 1;
+    for (int k = 0; k < 3; k++)
+        sc.triangles[0].vn[k] = tilt[0];
+    CHECK_COLOUR(100, 50, 25, seen(&sc, vec3(0, 0, 0), vec3(0, a, 5), 0), 1e-9);
+    for (int k = 0; k < 3; k++)
+        sc.triangles[0].vn[k] = tilt[k];
+    mean = vec3_normalize(vec3_add(vec3_add(tilt[0], tilt[1]), tilt[2]));
+    {
+        Vec3 l = vec3_normalize(vec3_sub(vec3(0, 0, -1e6), centroid));
+        double c = vec3_dot(mean, l);
+        CHECK_COLOUR(200 * c, 100 * c, 50 * c, seen(&sc, vec3(0, 0, 0), centroid, 0), 1e-6);
+    }
+    scene_free(&sc);
+}
+
 const TestCase trace_tests[] = {
     {"trace_miss_sees_background", trace_miss_sees_background},
     {"trace_lit_head_on_and_at_60_degrees", trace_lit_head_on_and_at_60_degrees},
@@ -383,5 +413,7 @@ const TestCase trace_tests[] = {
     {"trace_ambient_and_lights_add_up", trace_ambient_and_lights_add_up},
     {"trace_exact_tie_across_kinds_keeps_the_first_listed",
      trace_exact_tie_across_kinds_keeps_the_first_listed},
+    {"trace_smooth_triangle_shades_with_its_vertex_normals",
+     trace_smooth_triangle_shades_with_its_vertex_normals},
     {NULL, NULL},
 };
