@@ -53,9 +53,14 @@ static double box_half_area(const Box *b)
 /* What the build needs of each primitive. */
 typedef struct {
     Box box;         /* padded bounds */
-    double c[3];     /* centroid of the box */
     uint32_t ref;    /* primitive reference */
 } BuildPrim;
+
+/* Returns coordinate axis of the centre of p's box, its centroid. */
+static double bvh_centroid(const BuildPrim *p, int axis)
+{
+    return 0.5 * p->box.lo[axis] + 0.5 * p->box.hi[axis];
+}
 
 /* The padding of every box: 2^-36 (1.5e-11) of the scene's largest
  * coordinate. The primitive tests round at about 1e-16 of the distances
@@ -102,8 +107,6 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim
             p->box.hi[a] = c[a] + r;
         }
     }
-    for (int a = 0; a < 3; a++)
-        p->c[a] = 0.5 * p->box.lo[a] + 0.5 * p->box.hi[a];
 }
 
 /* Orders prims[lo..hi) so that the k-th smallest centroid on axis is at k,
@@ -111,12 +114,12 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim
 static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
 {
     while (hi - lo > 1) {
-        double pivot = prims[lo + (hi - lo) / 2].c[axis];
+        double pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
         size_t i = lo, j = hi - 1;
         for (;;) {
-            while (prims[i].c[axis] < pivot)
+            while (bvh_centroid(&prims[i], axis) < pivot)
                 i++;
-            while (prims[j].c[axis] > pivot)
+            while (bvh_centroid(&prims[j], axis) > pivot)
                 j--;
             if (i >= j)
                 break;
@@ -153,8 +156,11 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     double extent[3];
 
     box_empty(&cb);
-    for (size_t i = start; i < end; i++)
-        box_grow_point(&cb, prims[i].c);
+    for (size_t i = start; i < end; i++) {
+        double c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+                       bvh_centroid(&prims[i], 2)};
+        box_grow_point(&cb, c);
+    }
     for (int a = 0; a < 3; a++)
         extent[a] = cb.hi[a] - cb.lo[a];
     *axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
@@ -178,7 +184,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         for (int b = 0; b < BVH_BINS; b++)
             box_empty(&bin[b]);
         for (size_t i = start; i < end; i++) {
-            int b = (int)((prims[i].c[*axis] - cb.lo[*axis]) * scale);
+            int b = (int)((bvh_centroid(&prims[i], *axis) - cb.lo[*axis]) * scale);
             b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
             count[b]++;
             box_grow(&bin[b], &prims[i].box);
@@ -211,7 +217,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         {
             size_t i = start, j = end;
             while (i < j) {
-                int b = (int)((prims[i].c[*axis] - cb.lo[*axis]) * scale);
+                int b = (int)((bvh_centroid(&prims[i], *axis) - cb.lo[*axis]) * scale);
                 b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
                 if (b < best_split) {
                     i++;
