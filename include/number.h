@@ -25,6 +25,10 @@ typedef enum {
     NUMBER_NO_MEMORY
 } NumberStatus;
 
+/* Says whether the len bytes at s spell word, a lower-case C string, in
+ * any case ("NaN" is "nan"). */
+int number_word_is(const char *s, size_t len, const char *word);
+
 /* Converts the len bytes at s to *out when they spell a number of the form
  * above whose value is finite, at most NUMBER_MAX_MAGNITUDE in magnitude,
  * and zero or a normal double; otherwise says what is wrong. */

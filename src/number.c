@@ -7,8 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Says whether the len bytes at s spell c (case-insensitively). */
-static int number_word_is(const char *s, size_t len, const char *c)
+int number_word_is(const char *s, size_t len, const char *c)
 {
     size_t n = strlen(c);
     if (len != n)

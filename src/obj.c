@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "file.h"
+#include "grow.h"
 #include "number.h"
 
 /* Where the reader is: the file and the line being read. */
@@ -31,26 +32,6 @@ static int obj_fail(ObjReader *r, size_t at, const char *fmt, ...)
     va_end(ap);
     error_set_at(r->err, r->name, r->lineno, (int)at + 1, r->line, r->len, "%s", msg);
     return -1;
-}
-
-/* Makes room for one more item of size bytes in *items (count used of
- * *cap); returns 0, or -1 when memory runs out. */
-static int obj_reserve(void **items, size_t *cap, size_t count, size_t size)
-{
-    size_t n;
-    void *grown;
-
-    if (count < *cap)
-        return 0;
-    n = *cap ? 2 * *cap : 64;
-    if (n > SIZE_MAX / size)
-        return -1;
-    grown = realloc(*items, n * size);
-    if (!grown)
-        return -1;
-    *items = grown;
-    *cap = n;
-    return 0;
 }
 
 void obj_free(ObjMesh *mesh)
@@ -192,7 +173,7 @@ static int obj_face(ObjReader *r, ObjMesh *m, size_t i, size_t *tri_cap)
         if (n == 0) {
             first = c;
         } else if (n >= 2) {
-            if (obj_reserve((void **)&m->tri, tri_cap, m->tri_count, sizeof *m->tri) != 0)
+            if (grow_reserve((void **)&m->tri, tri_cap, m->tri_count, sizeof *m->tri) != 0)
                 return obj_fail(r, i, "out of memory after %zu triangles", m->tri_count);
             m->tri[m->tri_count][0] = first;
             m->tri[m->tri_count][1] = prev;
@@ -222,14 +203,14 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
     if (n == 1 && word[0] == 'v') {
         if (obj_numbers(r, &i, "a vertex (x y z)", 3, 3, val) < 0)
             return -1;
-        if (obj_reserve((void **)&m->v, &caps[0], m->v_count, sizeof *m->v) != 0)
+        if (grow_reserve((void **)&m->v, &caps[0], m->v_count, sizeof *m->v) != 0)
             return obj_fail(r, kw, "out of memory after %zu vertices", m->v_count);
         m->v[m->v_count++] = vec3(val[0], val[1], val[2]);
     } else if (n == 2 && memcmp(word, "vt", 2) == 0) {
         int k = obj_numbers(r, &i, "a texture coordinate (u [v [w]])", 1, 3, val);
         if (k < 0)
             return -1;
-        if (obj_reserve((void **)&m->vt, &caps[1], m->vt_count, sizeof *m->vt) != 0)
+        if (grow_reserve((void **)&m->vt, &caps[1], m->vt_count, sizeof *m->vt) != 0)
             return obj_fail(r, kw, "out of memory");
         m->vt[m->vt_count][0] = val[0];
         m->vt[m->vt_count][1] = k > 1 ? val[1] : 0;
@@ -246,7 +227,7 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
             obj_token(r, &at);
             return obj_fail(r, at, "a normal has 3 numbers (x y z), found more");
         }
-        if (obj_reserve((void **)&m->vn, &caps[2], m->vn_count, sizeof *m->vn) != 0)
+        if (grow_reserve((void **)&m->vn, &caps[2], m->vn_count, sizeof *m->vn) != 0)
             return obj_fail(r, kw, "out of memory");
         m->vn[m->vn_count++] = vec3(val[0], val[1], val[2]);
     } else if (n == 1 && word[0] == 'f') {

@@ -293,17 +293,6 @@ static int parse_next_record(Parser *P, Record *rec)
     return rc;
 }
 
-/* Says whether the len bytes at s spell c (case-insensitively). */
-static int parse_word_is(const char *s, size_t len, const char *c)
-{
-    size_t n = strlen(c);
-    if (len != n)
-        return 0;
-    for (size_t i = 0; i < n; i++)
-        if (tolower((unsigned char)s[i]) != c[i])
-            return 0;
-    return 1;
-}
 
 /* Reads token k of rec, the number `index` of spec, into *out, checking the
  * range its kind allows; returns 0, or -1 with the fault recorded. */
@@ -1087,12 +1076,12 @@ static void parse_fail_keyword(Parser *P, const Record *rec)
 
         memcpy(bare, kw, n - 1);
         bare[n - 1] = '\0';
-        if (parse_word_is(t->text, t->len, kw)) {
+        if (number_word_is(t->text, t->len, kw)) {
             parse_fail(P, &rec->line, t->column,
                        "unknown record %s: keywords are lower case ('%s')", q, kw);
             return;
         }
-        if (t->len == n - 1 && parse_word_is(t->text, t->len, bare)) {
+        if (t->len == n - 1 && number_word_is(t->text, t->len, bare)) {
             parse_fail(P, &rec->line, t->column,
                        "expected '%s' with its colon attached, found %s", kw, q);
             return;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "bvh.h"
+#include "grow.h"
 
 void scene_init(Scene *scene)
 {
@@ -35,26 +36,6 @@ void scene_free(Scene *scene)
     scene_init(scene);
 }
 
-/* Makes room for one more item of size bytes in the array *items holding
- * count of *capacity; returns 0, or -1 leaving the array as it was. */
-static int scene_reserve(void **items, size_t *capacity, size_t count, size_t size)
-{
-    size_t cap;
-    void *grown;
-
-    if (count < *capacity)
-        return 0;
-    cap = *capacity ? 2 * *capacity : 16;
-    if (cap > SIZE_MAX / size)
-        return -1;
-    grown = realloc(*items, cap * size);
-    if (!grown)
-        return -1;
-    *items = grown;
-    *capacity = cap;
-    return 0;
-}
-
 int scene_build_accel(Scene *scene)
 {
     Bvh *bvh;
@@ -77,7 +58,7 @@ size_t scene_object_count(const Scene *scene)
 
 int scene_add_light(Scene *scene, const Light *light)
 {
-    if (scene_reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count,
+    if (grow_reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count,
                       sizeof *light) != 0)
         return -1;
     scene->lights[scene->light_count++] = *light;
@@ -86,7 +67,7 @@ int scene_add_light(Scene *scene, const Light *light)
 
 int scene_add_sphere(Scene *scene, const Sphere *s)
 {
-    if (scene_reserve((void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
+    if (grow_reserve((void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
                       sizeof *s) != 0)
         return -1;
     scene->spheres[scene->sphere_count] = *s;
@@ -98,7 +79,7 @@ int scene_add_sphere(Scene *scene, const Sphere *s)
 
 int scene_add_plane(Scene *scene, const Plane *p)
 {
-    if (scene_reserve((void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
+    if (grow_reserve((void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
                       sizeof *p) != 0)
         return -1;
     scene->planes[scene->plane_count] = *p;
@@ -110,7 +91,7 @@ int scene_add_plane(Scene *scene, const Plane *p)
 
 int scene_add_triangle(Scene *scene, const Triangle *t)
 {
-    if (scene_reserve((void **)&scene->triangles, &scene->triangle_capacity,
+    if (grow_reserve((void **)&scene->triangles, &scene->triangle_capacity,
                       scene->triangle_count, sizeof *t) != 0)
         return -1;
     scene->triangles[scene->triangle_count] = *t;
@@ -122,7 +103,7 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
 
 int scene_add_texture(Scene *scene, Texture *tex)
 {
-    if (scene_reserve((void **)&scene->textures, &scene->texture_capacity,
+    if (grow_reserve((void **)&scene->textures, &scene->texture_capacity,
                       scene->texture_count, sizeof *tex) != 0) {
         texture_free(tex);
         return -1;
