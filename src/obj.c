@@ -195,7 +195,7 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
     static const char *const ignored[] = {"o", "g", "s", "usemtl", "mtllib", "l", "p"};
     size_t i = 0, e = obj_token(r, &i), kw = i, n = e - i;
     const char *word = r->line + i;
-    double val[3];
+    double val[4];
 
     if (n == 0)
         return 0;
