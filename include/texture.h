@@ -20,9 +20,9 @@ typedef struct {
     char *path;     /* the file it was read from, as the scene names it */
 } Texture;
 
-/* Reads the PPM file at path (opened as given) into *tex, recording name as
- * its path; returns 0, or -1 with *err describing the fault in the file. */
-int texture_load(Texture *tex, const char *path, const char *name, Error *err);
+/* Reads the PPM file at path into *tex, keeping a copy of path; returns 0,
+ * or -1 with *err describing the fault in the file. */
+int texture_load(Texture *tex, const char *path, Error *err);
 
 /* Releases what *tex owns. */
 void texture_free(Texture *tex);

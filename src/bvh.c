@@ -136,13 +136,13 @@ static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axi
     }
 }
 
-/* A piece of work: build the subtree of prims[start..end) at depth, and
- * write its root's index into *slot (when slot is not NULL). */
+/* A piece of work: build the subtree of prims[start..end) at depth; a
+ * right subtree writes its root's index into its parent's node. */
 typedef struct {
     size_t start, end;
     int depth;
-    uint32_t *slot;
-    size_t slot_node; /* the node whose index field slot is */
+    int is_right;     /* 1: a right child, whose parent waits for its index */
+    size_t parent;    /* that parent */
 } BuildTask;
 
 /* Chooses how to split prims[start..end) (count > BVH_LEAF_MAX or SAH says
@@ -262,7 +262,7 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
     for (size_t i = 0; i < scene->triangle_count; i++)
         bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
-    stack[top++] = (BuildTask){0, n, 0, NULL, 0};
+    stack[top++] = (BuildTask){0, n, 0, 0, 0};
     while (top > 0) {
         BuildTask task = stack[--top];
         size_t id = bvh->node_count++, split;
@@ -270,8 +270,8 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         Box bounds;
         int axis = 0;
 
-        if (task.slot)
-            bvh->nodes[task.slot_node].index = (uint32_t)id;
+        if (task.is_right)
+            bvh->nodes[task.parent].index = (uint32_t)id;
         box_empty(&bounds);
         for (size_t i = task.start; i < task.end; i++)
             box_grow(&bounds, &prims[i].box);
@@ -291,8 +291,8 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         node->count = 0;
         node->axis = (uint16_t)axis;
         /* The left subtree comes next; the right one patches our index. */
-        stack[top++] = (BuildTask){split, task.end, task.depth + 1, &node->index, id};
-        stack[top++] = (BuildTask){task.start, split, task.depth + 1, NULL, 0};
+        stack[top++] = (BuildTask){split, task.end, task.depth + 1, 1, id};
+        stack[top++] = (BuildTask){task.start, split, task.depth + 1, 0, 0};
     }
     for (size_t i = 0; i < n; i++)
         bvh->prims[i] = prims[i].ref;
@@ -332,8 +332,8 @@ static BvhRay bvh_ray(const Ray *r)
 
 /* Says whether the ray meets node's box at some t in [0, tmax] (the
  * interval widened by a few ulps, as pbrt does, so that rounding in the
- * slabs never loses a crossing); stores the entry t in *tnear. */
-static int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax, double *tnear)
+ * slabs never loses a crossing). */
+static int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax)
 {
     const double widen = 1 + 4 * DBL_EPSILON;
     double t0 = 0, t1 = tmax;
@@ -361,7 +361,6 @@ static int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax, double
         if (!(t0 <= t1))
             return 0;
     }
-    *tnear = t0;
     return 1;
 }
 
@@ -389,12 +388,11 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
 
     for (;;) {
         const BvhNode *node = &bvh->nodes[id];
-        double tnear;
         /* A box entered exactly at the best t may still hold an
          * earlier-listed object at that t: keep it. */
         double limit = found ? hit->t : tmax;
 
-        if (bvh_box_hit(node, &r, limit, &tnear)) {
+        if (bvh_box_hit(node, &r, limit)) {
             if (node->count > 0) {
                 for (uint32_t k = node->index; k < node->index + node->count; k++) {
                     uint32_t ref = bvh->prims[k];
@@ -442,9 +440,8 @@ static const BvhNode *bvh_next_leaf(const Bvh *bvh, const BvhRay *r, double tmax
     while (w->top > 0) {
         uint32_t id = w->stack[--w->top];
         const BvhNode *node = &bvh->nodes[id];
-        double tnear;
 
-        if (!bvh_box_hit(node, r, tmax, &tnear))
+        if (!bvh_box_hit(node, r, tmax))
             continue;
         if (node->count > 0)
             return node;

@@ -234,12 +234,11 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     }
     opts->scene_path = positional[0];
     opts->output_path = npos > 1 ? positional[1] : NULL;
-    if (opts->ascii && opts->output_path && opts->format != 0 &&
-        (opts->format > 0 || writer_format_for(opts->output_path) != FORMAT_PPM)) {
+    if (opts->format < 0 && opts->output_path)
+        opts->format = (int)writer_format_for(opts->output_path);
+    if (opts->ascii && opts->output_path && opts->format != FORMAT_PPM) {
         snprintf(msg, msg_size, "--ascii applies to PPM output only");
         return OPTIONS_USAGE;
     }
-    if (opts->format < 0 && opts->output_path)
-        opts->format = (int)writer_format_for(opts->output_path);
     return opts->check ? OPTIONS_CHECK : OPTIONS_RENDER;
 }

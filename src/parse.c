@@ -871,7 +871,7 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
             return (int)i;
         }
     }
-    if (texture_load(&tex, path, path, &inner) != 0) {
+    if (texture_load(&tex, path, &inner) != 0) {
         parse_fail_file(P, rec, t, "texture", &inner);
         free(path);
         return -1;

@@ -5,16 +5,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-int texture_load(Texture *tex, const char *path, const char *name, Error *err)
+int texture_load(Texture *tex, const char *path, Error *err)
 {
-    size_t n = strlen(name);
+    size_t n = strlen(path);
 
     tex->path = malloc(n + 1);
     if (!tex->path) {
-        error_set(err, name, "out of memory");
+        error_set(err, path, "out of memory");
         return -1;
     }
-    memcpy(tex->path, name, n + 1);
+    memcpy(tex->path, path, n + 1);
     if (ppm_read(path, &tex->image, err) != 0) {
         free(tex->path);
         tex->path = NULL;

@@ -19,10 +19,17 @@ static Scene scene_lit_from(Vec3 light)
     return sc;
 }
 
+/* Adds a sphere of material m. */
+static void add_sphere_of(Scene *sc, Vec3 c, double r, Material m)
+{
+    Sphere s = {c, r, m, 0};
+    CHECK_INT(0, scene_add_sphere(sc, &s));
+}
+
+/* Adds an opaque sphere of colour col and mirror weight refl. */
 static void add_sphere(Scene *sc, Vec3 c, double r, Colour col, double refl)
 {
-    Sphere s = {c, r, material_plain(col, refl), 0};
-    CHECK_INT(0, scene_add_sphere(sc, &s));
+    add_sphere_of(sc, c, r, material_plain(col, refl));
 }
 
 /* The colour seen along the ray from o in direction d. */
@@ -169,13 +176,6 @@ static void trace_nearest_and_occluded(void)
     seg.dir.z = 4.5;
     CHECK(trace_occluded(&sc, &seg));
     scene_free(&sc);
-}
-
-/* Adds a sphere of material m. */
-static void add_sphere_of(Scene *sc, Vec3 c, double r, Material m)
-{
-    Sphere s = {c, r, m, 0};
-    CHECK_INT(0, scene_add_sphere(sc, &s));
 }
 
 /* Returns the material of colour col with weights R and T and index n. */
