@@ -25,7 +25,7 @@ typedef struct {
     long v, vt, vn;
 } ObjCorner;
 
-typedef struct {
+typedef struct ObjMesh {
     Vec3 *v;          /* positions */
     size_t v_count;
     double (*vt)[2];  /* texture coordinates */

@@ -26,6 +26,7 @@ typedef struct {
 } Light;
 
 struct Bvh;
+struct ObjMesh;
 
 typedef struct Scene {
     Camera camera;          /* eye, screen, image size and lens */
@@ -70,6 +71,13 @@ int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t);
+
+/* Appends the triangles of OBJ mesh m with material mat, smooth where all
+ * three corners have a non-zero normal, with the texture coordinates of
+ * their corners when all three have some; triangles without area are left
+ * out. Returns how many it added, or -1 when memory runs out (those added
+ * stay). */
+long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
 
 /* Takes ownership of *tex as the scene's next texture; returns its index, or
  * -1 (tex released) when memory runs out. */

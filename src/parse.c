@@ -35,43 +35,14 @@
 #include <string.h>
 
 #include "file.h"
+#include "lex.h"
 #include "number.h"
 #include "obj.h"
 #include "sampler.h"
 
-enum { PARSE_MAX_TOKENS = 18 }; /* tokens kept per line: a keyword, 15 numbers
-                                   (a transparent triangle), 2 extra */
-
-/* A field of a line: where it starts and how long it is. */
-typedef struct {
-    const char *text; /* first byte, inside the input */
-    size_t len;       /* bytes */
-    int column;       /* 1-based column of text */
-} Token;
-
-/* Where a line is, so that an error can point into it later. */
-typedef struct {
-    const char *text; /* first byte of the line */
-    size_t len;       /* bytes, without the line ending */
-    int number;       /* 1-based line number */
-} Line;
-
-/* A record line split into tokens. */
-typedef struct {
-    Line line;                     /* the line the record is on */
-    Token tok[PARSE_MAX_TOKENS];   /* the first tokens */
-    int count;                     /* all tokens on the line, kept or not */
-    int end_column;                /* column just past the last token */
-} Record;
-
 /* The parser's state: a cursor over the input. */
 typedef struct {
-    const char *name;  /* input name for messages */
-    const char *start; /* first input byte */
-    const char *next;  /* first byte of the next line */
-    const char *end;   /* one past the last input byte */
-    int lineno;        /* number of the last line read, 0 before the first */
-    Error *err;        /* where faults are described */
+    Lexer lex;         /* the cursor over the input */
     int ambient_line;  /* line of the ambient: record, 0 before it */
     int samples_line;  /* line of the samples: record, 0 before it */
     int lens_line;     /* line of the lens: record, 0 before it */
@@ -82,28 +53,11 @@ typedef struct {
     size_t last_count; /* a mesh: how many triangles it added */
 } Parser;
 
+/* Records a fault at column of line. */
+#define parse_fail(P, line, column, ...) lex_fail(&(P)->lex, line, column, __VA_ARGS__)
+
 /* The shapes a texture: record may follow. */
 enum { PARSE_SHAPE_SPHERE, PARSE_SHAPE_PLANE, PARSE_SHAPE_TRIANGLE, PARSE_SHAPE_MESH };
-
-/* What a number stands for, and so which values it may take. */
-typedef enum {
-    FIELD_COORD,       /* any finite value */
-    FIELD_COLOUR,      /* 0..255 */
-    FIELD_POSITIVE,    /* > 0: radius, focal distance, tile size */
-    FIELD_NONNEGATIVE, /* >= 0: aperture */
-    FIELD_FRACTION,    /* 0..1: reflection, transparency */
-    FIELD_INDEX        /* > 0: refractive index */
-} FieldKind;
-
-/* The numbers of one record kind. */
-typedef struct {
-    const char *what;          /* "the camera position" */
-    const char *syntax;        /* "x y z r g b" for messages, or NULL */
-    int count;                 /* numbers the record always has */
-    int optional;              /* numbers that may follow them, all or none */
-    const char *const *names;  /* the numbers' names */
-    const FieldKind *kinds;    /* the numbers' kinds */
-} RecordSpec;
 
 static const char *const parse_xyz_names[] = {"x", "y", "z"};
 static const FieldKind parse_xyz_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD};
@@ -117,13 +71,13 @@ static const char *const parse_sphere_names[] = {
     "green",    "blue",     "reflection", "transparency", "refractive index"};
 static const FieldKind parse_sphere_kinds[] = {
     FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 static const char *const parse_plane_names[] = {
     "point x", "point y", "point z", "normal x",   "normal y",     "normal z",
     "red",     "green",   "blue",    "reflection", "transparency", "refractive index"};
 static const FieldKind parse_plane_kinds[] = {
     FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 static const char *const parse_triangle_names[] = {
     "x0",  "y0",    "z0",   "x1",         "y1",           "z1",
     "x2",  "y2",    "z2",   "red",        "green",        "blue",
@@ -131,7 +85,7 @@ static const char *const parse_triangle_names[] = {
 static const FieldKind parse_triangle_kinds[] = {
     FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
     FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_INDEX};
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 static const char *const parse_lens_names[] = {"aperture", "focal distance"};
 static const FieldKind parse_lens_kinds[] = {FIELD_NONNEGATIVE, FIELD_POSITIVE};
 static const char *const parse_tile_names[] = {"tile size"};
@@ -140,333 +94,66 @@ static const char *const parse_uv_names[] = {"u0", "v0", "u1", "v1", "u2", "v2"}
 static const FieldKind parse_uv_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                            FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
-static const RecordSpec parse_camera = {"the camera position", NULL, 3, 0, parse_xyz_names,
+static const RecordSpec parse_camera = {"the camera position", NULL, 3, 0, 0, parse_xyz_names,
                                         parse_xyz_kinds};
-static const RecordSpec parse_top_left = {"the screen's top-left corner", NULL, 3, 0,
+static const RecordSpec parse_top_left = {"the screen's top-left corner", NULL, 3, 0, 0,
                                           parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_top_right = {"the screen's top-right corner", NULL, 3, 0,
+static const RecordSpec parse_top_right = {"the screen's top-right corner", NULL, 3, 0, 0,
                                            parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_bottom_left = {"the screen's bottom-left corner", NULL, 3, 0,
+static const RecordSpec parse_bottom_left = {"the screen's bottom-left corner", NULL, 3, 0, 0,
                                              parse_xyz_names, parse_xyz_kinds};
-static const RecordSpec parse_background = {"the background colour", NULL, 3, 0,
+static const RecordSpec parse_background = {"the background colour", NULL, 3, 0, 0,
                                             parse_rgb_names, parse_rgb_kinds};
-static const RecordSpec parse_light = {"the light", "x y z r g b", 6, 0, parse_light_names,
+static const RecordSpec parse_light = {"the light", "x y z r g b", 6, 0, 0, parse_light_names,
                                        parse_light_kinds};
 static const RecordSpec parse_sphere = {"the sphere",
                                         "cx cy cz radius r g b reflection"
                                         " [transparency index]",
-                                        8, 2, parse_sphere_names, parse_sphere_kinds};
+                                        8, 2, 0, parse_sphere_names, parse_sphere_kinds};
 static const RecordSpec parse_plane = {"the plane",
                                        "px py pz nx ny nz r g b reflection"
                                        " [transparency index]",
-                                       10, 2, parse_plane_names, parse_plane_kinds};
+                                       10, 2, 0, parse_plane_names, parse_plane_kinds};
 static const RecordSpec parse_triangle = {"the triangle",
                                           "x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection"
                                           " [transparency index]",
-                                          13, 2, parse_triangle_names, parse_triangle_kinds};
-static const RecordSpec parse_ambient = {"the ambient light", "r g b", 3, 0, parse_rgb_names,
+                                          13, 2, 0, parse_triangle_names, parse_triangle_kinds};
+static const RecordSpec parse_ambient = {"the ambient light", "r g b", 3, 0, 0, parse_rgb_names,
                                          parse_rgb_kinds};
-static const RecordSpec parse_lens = {"the lens", "aperture focal_distance", 2, 0,
+static const RecordSpec parse_lens = {"the lens", "aperture focal_distance", 2, 0, 0,
                                       parse_lens_names, parse_lens_kinds};
-static const RecordSpec parse_sphere_texture = {"the sphere's texture", "path [filter]", 0, 0,
+static const RecordSpec parse_sphere_texture = {"the sphere's texture", "path [filter]", 0, 0, 0,
                                                 NULL, NULL};
 static const RecordSpec parse_plane_texture = {"the plane's texture", "path [filter] [tile_size]",
-                                               0, 1, parse_tile_names, parse_tile_kinds};
+                                               0, 1, 0, parse_tile_names, parse_tile_kinds};
 static const RecordSpec parse_mesh = {"the mesh", "path r g b reflection [transparency index]",
-                                      4, 2, parse_sphere_names + 4, parse_sphere_kinds + 4};
-static const RecordSpec parse_mesh_texture = {"the mesh's texture", "path [filter]", 0, 0, NULL,
+                                      4, 2, 0, parse_sphere_names + 4, parse_sphere_kinds + 4};
+static const RecordSpec parse_mesh_texture = {"the mesh's texture", "path [filter]", 0, 0, 0, NULL,
                                               NULL};
 static const RecordSpec parse_triangle_texture = {"the triangle's texture",
-                                                  "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6,
+                                                  "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6, 0,
                                                   parse_uv_names, parse_uv_kinds};
-
-/* Writes tok into buf as 'tok' for a message: at most 40 bytes of it, with
- * control bytes shown as '?' and "..." where cut. */
-static const char *parse_quote(char *buf, size_t size, const char *tok, size_t len)
-{
-    size_t n = 0, shown = len > 40 ? 40 : len;
-
-    buf[n++] = '\'';
-    for (size_t i = 0; i < shown && n + 5 < size; i++) {
-        unsigned char ch = (unsigned char)tok[i];
-        buf[n++] = ch < 0x20 || ch == 0x7f ? '?' : (char)ch;
-    }
-    if (shown < len && n + 5 < size) {
-        memcpy(buf + n, "...", 3);
-        n += 3;
-    }
-    buf[n++] = '\'';
-    buf[n] = '\0';
-    return buf;
-}
-
-/* Records a fault at column of line. */
-#define parse_fail(P, line, column, ...)                                                      \
-    error_set_at((P)->err, (P)->name, (line)->number, (column), (line)->text, (line)->len,    \
-                 __VA_ARGS__)
-
-/* line -> bytes up to '\n'; a final '\r' before it is dropped. Returns 1 with
- * *line set, 0 at the end of the input, -1 on a NUL byte or a carriage
- * return that does not end the line. */
-static int parse_next_line(Parser *P, Line *line)
-{
-    const char *eol;
-
-    if (P->next >= P->end)
-        return 0;
-    eol = memchr(P->next, '\n', (size_t)(P->end - P->next));
-    if (!eol)
-        eol = P->end;
-    line->text = P->next;
-    line->len = (size_t)(eol - P->next);
-    line->number = ++P->lineno;
-    P->next = eol < P->end ? eol + 1 : eol;
-    if (line->len > 0 && line->text[line->len - 1] == '\r')
-        line->len--;
-    for (size_t i = 0; i < line->len; i++) {
-        if (line->text[i] == '\0') {
-            parse_fail(P, line, (int)i + 1,
-                       "NUL byte in the scene file: a scene is a text file");
-            return -1;
-        }
-        if (line->text[i] == '\r') {
-            parse_fail(P, line, (int)i + 1,
-                       "carriage return inside a line: lines must end with LF or CRLF");
-            return -1;
-        }
-    }
-    return 1;
-}
-
-static int parse_is_blank(char ch)
-{
-    return ch == ' ' || ch == '\t';
-}
-
-/* Splits line into tokens up to its comment into *rec. The first token ends
- * after its first ':' if it has one, so that "sphere:1" is "sphere:" "1". */
-static void parse_tokens(const Line *line, Record *rec)
-{
-    size_t i = 0, len = line->len;
-    const char *comment = memchr(line->text, '#', len);
-
-    if (comment)
-        len = (size_t)(comment - line->text);
-    rec->line = *line;
-    rec->count = 0;
-    rec->end_column = 1;
-    for (;;) {
-        size_t start;
-        while (i < len && parse_is_blank(line->text[i]))
-            i++;
-        if (i == len)
-            break;
-        start = i;
-        while (i < len && !parse_is_blank(line->text[i])) {
-            i++;
-            if (rec->count == 0 && line->text[i - 1] == ':')
-                break;
-        }
-        if (rec->count < PARSE_MAX_TOKENS) {
-            Token *t = &rec->tok[rec->count];
-            t->text = line->text + start;
-            t->len = i - start;
-            t->column = (int)start + 1;
-        }
-        rec->count++;
-        rec->end_column = (int)i + 1;
-    }
-}
-
-/* Reads lines up to the next one with a record; returns 1 with *rec set, 0 at
- * the end of the input, -1 on an error. */
-static int parse_next_record(Parser *P, Record *rec)
-{
-    Line line;
-    int rc;
-
-    while ((rc = parse_next_line(P, &line)) == 1) {
-        parse_tokens(&line, rec);
-        if (rec->count > 0)
-            return 1;
-    }
-    return rc;
-}
-
-
-/* Reads token k of rec, the number `index` of spec, into *out, checking the
- * range its kind allows; returns 0, or -1 with the fault recorded. */
-static int parse_expect_number(Parser *P, const Record *rec, int k, const RecordSpec *spec,
-                               int index, double *out)
-{
-    const Token *t = &rec->tok[k];
-    const char *what = spec->what, *name = spec->names[index];
-    char q[64];
-    double v = 0;
-
-    parse_quote(q, sizeof q, t->text, t->len);
-    switch (number_parse(t->text, t->len, &v)) {
-    case NUMBER_OK:
-        break;
-    case NUMBER_SYNTAX:
-        parse_fail(P, &rec->line, t->column, "expected a number for %s's %s, found %s", what,
-                   name, q);
-        return -1;
-    case NUMBER_NONFINITE:
-        parse_fail(P, &rec->line, t->column, "%s's %s must be a finite number, found %s", what,
-                   name, q);
-        return -1;
-    case NUMBER_HEX:
-        parse_fail(P, &rec->line, t->column,
-                   "%s's %s must be a decimal number, found %s (hexadecimal is not accepted)",
-                   what, name, q);
-        return -1;
-    case NUMBER_TOO_LARGE:
-        parse_fail(P, &rec->line, t->column,
-                   "%s's %s is out of range: %s exceeds 1e15 in magnitude", what, name, q);
-        return -1;
-    case NUMBER_UNDERFLOW:
-        parse_fail(P, &rec->line, t->column,
-                   "%s's %s is out of range: %s is too small for a double (write 0 for zero)",
-                   what, name, q);
-        return -1;
-    case NUMBER_NO_MEMORY:
-        error_set(P->err, P->name, "out of memory");
-        return -1;
-    }
-    switch (spec->kinds[index]) {
-    case FIELD_COORD:
-        break;
-    case FIELD_COLOUR:
-        if (!(v >= 0 && v <= 255)) {
-            parse_fail(P, &rec->line, t->column, "%s's %s must be in [0, 255], found %s", what,
-                       name, q);
-            return -1;
-        }
-        break;
-    case FIELD_POSITIVE:
-    case FIELD_INDEX:
-        if (!(v > 0)) {
-            parse_fail(P, &rec->line, t->column, "%s's %s must be greater than 0, found %s",
-                       what, name, q);
-            return -1;
-        }
-        break;
-    case FIELD_NONNEGATIVE:
-        if (!(v >= 0)) {
-            parse_fail(P, &rec->line, t->column, "%s's %s must be at least 0, found %s", what,
-                       name, q);
-            return -1;
-        }
-        break;
-    case FIELD_FRACTION:
-        if (!(v >= 0 && v <= 1)) {
-            parse_fail(P, &rec->line, t->column, "%s's %s must be in [0, 1], found %s", what,
-                       name, q);
-            return -1;
-        }
-        break;
-    }
-    *out = v;
-    return 0;
-}
-
-/* Records "expected N numbers for WHAT, found M" at column ("N or N+K" when
- * spec has optional numbers). */
-static void parse_fail_count(Parser *P, const Record *rec, int column, const RecordSpec *spec,
-                             int found)
-{
-    char expected[32];
-
-    if (spec->optional)
-        snprintf(expected, sizeof expected, "%d or %d", spec->count,
-                 spec->count + spec->optional);
-    else
-        snprintf(expected, sizeof expected, "%d", spec->count);
-    parse_fail(P, &rec->line, column, "expected %s number%s for %s%s%s%s, found %d", expected,
-               spec->count + spec->optional == 1 ? "" : "s", spec->what,
-               spec->syntax ? " (" : "", spec->syntax ? spec->syntax : "",
-               spec->syntax ? ")" : "", found);
-}
-
-/* Reads the numbers of spec from rec's tokens, starting at token `first`,
- * into values; returns how many it read (count, or count + optional), or -1
- * with the fault recorded. */
-static int parse_expect_numbers(Parser *P, const Record *rec, int first, const RecordSpec *spec,
-                                double *values)
-{
-    int found = rec->count - first, most = spec->count + spec->optional;
-    /* The optional numbers are read only when all of them are there. */
-    int present = found >= most ? most : found < spec->count ? found : spec->count;
-
-    for (int i = 0; i < present; i++)
-        if (parse_expect_number(P, rec, first + i, spec, i, &values[i]) != 0)
-            return -1;
-    if (found < spec->count) {
-        parse_fail_count(P, rec, rec->end_column, spec, found);
-        return -1;
-    }
-    if (found > spec->count && found < most) {
-        parse_fail_count(P, rec, rec->tok[first + spec->count].column, spec, found);
-        return -1;
-    }
-    if (found > most) {
-        const Token *extra = &rec->tok[first + most];
-        double ignored;
-        char q[64];
-
-        if (number_parse(extra->text, extra->len, &ignored) == NUMBER_SYNTAX) {
-            parse_fail(P, &rec->line, extra->column,
-                       "expected the end of the line after %s, found %s", spec->what,
-                       parse_quote(q, sizeof q, extra->text, extra->len));
-            return -1;
-        }
-        parse_fail_count(P, rec, extra->column, spec, found);
-        return -1;
-    }
-    return found;
-}
-
-/* Records that the input ends where the record `what` was expected: the
- * position is just past the last byte, on a line of its own after a final
- * newline. */
-static void parse_fail_eof(Parser *P, const char *what, const char *syntax)
-{
-    Line line;
-
-    line.text = P->end;
-    line.len = 0;
-    line.number = P->lineno + 1;
-    if (P->end > P->start && P->end[-1] != '\n') {
-        while (line.text > P->start && line.text[-1] != '\n')
-            line.text--;
-        line.len = (size_t)(P->end - line.text);
-        line.number = P->lineno;
-    }
-    parse_fail(P, &line, (int)line.len + 1, "expected %s%s%s%s, found the end of the file", what,
-               syntax ? " (" : "", syntax ? syntax : "", syntax ? ")" : "");
-}
 
 /* Reads the next record, which must be the header record spec, in which a
  * keyword is out of place; returns 0, or -1 with the fault recorded. */
 static int parse_header_record(Parser *P, const RecordSpec *spec, const char *syntax,
                                Record *rec)
 {
-    int rc = parse_next_record(P, rec);
+    int rc = lex_next_record(&P->lex, rec);
     const Token *t = &rec->tok[0];
     char q[64];
 
     if (rc < 0)
         return -1;
     if (rc == 0) {
-        parse_fail_eof(P, spec->what, syntax);
+        lex_fail_eof(&P->lex, spec->what, syntax);
         return -1;
     }
     if (t->len > 0 && t->text[t->len - 1] == ':') {
         parse_fail(P, &rec->line, t->column,
                    "expected %s, found the record %s: the 7 header records (camera, three "
                    "screen corners, resolution, background, light) come first",
-                   spec->what, parse_quote(q, sizeof q, t->text, t->len));
+                   spec->what, lex_quote(q, sizeof q, t));
         return -1;
     }
     return 0;
@@ -479,7 +166,7 @@ static int parse_header_numbers(Parser *P, const RecordSpec *spec, Record *rec, 
 
     if (parse_header_record(P, spec, syntax, rec) != 0)
         return -1;
-    return parse_expect_numbers(P, rec, 0, spec, values) < 0 ? -1 : 0;
+    return lex_numbers(&P->lex, rec, 0, spec, values) < 0 ? -1 : 0;
 }
 
 /* point -> x y z */
@@ -493,38 +180,10 @@ static int parse_point(Parser *P, const RecordSpec *spec, Record *rec, Vec3 *out
     return 0;
 }
 
-/* whole -> digits, 1..max: token k of rec, which is what, counted in unit. */
-static int parse_whole_number(Parser *P, const Record *rec, int k, const char *what,
-                              const char *unit, long max, int *out)
-{
-    const Token *t = &rec->tok[k];
-    long v = 0;
-    char q[64];
-
-    parse_quote(q, sizeof q, t->text, t->len);
-    for (size_t i = 0; i < t->len; i++) {
-        if (!isdigit((unsigned char)t->text[i])) {
-            parse_fail(P, &rec->line, t->column,
-                       "expected %s as a whole number of %s (decimal digits only), found %s",
-                       what, unit, q);
-            return -1;
-        }
-        if (v <= max)
-            v = v * 10 + (t->text[i] - '0');
-    }
-    if (v < 1 || v > max) {
-        parse_fail(P, &rec->line, t->column, "%s must be between 1 and %ld %s, found %s", what,
-                   max, unit, q);
-        return -1;
-    }
-    *out = (int)v;
-    return 0;
-}
-
 /* resolution -> digits, 1..CAMERA_MAX_SIZE */
 static int parse_resolution(Parser *P, Record *rec, int *width)
 {
-    static const RecordSpec spec = {"the horizontal resolution", NULL, 1, 0, NULL, NULL};
+    static const RecordSpec spec = {"the horizontal resolution", NULL, 1, 0, 0, NULL, NULL};
 
     if (parse_header_record(P, &spec, "a whole number of pixels", rec) != 0)
         return -1;
@@ -533,7 +192,7 @@ static int parse_resolution(Parser *P, Record *rec, int *width)
                    "expected 1 number for the horizontal resolution, found %d", rec->count);
         return -1;
     }
-    return parse_whole_number(P, rec, 0, "the horizontal resolution", "pixels",
+    return lex_whole_number(&P->lex, rec, 0, "the horizontal resolution", "pixels",
                               CAMERA_MAX_SIZE, width);
 }
 
@@ -556,7 +215,7 @@ static int parse_add_light(Parser *P, const double *v, Scene *scene)
     light.position = vec3(v[0], v[1], v[2]);
     light.colour = colour(v[3], v[4], v[5]);
     if (scene_add_light(scene, &light) != 0) {
-        error_set(P->err, P->name, "out of memory after %zu lights", scene->light_count);
+        error_set(P->lex.err, P->lex.name, "out of memory after %zu lights", scene->light_count);
         return -1;
     }
     return 0;
@@ -679,7 +338,7 @@ static Material *parse_last_material(Parser *P, Scene *scene)
 /* Records that the scene ran out of memory after count objects. */
 static int parse_fail_memory(Parser *P, const Scene *scene)
 {
-    error_set(P->err, P->name, "out of memory after %zu objects", scene_object_count(scene));
+    error_set(P->lex.err, P->lex.name, "out of memory after %zu objects", scene_object_count(scene));
     return -1;
 }
 
@@ -687,7 +346,7 @@ static int parse_fail_memory(Parser *P, const Scene *scene)
 static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[10];
-    int n = parse_expect_numbers(P, rec, 1, &parse_sphere, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_sphere, v);
     Sphere s;
 
     if (n < 0 || parse_material(P, rec, &parse_sphere, 1, 4, v, n, &s.material) != 0)
@@ -704,7 +363,7 @@ static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
 static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[12];
-    int n = parse_expect_numbers(P, rec, 1, &parse_plane, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_plane, v);
     Material m;
     Plane pl;
 
@@ -727,7 +386,7 @@ static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
 static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[15];
-    int n = parse_expect_numbers(P, rec, 1, &parse_triangle, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_triangle, v);
     Material m;
     Triangle tri;
 
@@ -750,7 +409,7 @@ static int parse_extra_light_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[6];
 
-    if (parse_expect_numbers(P, rec, 1, &parse_light, v) < 0)
+    if (lex_numbers(&P->lex, rec, 1, &parse_light, v) < 0)
         return -1;
     return parse_add_light(P, v, scene);
 }
@@ -774,7 +433,7 @@ static int parse_ambient_record(Parser *P, const Record *rec, Scene *scene)
     double v[3];
 
     if (parse_once(P, rec, &P->ambient_line, "the ambient light") != 0 ||
-        parse_expect_numbers(P, rec, 1, &parse_ambient, v) < 0)
+        lex_numbers(&P->lex, rec, 1, &parse_ambient, v) < 0)
         return -1;
     scene->ambient = colour(v[0], v[1], v[2]);
     scene->has_ambient = 1;
@@ -791,7 +450,7 @@ static int parse_samples_record(Parser *P, const Record *rec, Scene *scene)
                    "expected 1 number for the samples per pixel, found %d", rec->count - 1);
         return -1;
     }
-    return parse_whole_number(P, rec, 1, "the number of samples per pixel", "samples",
+    return lex_whole_number(&P->lex, rec, 1, "the number of samples per pixel", "samples",
                               SAMPLER_MAX, &scene->samples);
 }
 
@@ -801,7 +460,7 @@ static int parse_lens_record(Parser *P, const Record *rec, Scene *scene)
     double v[2];
 
     if (parse_once(P, rec, &P->lens_line, "the lens") != 0 ||
-        parse_expect_numbers(P, rec, 1, &parse_lens, v) < 0)
+        lex_numbers(&P->lex, rec, 1, &parse_lens, v) < 0)
         return -1;
     if (v[0] > 0 && camera_set_lens(&scene->camera, v[0], v[1]) != 0) {
         parse_fail(P, &rec->line, rec->tok[0].column,
@@ -812,53 +471,12 @@ static int parse_lens_record(Parser *P, const Record *rec, Scene *scene)
     return 0;
 }
 
-/* Says whether the len bytes at s spell the C string c exactly. */
-static int parse_token_is(const Token *t, const char *c)
-{
-    return t->len == strlen(c) && memcmp(t->text, c, t->len) == 0;
-}
-
-/* Returns token t as a file path relative to the scene file's directory
- * (as given when absolute, or when the scene has no directory), in a new
- * string; NULL with the fault recorded when memory runs out. */
-static char *parse_path(Parser *P, const Token *t)
-{
-    const char *slash = strrchr(P->name, '/');
-    size_t dir = t->text[0] == '/' || !slash ? 0 : (size_t)(slash - P->name) + 1;
-    char *path = malloc(dir + t->len + 1);
-
-    if (!path) {
-        error_set(P->err, P->name, "out of memory");
-        return NULL;
-    }
-    memcpy(path, P->name, dir);
-    memcpy(path + dir, t->text, t->len);
-    path[dir + t->len] = '\0';
-    return path;
-}
-
-/* Records that the file named by token t, a `what` ("texture", "mesh"),
- * cannot be used, with the fault inner found in it. */
-static void parse_fail_file(Parser *P, const Record *rec, const Token *t, const char *what,
-                            const Error *inner)
-{
-    char q[64];
-
-    parse_quote(q, sizeof q, t->text, t->len);
-    if (inner->line > 0)
-        parse_fail(P, &rec->line, t->column, "cannot use the %s %s: %s:%d:%d: %s", what, q,
-                   inner->file, inner->line, inner->column, inner->message);
-    else
-        parse_fail(P, &rec->line, t->column, "cannot use the %s %s: %s", what, q,
-                   inner->message);
-}
-
 /* Loads the texture file named by token t (relative to the scene file's
  * directory) into the scene, or finds it there already; returns its index,
  * or -1 with the fault recorded at t. */
 static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scene *scene)
 {
-    char *path = parse_path(P, t);
+    char *path = lex_path(&P->lex, t);
     Texture tex;
     Error inner;
     int index;
@@ -872,54 +490,15 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
         }
     }
     if (texture_load(&tex, path, &inner) != 0) {
-        parse_fail_file(P, rec, t, "texture", &inner);
+        lex_fail_file(&P->lex, rec, t, "texture", &inner);
         free(path);
         return -1;
     }
     free(path);
     index = scene_add_texture(scene, &tex);
     if (index < 0)
-        error_set(P->err, P->name, "out of memory after %zu textures", scene->texture_count);
+        error_set(P->lex.err, P->lex.name, "out of memory after %zu textures", scene->texture_count);
     return index;
-}
-
-/* Adds the triangles of OBJ mesh m with material mat, and the texture
- * coordinates of their corners when all three have some; returns how many
- * it added (triangles without area are left out), or -1 out of memory. */
-static long parse_add_mesh(Parser *P, const ObjMesh *m, const Material *mat, Scene *scene)
-{
-    long added = 0;
-
-    for (size_t i = 0; i < m->tri_count; i++) {
-        const ObjCorner *c = m->tri[i];
-        Triangle tri;
-        if (triangle_make(&tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
-            continue;
-        if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
-            /* Vertex normals: smooth shading, unless one is zero. */
-            tri.smooth = 1;
-            for (int k = 0; k < 3; k++) {
-                Vec3 vn = m->vn[c[k].vn];
-                if (!(vec3_length(vn) > 0))
-                    tri.smooth = 0;
-                else
-                    tri.vn[k] = vec3_normalize(vn);
-            }
-            if (!tri.smooth)
-                tri.vn[0] = tri.vn[1] = tri.vn[2] = tri.normal;
-        }
-        if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
-            for (int k = 0; k < 3; k++) {
-                tri.uv[k][0] = m->vt[c[k].vt][0];
-                tri.uv[k][1] = m->vt[c[k].vt][1];
-            }
-        if (scene_add_triangle(scene, &tri) != 0) {
-            parse_fail_memory(P, scene);
-            return -1;
-        }
-        added++;
-    }
-    return added;
 }
 
 /* mesh -> 'mesh:' path r g b reflection [transparency index] */
@@ -940,26 +519,26 @@ static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
                    parse_mesh.syntax);
         return -1;
     }
-    n = parse_expect_numbers(P, rec, 2, &parse_mesh, v);
+    n = lex_numbers(&P->lex, rec, 2, &parse_mesh, v);
     if (n < 0 || parse_material(P, rec, &parse_mesh, 2, 0, v, n, &mat) != 0)
         return -1;
-    path = parse_path(P, &rec->tok[1]);
+    path = lex_path(&P->lex, &rec->tok[1]);
     if (!path)
         return -1;
     if (obj_load(path, &mesh, &inner) != 0) {
-        parse_fail_file(P, rec, &rec->tok[1], "mesh", &inner);
+        lex_fail_file(&P->lex, rec, &rec->tok[1], "mesh", &inner);
         free(path);
         return -1;
     }
     free(path);
-    added = parse_add_mesh(P, &mesh, &mat, scene);
+    added = scene_add_mesh(scene, &mesh, &mat);
     obj_free(&mesh);
     if (added < 0)
-        return -1;
+        return parse_fail_memory(P, scene);
     if (added == 0) {
         parse_fail(P, &rec->line, rec->tok[1].column,
                    "the mesh %s has no faces with an area: nothing to draw",
-                   parse_quote(q, sizeof q, rec->tok[1].text, rec->tok[1].len));
+                   lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
     }
     parse_note_object(P, PARSE_SHAPE_MESH, scene->triangle_count - (size_t)added);
@@ -999,27 +578,22 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
                    spec->what, spec->syntax);
         return -1;
     }
-    if (rec->count > 2 && parse_token_is(&rec->tok[2], "nearest")) {
+    if (rec->count > 2 && lex_token_is(&rec->tok[2], "nearest")) {
         filter = TEXTURE_NEAREST;
         first = 3;
-    } else if (rec->count > 2 && parse_token_is(&rec->tok[2], "bilinear")) {
+    } else if (rec->count > 2 && lex_token_is(&rec->tok[2], "bilinear")) {
         first = 3;
     } else if (rec->count > 2 &&
                number_parse(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
         char q[64];
         parse_fail(P, &rec->line, rec->tok[2].column,
                    "unknown texture filter %s (expected 'nearest' or 'bilinear')",
-                   parse_quote(q, sizeof q, rec->tok[2].text, rec->tok[2].len));
+                   lex_quote(q, sizeof q, &rec->tok[2]));
         return -1;
     }
-    if (spec->optional == 0 && rec->count > first) {
-        char q[64];
-        const Token *t = &rec->tok[first];
-        parse_fail(P, &rec->line, t->column, "expected the end of the line after %s, found %s",
-                   spec->what, parse_quote(q, sizeof q, t->text, t->len));
-        return -1;
-    }
-    n = parse_expect_numbers(P, rec, first, spec, v);
+    if (spec->optional == 0 && rec->count > first)
+        return lex_fail_extra(&P->lex, rec, first, spec->what);
+    n = lex_numbers(&P->lex, rec, first, spec, v);
     if (n < 0)
         return -1;
     index = parse_load_texture(P, rec, &rec->tok[1], scene);
@@ -1068,7 +642,7 @@ static void parse_fail_keyword(Parser *P, const Record *rec)
     char q[64];
     double ignored;
 
-    parse_quote(q, sizeof q, t->text, t->len);
+    lex_quote(q, sizeof q, t);
     for (int k = 0; k < PARSE_RECORD_KINDS; k++) {
         const char *kw = parse_records[k].keyword;
         size_t n = strlen(kw);
@@ -1103,9 +677,9 @@ static int parse_objects(Parser *P, Scene *scene)
     Record rec;
     int rc;
 
-    while ((rc = parse_next_record(P, &rec)) == 1) {
+    while ((rc = lex_next_record(&P->lex, &rec)) == 1) {
         int k = 0;
-        while (k < PARSE_RECORD_KINDS && !parse_token_is(&rec.tok[0], parse_records[k].keyword))
+        while (k < PARSE_RECORD_KINDS && !lex_token_is(&rec.tok[0], parse_records[k].keyword))
             k++;
         if (k == PARSE_RECORD_KINDS) {
             parse_fail_keyword(P, &rec);
@@ -1122,16 +696,7 @@ int parse_scene_text(const char *name, const char *text, size_t len, Scene *scen
     Parser P;
 
     scene_init(scene);
-    /* A UTF-8 byte order mark, as some editors write, is not part of line 1. */
-    if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) {
-        text += 3;
-        len -= 3;
-    }
-    P.name = name;
-    P.start = P.next = text;
-    P.end = text + len;
-    P.lineno = 0;
-    P.err = err;
+    lex_init(&P.lex, name, text, len, err);
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;
     P.last_count = 0;

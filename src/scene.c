@@ -8,6 +8,7 @@
 
 #include "bvh.h"
 #include "grow.h"
+#include "obj.h"
 
 void scene_init(Scene *scene)
 {
@@ -99,6 +100,40 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
     scene->triangle_count++;
     scene->has_transparency |= t->material.transparency > 0;
     return 0;
+}
+
+long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
+{
+    long added = 0;
+
+    for (size_t i = 0; i < m->tri_count; i++) {
+        const ObjCorner *c = m->tri[i];
+        Triangle tri;
+        if (triangle_make(&tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
+            continue;
+        if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
+            /* Vertex normals: smooth shading, unless one is zero. */
+            tri.smooth = 1;
+            for (int k = 0; k < 3; k++) {
+                Vec3 vn = m->vn[c[k].vn];
+                if (!(vec3_length(vn) > 0))
+                    tri.smooth = 0;
+                else
+                    tri.vn[k] = vec3_normalize(vn);
+            }
+            if (!tri.smooth)
+                tri.vn[0] = tri.vn[1] = tri.vn[2] = tri.normal;
+        }
+        if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
+            for (int k = 0; k < 3; k++) {
+                tri.uv[k][0] = m->vt[c[k].vt][0];
+                tri.uv[k][1] = m->vt[c[k].vt][1];
+            }
+        if (scene_add_triangle(scene, &tri) != 0)
+            return -1;
+        added++;
+    }
+    return added;
 }
 
 int scene_add_texture(Scene *scene, Texture *tex)
