@@ -63,21 +63,21 @@ typedef struct {
 int bvh_nearest(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax,
                 BvhHit *hit);
 
-/* Returns 1 when some sphere or triangle crosses the segment from
- * ray->origin to ray->origin + ray->dir (0 < t < 1), else 0. */
-int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *segment);
+/* Returns 1 when some sphere or triangle crosses the ray at 0 < t < tmax
+ * (tmax = 1: the segment from ray->origin to ray->origin + ray->dir), else 0. */
+int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax);
 
-/* A surface crossed by a shadow segment, and how many times. */
+/* A surface crossed by a shadow ray, and how many times. */
 typedef struct {
     uint32_t prim;  /* primitive reference */
     int crossings;  /* 1 or 2 */
 } BvhCrossing;
 
-/* Lists in out (room for max) the spheres and triangles the segment
- * crosses (0 < t < 1), sorted spheres first, each kind by index; returns
+/* Lists in out (room for max) the spheres and triangles the ray crosses at
+ * 0 < t < tmax, sorted spheres first, each kind by index; returns
  * how many, -1 when more than max, or -2 as soon as an opaque one (T = 0) is
  * crossed. */
-int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *segment,
+int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax,
                   BvhCrossing *out, int max);
 
 #endif

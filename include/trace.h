@@ -53,13 +53,14 @@ typedef struct {
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
 int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit);
 
-/* Returns 1 when some object's surface crosses the segment from
- * ray->origin to ray->origin + ray->dir (0 < t < 1, ends excluded), else 0. */
-int trace_occluded(const Scene *scene, const Ray *segment);
+/* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
+ * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +
+ * ray->dir (ends excluded), tmax = INFINITY the whole ray. */
+int trace_occluded(const Scene *scene, const Ray *ray, double tmax);
 
-/* Returns the share of light that passes along the segment: the product of
- * the transparency T of every surface crossing on it (0 < t < 1). */
-double trace_transmittance(const Scene *scene, const Ray *segment);
+/* Returns the share of light that passes along the ray from t = 0 to tmax:
+ * the product of the transparency T of every surface crossing there. */
+double trace_transmittance(const Scene *scene, const Ray *ray, double tmax);
 
 /* Returns the colour seen along ray, a ray of depth `depth` (0 for primary
  * rays), tracing mirror and refracted rays down to max_depth; adds the

@@ -457,17 +457,17 @@ static void bvh_walk_start(BvhWalk *w)
     w->top = 1;
 }
 
-int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *segment)
+int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax)
 {
-    BvhRay r = bvh_ray(segment);
+    BvhRay r = bvh_ray(ray);
     BvhWalk w;
     const BvhNode *leaf;
     double t;
 
     bvh_walk_start(&w);
-    while ((leaf = bvh_next_leaf(bvh, &r, 1, &w)) != NULL)
+    while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL)
         for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++)
-            if (bvh_prim_hit(scene, bvh->prims[k], segment, 0, 1, &t))
+            if (bvh_prim_hit(scene, bvh->prims[k], ray, 0, tmax, &t))
                 return 1;
     return 0;
 }
@@ -478,27 +478,27 @@ static int bvh_crossing_before(const BvhCrossing *a, const BvhCrossing *b)
     return a->prim < b->prim; /* BVH_TRIANGLE is the top bit */
 }
 
-int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *segment, BvhCrossing *out,
-                  int max)
+int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
+                  BvhCrossing *out, int max)
 {
-    BvhRay r = bvh_ray(segment);
+    BvhRay r = bvh_ray(ray);
     BvhWalk w;
     const BvhNode *leaf;
     int n = 0;
     double t;
 
     bvh_walk_start(&w);
-    while ((leaf = bvh_next_leaf(bvh, &r, 1, &w)) != NULL) {
+    while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL) {
         for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++) {
             uint32_t ref = bvh->prims[k];
             const Material *m;
             int c;
             if (ref & BVH_TRIANGLE) {
                 const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
-                c = triangle_intersect(tri, segment, 0, 1, &t);
+                c = triangle_intersect(tri, ray, 0, tmax, &t);
                 m = &tri->material;
             } else {
-                c = sphere_crossings(&scene->spheres[ref], segment, 0, 1);
+                c = sphere_crossings(&scene->spheres[ref], ray, 0, tmax);
                 m = &scene->spheres[ref].material;
             }
             if (c == 0)

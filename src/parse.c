@@ -27,8 +27,6 @@
  */
 #include "parse.h"
 
-#include <ctype.h>
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -105,20 +105,20 @@ int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
     return trace_find(scene, ray, tmax, hit);
 }
 
-int trace_occluded(const Scene *scene, const Ray *segment)
+int trace_occluded(const Scene *scene, const Ray *ray, double tmax)
 {
     double t;
 
     for (size_t k = 0; k < scene->plane_count; k++)
-        if (plane_intersect(&scene->planes[k], segment, 0, 1, &t))
+        if (plane_intersect(&scene->planes[k], ray, 0, tmax, &t))
             return 1;
     if (scene->accel)
-        return bvh_occluded(scene->accel, scene, segment);
+        return bvh_occluded(scene->accel, scene, ray, tmax);
     for (size_t k = 0; k < scene->sphere_count; k++)
-        if (sphere_intersect(&scene->spheres[k], segment, 0, 1, &t))
+        if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t))
             return 1;
     for (size_t k = 0; k < scene->triangle_count; k++)
-        if (triangle_intersect(&scene->triangles[k], segment, 0, 1, &t))
+        if (triangle_intersect(&scene->triangles[k], ray, 0, tmax, &t))
             return 1;
     return 0;
 }
@@ -132,15 +132,16 @@ static int trace_attenuate(double *share, const Material *m, int crossings)
     return *share > 0;
 }
 
-/* Multiplies *share by the transparency of every plane the segment
- * crosses; returns 0 once nothing is left, else 1. */
-static int trace_attenuate_planes(const Scene *scene, const Ray *segment, double *share)
+/* Multiplies *share by the transparency of every plane the ray crosses at
+ * 0 < t < tmax; returns 0 once nothing is left, else 1. */
+static int trace_attenuate_planes(const Scene *scene, const Ray *ray, double tmax,
+                                  double *share)
 {
     double t;
 
     for (size_t k = 0; k < scene->plane_count; k++) {
         const Plane *pl = &scene->planes[k];
-        if (!trace_attenuate(share, &pl->material, plane_intersect(pl, segment, 0, 1, &t)))
+        if (!trace_attenuate(share, &pl->material, plane_intersect(pl, ray, 0, tmax, &t)))
             return 0;
     }
     return 1;
@@ -150,11 +151,11 @@ static int trace_attenuate_planes(const Scene *scene, const Ray *segment, double
  * multiplied in the order of the loop below (spheres, planes, triangles,
  * each by index), so the product has the very same bits. Returns -1 when
  * there are too many crossings to list. */
-static double trace_transmittance_accel(const Scene *scene, const Ray *segment)
+static double trace_transmittance_accel(const Scene *scene, const Ray *ray, double tmax)
 {
     enum { MAX = 64 };
     BvhCrossing c[MAX];
-    int n = bvh_crossings(scene->accel, scene, segment, c, MAX), i = 0;
+    int n = bvh_crossings(scene->accel, scene, ray, tmax, c, MAX), i = 0;
     double share = 1;
 
     if (n == -2)
@@ -164,7 +165,7 @@ static double trace_transmittance_accel(const Scene *scene, const Ray *segment)
     for (; i < n && !(c[i].prim & BVH_TRIANGLE); i++)
         if (!trace_attenuate(&share, &scene->spheres[c[i].prim].material, c[i].crossings))
             return 0;
-    if (!trace_attenuate_planes(scene, segment, &share))
+    if (!trace_attenuate_planes(scene, ray, tmax, &share))
         return 0;
     for (; i < n; i++)
         if (!trace_attenuate(&share, &scene->triangles[c[i].prim & ~BVH_TRIANGLE].material,
@@ -173,25 +174,25 @@ static double trace_transmittance_accel(const Scene *scene, const Ray *segment)
     return share;
 }
 
-double trace_transmittance(const Scene *scene, const Ray *segment)
+double trace_transmittance(const Scene *scene, const Ray *ray, double tmax)
 {
     double share = 1, t;
 
     if (scene->accel) {
-        double s = trace_transmittance_accel(scene, segment);
+        double s = trace_transmittance_accel(scene, ray, tmax);
         if (s >= 0)
             return s;
     }
     for (size_t k = 0; k < scene->sphere_count; k++) {
         const Sphere *s = &scene->spheres[k];
-        if (!trace_attenuate(&share, &s->material, sphere_crossings(s, segment, 0, 1)))
+        if (!trace_attenuate(&share, &s->material, sphere_crossings(s, ray, 0, tmax)))
             return 0;
     }
-    if (!trace_attenuate_planes(scene, segment, &share))
+    if (!trace_attenuate_planes(scene, ray, tmax, &share))
         return 0;
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
-        if (!trace_attenuate(&share, &tri->material, triangle_intersect(tri, segment, 0, 1, &t)))
+        if (!trace_attenuate(&share, &tri->material, triangle_intersect(tri, ray, 0, tmax, &t)))
             return 0;
     }
     return share;
@@ -263,10 +264,10 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
     shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
     shadow.dir = vec3_sub(light->position, shadow.origin);
     if (scene->has_transparency) {
-        cos_a *= trace_transmittance(scene, &shadow);
+        cos_a *= trace_transmittance(scene, &shadow, 1);
         if (!(cos_a > 0))
             return colour(0, 0, 0);
-    } else if (trace_occluded(scene, &shadow)) {
+    } else if (trace_occluded(scene, &shadow, 1)) {
         return colour(0, 0, 0);
     }
     return colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),

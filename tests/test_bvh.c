@@ -140,7 +140,8 @@ static void bvh_queries_equal_the_loops(void)
 {
     /* The same nearest hit (t, object), occlusion and transmittance (to the
      * bit) with and without the hierarchy, for rays from outside, from
-     * inside, through exact ties, and shadow segments. */
+     * inside, through exact ties, shadow segments and unbounded shadow rays
+     * (distant lights). */
     static const double scales[] = {1e-3, 1, 1e6};
     int differ = 0, hits = 0;
 
@@ -158,20 +159,25 @@ static void bvh_queries_equal_the_loops(void)
             Ray ray = {o, vec3_sub(vec3_scale(rng_unit_vector(), s * rng_uniform()), o)};
             Ray seg = {o, vec3_scale(ray.dir, rng_range(0.2, 2))};
             Hit a, b;
-            int fa, fb, oa, ob;
-            double ta, tb;
+            int fa, fb, oa, ob, ua, ub;
+            double ta, tb, va, vb;
 
             sc.accel = NULL; /* every object, one by one */
             fa = trace_nearest(&sc, &ray, INFINITY, &a);
-            oa = trace_occluded(&sc, &seg);
-            ta = trace_transmittance(&sc, &seg);
+            oa = trace_occluded(&sc, &seg, 1);
+            ta = trace_transmittance(&sc, &seg, 1);
+            ua = trace_occluded(&sc, &seg, INFINITY);
+            va = trace_transmittance(&sc, &seg, INFINITY);
             sc.accel = accel;
             fb = trace_nearest(&sc, &ray, INFINITY, &b);
-            ob = trace_occluded(&sc, &seg);
-            tb = trace_transmittance(&sc, &seg);
+            ob = trace_occluded(&sc, &seg, 1);
+            tb = trace_transmittance(&sc, &seg, 1);
+            ub = trace_occluded(&sc, &seg, INFINITY);
+            vb = trace_transmittance(&sc, &seg, INFINITY);
             hits += fa;
             if (fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
-                oa != ob || memcmp(&ta, &tb, sizeof ta) != 0)
+                oa != ob || memcmp(&ta, &tb, sizeof ta) != 0 || ua != ub ||
+                memcmp(&va, &vb, sizeof va) != 0)
                 differ++;
         }
         scene_free(&sc);

@@ -172,9 +172,9 @@ static void trace_nearest_and_occluded(void)
     CHECK_NEAR(4, hit.t, 0);
     CHECK(hit.kind == SHAPE_SPHERE && hit.index == 1);
     CHECK(!trace_nearest(&sc, &r, 4, &hit));
-    CHECK(!trace_occluded(&sc, &seg)); /* ends exactly on the surface: not crossed */
+    CHECK(!trace_occluded(&sc, &seg, 1)); /* ends exactly on the surface: not crossed */
     seg.dir.z = 4.5;
-    CHECK(trace_occluded(&sc, &seg));
+    CHECK(trace_occluded(&sc, &seg, 1));
     scene_free(&sc);
 }
 
