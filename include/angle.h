@@ -16,6 +16,9 @@
 /* Stores sin(x) and cos(x) in *s and *c, for |x| <= pi / 4. */
 void angle_sincos(double x, double *s, double *c);
 
+/* Returns tan(x) for 0 <= x < pi / 2. */
+double angle_tan(double x);
+
 /* Returns the angle of the point (x, y) from the x axis, in [-pi, pi];
  * 0 for the origin. */
 double angle_atan2(double y, double x);

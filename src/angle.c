@@ -19,6 +19,22 @@ void angle_sincos(double x, double *s, double *c)
     *c = cs;
 }
 
+double angle_tan(double x)
+{
+    double s, c;
+
+    /* Above pi / 4, tan x = 1 / tan(pi / 2 - x); pi / 2 - x is exact
+     * (Sterbenz) with pi / 2 taken to twice the precision of a double. */
+    const double pio2_lo = 6.123233995736766036e-17; /* pi / 2 - (double)(pi / 2) */
+
+    if (x <= ANGLE_PI / 4) {
+        angle_sincos(x, &s, &c);
+        return s / c;
+    }
+    angle_sincos((ANGLE_PI / 2 - x) + pio2_lo, &s, &c);
+    return c / s;
+}
+
 /* Returns atan(x) for |x| <= 1. */
 static double angle_atan_unit(double x)
 {

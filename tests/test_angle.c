@@ -1,7 +1,9 @@
-/* test_angle.c: the deterministic trigonometry against libm. */
+/* test_angle.c: the deterministic trigonometry and power against libm. */
 #include <math.h>
 
 #include "angle.h"
+#include "power.h"
+#include "rng.h"
 #include "test.h"
 
 static void angle_sincos_matches_libm(void)
@@ -36,7 +38,50 @@ static void angle_atan2_and_acos_match_libm(void)
     CHECK_NEAR(ANGLE_PI, angle_acos(-2), 0);
 }
 
+static void angle_tan_matches_libm(void)
+{
+    double worst = 0;
+
+    /* Relative error, up to 1e-9 short of pi / 2 where tan is 1e9. */
+    for (int i = 0; i < 2000; i++) {
+        double x = (ANGLE_PI / 2 - 1e-9) * i / 1999;
+        worst = fmax(worst, fabs(angle_tan(x) - tan(x)) / fmax(tan(x), 1e-300));
+    }
+    CHECK(worst <= 4e-15);
+    CHECK_NEAR(0, angle_tan(0), 0);
+    CHECK_NEAR(1, angle_tan(ANGLE_PI / 4), 2e-16);
+}
+
+static void power_matches_libm(void)
+{
+    double worst = 0;
+
+    /* Relative error over the Blinn-Phong range: cosines in [0, 1], down to
+     * 1e-300, exponents whole and fractional up to 1000. */
+    for (int i = 0; i < 200000; i++) {
+        double x = rng_uniform(), y = i % 2 ? floor(rng_range(0, 200)) : rng_range(0, 1000);
+        double want;
+        if (i % 3 == 0)
+            x = pow(x, 40); /* down to tiny values */
+        if (i % 5 == 0)
+            y = rng_uniform();
+        want = pow(x, y);
+        if (want > 1e-290)
+            worst = fmax(worst, fabs(power(x, y) - want) / want);
+    }
+    CHECK(worst <= 1e-13);
+    CHECK_NEAR(1, power(0, 0), 0);
+    CHECK_NEAR(1, power(0.3, 0), 0);
+    CHECK_NEAR(0, power(0, 2.5), 0);
+    CHECK_NEAR(1, power(1, 1e15), 0);
+    CHECK_NEAR(0.25, power(0.5, 2), 0);             /* exact: two factors */
+    CHECK_NEAR(sqrt(0.5), power(0.5, 0.5), 2e-16);
+    CHECK_NEAR(0, power(0.999, 1e15), 0);           /* underflows, in 50 squarings */
+}
+
 const TestCase angle_tests[] = {
+    {"angle_tan_matches_libm", angle_tan_matches_libm},
+    {"power_matches_libm", power_matches_libm},
     {"angle_sincos_matches_libm", angle_sincos_matches_libm},
     {"angle_atan2_and_acos_match_libm", angle_atan2_and_acos_match_libm},
     {NULL, NULL},
