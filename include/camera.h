@@ -47,6 +47,27 @@ CameraScreenFault camera_check_screen(Vec3 u, Vec3 v);
  * so that the caller can reject heights above CAMERA_MAX_SIZE. */
 double camera_height(Vec3 u, Vec3 v, int width);
 
+/* What camera_look_at() finds wrong with a view, if anything. */
+typedef enum {
+    CAMERA_VIEW_OK,
+    CAMERA_VIEW_NO_DIRECTION, /* the eye is the point looked at */
+    CAMERA_VIEW_TOO_NARROW    /* the field of view leaves the screen no
+                                 width or height in doubles */
+} CameraViewFault;
+
+/*
+ * Sets up the look-at camera of seed 002: the eye at `from` looks towards
+ * `at`, with a horizontal field of view of fov radians (0 < fov < pi) and an
+ * image of width x height square pixels. The screen is centred on `at`,
+ * square to the line of sight, at the eye's distance from `at` (so that it
+ * scales with the scene); world +y is up (for a camera looking straight up
+ * or down, +z is up on the image when looking down and -z when looking up),
+ * and right is up x forward, so a camera looking along +z has +x on its
+ * right, as in the course's scenes. No lens.
+ */
+CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,
+                               int height);
+
 /* Gives the camera a thin lens of diameter aperture (> 0) that focuses on
  * the plane parallel to the screen at distance focus (> 0) from the eye;
  * returns -1, changing nothing, when the eye lies in the screen's plane (no

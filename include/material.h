@@ -2,7 +2,7 @@
  * material.h: how a surface answers light: its colour, mirror and
  * transparency weights, refractive index and texture.
  *
- * Every shape carries one. The shading rule that uses it is in trace.h.
+ * Every shape carries one. The shading rules that use it are in trace.h.
  */
 #ifndef RAYTRACE_MATERIAL_H
 #define RAYTRACE_MATERIAL_H
@@ -23,12 +23,25 @@ typedef struct {
     int texture;           /* index in the scene's textures, or -1: Ci is
                               then the colour above */
     TextureFilter filter;  /* lookup used with the texture */
+    int phong;             /* index in the scene's Blinn-Phong materials, or
+                              -1: the course's shading rule (trace.h) */
 } Material;
+
+/* A material of seed 002's keyword format: a named Material (its colour,
+ * rho_r as the mirror weight, tau as the transparency, eta_r as the index),
+ * shaded by Blinn-Phong with the weights below (docs/scene-format.md). */
+typedef struct {
+    char *name;        /* as written; owned by the scene */
+    Material base;     /* what the shapes that use it copy */
+    double ka, kd, ks; /* ambient, diffuse and specular weights, >= 0 */
+    double shininess;  /* the Blinn-Phong exponent alpha, >= 0 */
+    int line;          /* line of its definition, for messages */
+} PhongMaterial;
 
 /* Returns the opaque, untextured material of colour c and mirror weight r. */
 static inline Material material_plain(Colour c, double r)
 {
-    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST};
+    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST, -1};
     return m;
 }
 

@@ -21,9 +21,25 @@
 #include "vec3.h"
 
 typedef struct {
-    Vec3 position; /* point light, scene units */
-    Colour colour; /* Cs, 0..255 per channel */
+    Vec3 position;    /* a point light: where it is, scene units; a distant
+                         light: the direction its light travels, as written */
+    Colour colour;    /* Cs, 0..255 per channel */
+    int distant;      /* 1: a distant light (keyword format) */
+    double intensity; /* i, the distant light's intensity */
+    Vec3 to_light;    /* a distant light: unit vector towards it */
 } Light;
+
+/* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
+ * them apart by content. */
+typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD } SceneFormat;
+
+/* A keyword-format mesh line, kept so that the scene can be saved. */
+typedef struct {
+    char *path;   /* the OBJ path as written in the scene file */
+    char *opened; /* the path it was read from */
+    size_t first; /* its first triangle in the scene's triangles */
+    size_t count; /* how many triangles it gave */
+} SceneMesh;
 
 struct Bvh;
 struct ObjMesh;
@@ -31,10 +47,13 @@ struct ObjMesh;
 typedef struct Scene {
     Camera camera;          /* eye, screen, image size and lens */
     Colour background;      /* seen where a ray hits nothing, 0..255 */
-    Colour ambient;         /* Ca, added to every lit surface; 0 by default */
-    int has_ambient;        /* an ambient: record set Ca */
-    Light *lights;          /* lights[0] is the header's light */
-    size_t light_count;     /* lights in use, >= 1 once parsed */
+    Colour ambient;         /* course: Ca, added to every lit surface, 0 by
+                               default; keyword: Ia, the ambient record or
+                               else the sum of i Cs over the lights */
+    int has_ambient;        /* an ambient record set it */
+    Light *lights;          /* course: lights[0] is the header's light */
+    size_t light_count;     /* lights in use, >= 1 once a course scene is
+                               parsed */
     size_t light_capacity;  /* lights allocated */
     Sphere *spheres;        /* file order; NULL when there are none */
     size_t sphere_count;    /* spheres in use */
@@ -48,6 +67,16 @@ typedef struct Scene {
     Texture *textures;      /* one per distinct texture file */
     size_t texture_count;
     size_t texture_capacity;
+    PhongMaterial *phong;   /* the keyword format's named materials */
+    size_t phong_count;
+    size_t phong_capacity;
+    SceneMesh *meshes;      /* the keyword format's mesh lines */
+    size_t mesh_count;
+    size_t mesh_capacity;
+    SceneFormat format;     /* the format it was read from */
+    Vec3 look_from;         /* keyword: the camera line as written */
+    Vec3 look_at;
+    double fov;
     struct Bvh *accel;      /* hierarchy over spheres and triangles, or NULL:
                                every ray then tests every object */
     int has_transparency;   /* some object has T > 0 */
@@ -78,6 +107,14 @@ int scene_add_triangle(Scene *scene, const Triangle *t);
  * out. Returns how many it added, or -1 when memory runs out (those added
  * stay). */
 long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
+
+/* Appends *m, taking ownership of its name (freed on failure); returns its
+ * index, or -1 when memory runs out. */
+int scene_add_phong(Scene *scene, PhongMaterial *m);
+
+/* Appends *mesh, taking ownership of its strings (freed on failure);
+ * returns 0, or -1 when memory runs out. */
+int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
 
 /* Takes ownership of *tex as the scene's next texture; returns its index, or
  * -1 (tex released) when memory runs out. */

@@ -4,6 +4,8 @@
 #include <float.h>
 #include <math.h>
 
+#include "angle.h"
+
 /* Below this sine of the angle between u and v the screen is degenerate. */
 #define CAMERA_MIN_SINE 1e-12
 
@@ -61,6 +63,48 @@ Ray camera_ray(const Camera *cam, double x, double y)
     ray.origin = cam->eye;
     ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
     return ray;
+}
+
+/* Returns a scaled to unit length, scaling it by a power of two first so
+ * that the squares of tiny components do not underflow; a must not be 0. */
+static Vec3 camera_unit(Vec3 a)
+{
+    return vec3_normalize(vec3_ldexp(a, vec3_unit_exponent(vec3_max_abs(a))));
+}
+
+CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,
+                               int height)
+{
+    Vec3 d = vec3_sub(at, from), forward, right, up;
+    double dist, half_w, half_h;
+    int k;
+
+    if (!(vec3_max_abs(d) > 0))
+        return CAMERA_VIEW_NO_DIRECTION;
+    k = vec3_unit_exponent(vec3_max_abs(d));
+    dist = ldexp(vec3_length(vec3_ldexp(d, k)), -k);
+    forward = camera_unit(d);
+    /* right = (0, 1, 0) x forward = (f.z, 0, -f.x), unless forward is
+     * vertical: then up is +z looking down and -z looking up, which both
+     * give right = +x. */
+    if (forward.x == 0 && forward.z == 0)
+        right = vec3(1, 0, 0);
+    else
+        right = camera_unit(vec3(forward.z, 0, -forward.x));
+    up = vec3_cross(forward, right);
+    half_w = angle_tan(fov / 2) * dist;
+    half_h = half_w * height / width;
+    cam->eye = from;
+    cam->u = vec3_scale(right, 2 * half_w);
+    cam->v = vec3_scale(up, -2 * half_h);
+    cam->top_left = vec3_add(at, vec3_sub(vec3_scale(up, half_h), vec3_scale(right, half_w)));
+    cam->width = width;
+    cam->height = height;
+    cam->aperture = 0;
+    cam->focus = 0;
+    if (camera_check_screen(cam->u, cam->v) != CAMERA_SCREEN_OK)
+        return CAMERA_VIEW_TOO_NARROW;
+    return CAMERA_VIEW_OK;
 }
 
 int camera_set_lens(Camera *cam, double aperture, double focus)

@@ -208,7 +208,7 @@ static int parse_colour(Parser *P, const RecordSpec *spec, Record *rec, Colour *
 /* Appends the light of values v (x y z r g b) to the scene. */
 static int parse_add_light(Parser *P, const double *v, Scene *scene)
 {
-    Light light;
+    Light light = {{0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}};
 
     light.position = vec3(v[0], v[1], v[2]);
     light.colour = colour(v[3], v[4], v[5]);

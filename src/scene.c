@@ -18,6 +18,8 @@ void scene_init(Scene *scene)
     scene->planes = NULL;
     scene->triangles = NULL;
     scene->textures = NULL;
+    scene->phong = NULL;
+    scene->meshes = NULL;
     scene->accel = NULL;
 }
 
@@ -30,6 +32,14 @@ void scene_free(Scene *scene)
     for (size_t i = 0; i < scene->texture_count; i++)
         texture_free(&scene->textures[i]);
     free(scene->textures);
+    for (size_t i = 0; i < scene->phong_count; i++)
+        free(scene->phong[i].name);
+    free(scene->phong);
+    for (size_t i = 0; i < scene->mesh_count; i++) {
+        free(scene->meshes[i].path);
+        free(scene->meshes[i].opened);
+    }
+    free(scene->meshes);
     free(scene->lights);
     free(scene->spheres);
     free(scene->planes);
@@ -147,6 +157,29 @@ int scene_add_texture(Scene *scene, Texture *tex)
     return (int)scene->texture_count++;
 }
 
+int scene_add_phong(Scene *scene, PhongMaterial *m)
+{
+    if (grow_reserve((void **)&scene->phong, &scene->phong_capacity, scene->phong_count,
+                      sizeof *m) != 0) {
+        free(m->name);
+        return -1;
+    }
+    scene->phong[scene->phong_count] = *m;
+    return (int)scene->phong_count++;
+}
+
+int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)
+{
+    if (grow_reserve((void **)&scene->meshes, &scene->mesh_capacity, scene->mesh_count,
+                      sizeof *mesh) != 0) {
+        free(mesh->path);
+        free(mesh->opened);
+        return -1;
+    }
+    scene->meshes[scene->mesh_count++] = *mesh;
+    return 0;
+}
+
 /* Returns the largest magnitude of the components of the n points at p. */
 static double scene_points_max(const Vec3 *p, size_t n)
 {
@@ -166,7 +199,8 @@ static double scene_max_length(const Scene *scene)
 
     m = fmax(m, fmax(cam->aperture, cam->aperture > 0 ? cam->focus : 0));
     for (size_t i = 0; i < scene->light_count; i++)
-        m = fmax(m, vec3_max_abs(scene->lights[i].position));
+        if (!scene->lights[i].distant) /* a direction, not a place */
+            m = fmax(m, vec3_max_abs(scene->lights[i].position));
     for (size_t i = 0; i < scene->sphere_count; i++)
         m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
     for (size_t i = 0; i < scene->plane_count; i++)
@@ -193,7 +227,8 @@ void scene_fit_scale(Scene *scene)
     cam->aperture = ldexp(cam->aperture, k);
     cam->focus = ldexp(cam->focus, k);
     for (size_t i = 0; i < scene->light_count; i++)
-        scene->lights[i].position = vec3_ldexp(scene->lights[i].position, k);
+        if (!scene->lights[i].distant)
+            scene->lights[i].position = vec3_ldexp(scene->lights[i].position, k);
     for (size_t i = 0; i < scene->sphere_count; i++) {
         scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
         scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);

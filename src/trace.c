@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "bvh.h"
+#include "power.h"
 #include "texture.h"
 
 /* Stores in *hit the object of kind, index and order crossed at t. */
@@ -245,6 +246,26 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
     return sh;
 }
 
+/* Returns the share E of the light that reaches the shaded point sh (whose
+ * surface normal n faces the viewer) from the light in direction to_light
+ * (towards a point light: the vector to it; a distant light: its unit
+ * to_light), casting one shadow ray: 1 or 0 in opaque scenes, the product
+ * of the transparencies crossed in others. */
+static inline double trace_visibility(const Scene *scene, const Shade *sh, Vec3 n,
+                                      const Light *light, Vec3 to_light, RayCounts *counts)
+{
+    Ray shadow;
+
+    counts->shadow++;
+    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
+    /* To a point light, the segment ends at the light (t = 1); towards a
+     * distant one, the ray is unbounded. */
+    shadow.dir = light->distant ? to_light : vec3_sub(light->position, shadow.origin);
+    if (scene->has_transparency)
+        return trace_transmittance(scene, &shadow, light->distant ? INFINITY : 1);
+    return trace_occluded(scene, &shadow, light->distant ? INFINITY : 1) ? 0 : 1;
+}
+
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
  * shaded point sh: ns is its shading normal and n its surface normal, both
  * facing the viewer. */
@@ -252,26 +273,57 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
                                   Vec3 ns, RayCounts *counts)
 {
     Vec3 to_light = vec3_sub(light->position, sh->sp.point);
-    double cos_a = vec3_dot(ns, vec3_normalize(to_light));
+    double cos_a = vec3_dot(ns, vec3_normalize(to_light)), e;
     Colour ci = sh->colour;
-    Ray shadow;
 
     /* Facing away from the light (or the light on the point: NaN) means no
      * light, whatever E is: no shadow ray needed. */
     if (!(cos_a > 0))
         return colour(0, 0, 0);
-    counts->shadow++;
-    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
-    shadow.dir = vec3_sub(light->position, shadow.origin);
-    if (scene->has_transparency) {
-        cos_a *= trace_transmittance(scene, &shadow, 1);
-        if (!(cos_a > 0))
-            return colour(0, 0, 0);
-    } else if (trace_occluded(scene, &shadow, 1)) {
+    e = trace_visibility(scene, sh, n, light, to_light, counts);
+    if (!(e > 0))
         return colour(0, 0, 0);
-    }
+    if (e != 1)
+        cos_a *= e;
     return colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
                   cos_a * (ci.b * light->colour.b / 255));
+}
+
+/* Returns the Blinn-Phong local term of docs/scene-format.md at sh, for
+ * material pm, seen from direction view (unit, towards the viewer), with
+ * facing normals n and ns (see trace_direct()):
+ *     ka Ia Ci / 255 + sum over lights of E i (kd max(0, N . L) Ci Cs / 255
+ *                                              + ks max(0, N . H)^alpha Cs)
+ * with H the unit vector halfway between L and view. */
+static inline Colour trace_phong(const Scene *scene, const Shade *sh, const PhongMaterial *pm,
+                                 Vec3 n, Vec3 ns, Vec3 view, RayCounts *counts)
+{
+    Colour ci = sh->colour, c;
+
+    c = colour(pm->ka * (scene->ambient.r * ci.r / 255), pm->ka * (scene->ambient.g * ci.g / 255),
+               pm->ka * (scene->ambient.b * ci.b / 255));
+    for (size_t i = 0; i < scene->light_count; i++) {
+        const Light *light = &scene->lights[i];
+        Vec3 to_light = light->distant ? light->to_light
+                                       : vec3_sub(light->position, sh->sp.point);
+        Vec3 l = light->distant ? to_light : vec3_normalize(to_light);
+        double cos_a = vec3_dot(ns, l), e, nh, spec;
+
+        if (!(cos_a > 0))
+            continue;
+        e = trace_visibility(scene, sh, n, light, to_light, counts) * light->intensity;
+        if (!(e > 0))
+            continue;
+        nh = vec3_dot(ns, vec3_normalize(vec3_add(l, view)));
+        spec = nh > 0 ? pm->ks * power(nh < 1 ? nh : 1, pm->shininess) : 0;
+        c = colour_add(c, colour(e * (pm->kd * cos_a * (ci.r * light->colour.r / 255) +
+                                      spec * light->colour.r),
+                                 e * (pm->kd * cos_a * (ci.g * light->colour.g / 255) +
+                                      spec * light->colour.g),
+                                 e * (pm->kd * cos_a * (ci.b * light->colour.b / 255) +
+                                      spec * light->colour.b)));
+    }
+    return c;
 }
 
 /* Returns the local term: the ambient light plus every light's direct
@@ -323,7 +375,13 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
     r = sh.material->reflection;
     t = sh.material->transparency;
     own = 1 - r - t;
-    c = colour_scale(trace_local(scene, &sh, n, ns, counts), own > 0 ? own : 0);
+    if (sh.material->phong >= 0)
+        /* Whitted's sum: the Blinn-Phong weights already scale the local
+         * term. */
+        c = trace_phong(scene, &sh, &scene->phong[sh.material->phong], n, ns,
+                        vec3_normalize(vec3_neg(ray->dir)), counts);
+    else
+        c = colour_scale(trace_local(scene, &sh, n, ns, counts), own > 0 ? own : 0);
     if (depth + 1 > max_depth)
         return c;
     if (t > 0) {

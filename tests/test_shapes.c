@@ -7,7 +7,7 @@
 #include "test.h"
 #include "triangle.h"
 
-static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST};
+static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1};
 
 static Triangle triangle_of(Vec3 a, Vec3 b, Vec3 c)
 {
