@@ -94,6 +94,11 @@ const char *lex_quote(char *buf, size_t size, const Token *t);
 /* Says whether token t spells the C string c exactly. */
 int lex_token_is(const Token *t, const char *c);
 
+/* Reads token k of rec, the number `index` of spec, into *out, checking it
+ * against its kind; returns 0, or -1 with the fault recorded. */
+int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int index,
+               double *out);
+
 /* Reads the numbers of spec from rec's tokens, starting at token `first`,
  * into values, checking each against its kind; returns how many it read,
  * or -1 with the fault recorded at the number or the count at fault. */

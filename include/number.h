@@ -34,4 +34,12 @@ int number_word_is(const char *s, size_t len, const char *word);
  * and zero or a normal double; otherwise says what is wrong. */
 NumberStatus number_parse(const char *s, size_t len, double *out);
 
+enum { NUMBER_FORMAT_MAX = 32 }; /* room number_format() needs */
+
+/* Writes into buf (NUMBER_FORMAT_MAX bytes) the shortest decimal, in
+ * printf's %g form, that number_parse() reads back as exactly x (sign of
+ * zero included): at most 17 significant digits. x must be one that
+ * number_parse() accepts. Returns buf. */
+char *number_format(char *buf, double x);
+
 #endif

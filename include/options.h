@@ -19,12 +19,15 @@ typedef struct {
     int ascii;               /* 1: PPM as P3 */
     int png_stored;          /* 1: PNG with stored deflate blocks */
     int no_accel;            /* 1: no acceleration structure */
+    int scene_format;        /* a SceneFormat: --scene-format, else SCENE_AUTO */
+    const char *save_path;   /* --save OUT, or NULL */
 } Options;
 
 /* What options_parse() found the command line asks for. */
 typedef enum {
     OPTIONS_RENDER,  /* render scene_path to output_path */
     OPTIONS_CHECK,   /* only read scene_path (output_path is NULL) */
+    OPTIONS_SAVE,    /* read scene_path, write it to save_path */
     OPTIONS_HELP,    /* print the help text */
     OPTIONS_VERSION, /* print the version */
     OPTIONS_USAGE    /* a usage error, described in the message buffer */

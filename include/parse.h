@@ -15,13 +15,11 @@
 #include "error.h"
 #include "scene.h"
 
-/* Reads the scene file at path ("-": standard input) into *scene, which this
- * call initialises, ready to render (a tiny scene is enlarged exactly by
- * scene_fit_scale()); returns 0, or -1 with *err filled and *scene empty. */
-int parse_scene_file(const char *path, Scene *scene, Error *err);
-
-/* Same as parse_scene_file() for the len bytes at text (NUL bytes included),
- * naming the input `name` in errors. */
+/* Reads the len bytes at text (NUL bytes included), named `name` in errors
+ * and for relative texture and mesh paths, into *scene, which this call
+ * initialises, ready to render (a tiny scene is enlarged exactly by
+ * scene_fit_scale()); returns 0, or -1 with *err filled and *scene empty.
+ * load.h reads files, in either format. */
 int parse_scene_text(const char *name, const char *text, size_t len, Scene *scene, Error *err);
 
 #endif

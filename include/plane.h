@@ -15,6 +15,7 @@
 typedef struct {
     Vec3 point;        /* a point on the plane, scene units */
     Vec3 normal;       /* unit normal, pointing to the front */
+    Vec3 given;        /* the normal as given to plane_make(), any length */
     Vec3 axis_u;       /* unit vector in the plane: the texture's u direction */
     Vec3 axis_v;       /* normal x axis_u: the texture's v direction */
     double tile;       /* texture repeat, scene units per image, > 0 */

@@ -97,4 +97,11 @@ static inline Vec3 vec3_ldexp(Vec3 a, int k)
     return vec3(ldexp(a.x, k), ldexp(a.y, k), ldexp(a.z, k));
 }
 
+/* Returns the unit vector along a (non-zero), scaling a by a power of two
+ * first so that the squares of tiny or huge components stay in range. */
+static inline Vec3 vec3_direction(Vec3 a)
+{
+    return vec3_normalize(vec3_ldexp(a, vec3_unit_exponent(vec3_max_abs(a))));
+}
+
 #endif

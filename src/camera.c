@@ -65,13 +65,6 @@ Ray camera_ray(const Camera *cam, double x, double y)
     return ray;
 }
 
-/* Returns a scaled to unit length, scaling it by a power of two first so
- * that the squares of tiny components do not underflow; a must not be 0. */
-static Vec3 camera_unit(Vec3 a)
-{
-    return vec3_normalize(vec3_ldexp(a, vec3_unit_exponent(vec3_max_abs(a))));
-}
-
 CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,
                                int height)
 {
@@ -83,14 +76,14 @@ CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int 
         return CAMERA_VIEW_NO_DIRECTION;
     k = vec3_unit_exponent(vec3_max_abs(d));
     dist = ldexp(vec3_length(vec3_ldexp(d, k)), -k);
-    forward = camera_unit(d);
+    forward = vec3_direction(d);
     /* right = (0, 1, 0) x forward = (f.z, 0, -f.x), unless forward is
      * vertical: then up is +z looking down and -z looking up, which both
      * give right = +x. */
     if (forward.x == 0 && forward.z == 0)
         right = vec3(1, 0, 0);
     else
-        right = camera_unit(vec3(forward.z, 0, -forward.x));
+        right = vec3_direction(vec3(forward.z, 0, -forward.x));
     up = vec3_cross(forward, right);
     half_w = angle_tan(fov / 2) * dist;
     half_h = half_w * height / width;

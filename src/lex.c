@@ -129,10 +129,8 @@ int lex_next_record(Lexer *L, Record *rec)
     return rc;
 }
 
-/* Reads token k of rec, the number `index` of spec, into *out, checking the
- * range its kind allows; returns 0, or -1 with the fault recorded. */
-static int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int index,
-                      double *out)
+int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int index,
+               double *out)
 {
     const Token *t = &rec->tok[k];
     const char *what = spec->what, *name = spec->names[index];

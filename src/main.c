@@ -15,11 +15,13 @@
 
 #include "bvh.h"
 #include "error.h"
+#include "file.h"
 #include "image.h"
 #include "options.h"
 #include "outfile.h"
-#include "parse.h"
+#include "load.h"
 #include "render.h"
+#include "save.h"
 #include "scene.h"
 #include "writer.h"
 
@@ -181,7 +183,7 @@ static int main_check(const Options *opts)
     Scene scene;
     Error err;
 
-    if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
         main_report(&err);
         return 1;
     }
@@ -193,6 +195,46 @@ static int main_check(const Options *opts)
                scene.light_count == 1 ? "" : "s");
     scene_free(&scene);
     return 0;
+}
+
+/* Reads opts' scene and writes it to opts' save path in the keyword format;
+ * returns the exit status. */
+static int main_save(const Options *opts)
+{
+    Scene scene;
+    OutFile out;
+    Error err;
+
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (strcmp(opts->save_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
+        main_same_file(opts->scene_path, opts->save_path)) {
+        error_set(&err, opts->save_path, "the output is the scene file itself: refusing to "
+                                         "overwrite it");
+        goto fail;
+    }
+    if (main_open_output(&out, opts->save_path, &err) != 0)
+        goto fail;
+    if (save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
+                     &err) != 0) {
+        outfile_abort(&out);
+        main_temp_path = NULL;
+        goto fail;
+    }
+    if (outfile_commit(&out, &err) != 0) {
+        main_temp_path = NULL;
+        goto fail;
+    }
+    main_temp_path = NULL;
+    scene_free(&scene);
+    return 0;
+
+fail:
+    main_report(&err);
+    scene_free(&scene);
+    return 1;
 }
 
 /* Renders opts' scene to opts' output; returns the exit status. */
@@ -210,7 +252,7 @@ static int main_render(const Options *opts)
     Error err;
     int threads, tty = isatty(STDERR_FILENO);
 
-    if (parse_scene_file(opts->scene_path, &scene, &err) != 0) {
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
         main_report(&err);
         return 1;
     }
@@ -307,6 +349,8 @@ int main(int argc, char **argv)
         return main_usage(msg);
     case OPTIONS_CHECK:
         return main_check(&opts);
+    case OPTIONS_SAVE:
+        return main_save(&opts);
     case OPTIONS_RENDER:
         break;
     }

@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -85,3 +86,24 @@ NumberStatus number_parse(const char *s, size_t len, double *out)
     return NUMBER_OK;
 }
 
+
+char *number_format(char *buf, double x)
+{
+    const char *e;
+
+    for (int digits = 1; digits <= 17; digits++) {
+        double back;
+        snprintf(buf, NUMBER_FORMAT_MAX, "%.*g", digits, x);
+        if (number_parse(buf, strlen(buf), &back) == NUMBER_OK &&
+            memcmp(&back, &x, sizeof x) == 0)
+            break;
+    }
+    /* 1e+01 reads better as 10: the same digits, padded with zeros. */
+    e = strchr(buf, 'e');
+    if (e && e[1] == '+') {
+        int exponent = atoi(e + 2);
+        if (exponent < 17)
+            snprintf(buf, NUMBER_FORMAT_MAX, "%.*g", exponent + 1, x);
+    }
+    return buf;
+}

@@ -14,7 +14,9 @@ const char *options_help(void)
 {
     return "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
            "       raytrace --check SCENE\n"
-           "Render SCENE, a scene file in the course format, to OUTPUT: a PPM (P6),\n"
+           "       raytrace --save OUT SCENE\n"
+           "Render SCENE, a scene file in the course format or in seed 002's keyword\n"
+           "format (told apart by content), to OUTPUT: a PPM (P6),\n"
            "PNG or PFM image, chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM\n"
            "for any other) or by --format. SCENE may be '-' for standard input,\n"
            "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
@@ -33,6 +35,11 @@ const char *options_help(void)
            "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
            "                     default) or stored (no compression, faster)\n"
            "  --check            read SCENE, report any error, render nothing\n"
+           "  --save OUT         read SCENE, a keyword-format scene, and write it to OUT\n"
+           "                     in the keyword format, every number exact; render\n"
+           "                     nothing\n"
+           "  --scene-format F   read SCENE as F: course, keyword, or auto (the\n"
+           "                     default: keyword when its first element is a word)\n"
            "  --no-accel         test every ray against every object (no bounding\n"
            "                     volume hierarchy): slower, the same image\n"
            "  -v, --verbose      after rendering, print the image size, threads, rays\n"
@@ -159,8 +166,9 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     static const IntOption spp = {"--spp", "-s", 1, SAMPLER_MAX};
     static const char *const formats[] = {"ppm", "png", "pfm"};
     static const char *const deflates[] = {"stored", "fixed"};
+    static const char *const scene_formats[] = {"course", "keyword", "auto"};
     const char *positional[2];
-    int npos = 0, only_positional = 0, deflate = 1;
+    int npos = 0, only_positional = 0, deflate = 1, scene_format = 2;
 
     opts->scene_path = opts->output_path = NULL;
     opts->max_depth = 10;
@@ -172,6 +180,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->format = -1;
     opts->ascii = 0;
     opts->no_accel = 0;
+    opts->save_path = NULL;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -208,7 +217,11 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
                    (m = options_match_word("--format", formats, 3, argc, argv, &i,
                                            &opts->format, msg, msg_size)) != 0 ||
                    (m = options_match_word("--png-deflate", deflates, 2, argc, argv, &i,
-                                           &deflate, msg, msg_size)) != 0) {
+                                           &deflate, msg, msg_size)) != 0 ||
+                   (m = options_match_word("--scene-format", scene_formats, 3, argc, argv, &i,
+                                           &scene_format, msg, msg_size)) != 0 ||
+                   (m = options_match_value("--save", NULL, argc, argv, &i, &opts->save_path,
+                                            msg, msg_size)) != 0) {
             if (m < 0)
                 return OPTIONS_USAGE;
         } else {
@@ -217,15 +230,24 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         }
     }
     opts->png_stored = deflate == 0;
-    if (npos < (opts->check ? 1 : 2)) {
+    opts->scene_format = scene_format == 2 ? -1 : scene_format;
+    if (opts->check && opts->save_path) {
+        snprintf(msg, msg_size, "--check and --save cannot be combined");
+        return OPTIONS_USAGE;
+    }
+    if (opts->save_path && !*opts->save_path) {
+        snprintf(msg, msg_size, "--save needs a file name");
+        return OPTIONS_USAGE;
+    }
+    if (npos < (opts->check || opts->save_path ? 1 : 2)) {
         snprintf(msg, msg_size, npos == 0 ? "missing SCENE and OUTPUT" : "missing OUTPUT");
-        if (opts->check)
+        if (opts->check || opts->save_path)
             snprintf(msg, msg_size, "missing SCENE");
         return OPTIONS_USAGE;
     }
-    if (opts->check && npos > 1) {
-        snprintf(msg, msg_size, "--check takes only SCENE, found '%.40s' after it",
-                 positional[1]);
+    if ((opts->check || opts->save_path) && npos > 1) {
+        snprintf(msg, msg_size, "%s takes only SCENE, found '%.40s' after it",
+                 opts->check ? "--check" : "--save OUT", positional[1]);
         return OPTIONS_USAGE;
     }
     if (!*positional[0] || (npos > 1 && !*positional[1])) {
@@ -240,5 +262,5 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         snprintf(msg, msg_size, "--ascii applies to PPM output only");
         return OPTIONS_USAGE;
     }
-    return opts->check ? OPTIONS_CHECK : OPTIONS_RENDER;
+    return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;
 }

@@ -32,7 +32,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
 #include "lex.h"
 #include "number.h"
 #include "obj.h"
@@ -706,18 +705,4 @@ int parse_scene_text(const char *name, const char *text, size_t len, Scene *scen
     }
     scene_fit_scale(scene);
     return 0;
-}
-
-int parse_scene_file(const char *path, Scene *scene, Error *err)
-{
-    char *text;
-    size_t len;
-    int rc;
-
-    scene_init(scene);
-    if (file_read_all(path, &text, &len, err) != 0)
-        return -1;
-    rc = parse_scene_text(file_display_name(path), text, len, scene, err);
-    free(text);
-    return rc;
 }

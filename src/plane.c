@@ -23,6 +23,7 @@ Plane plane_make(Vec3 point, Vec3 n, double tile, Material m)
                                                               : vec3(0, 0, 1);
 
     pl.point = point;
+    pl.given = n;
     pl.normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
     pl.axis_u = vec3_normalize(vec3_cross(a, pl.normal));
     pl.axis_v = vec3_cross(pl.normal, pl.axis_u);

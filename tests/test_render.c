@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "camera.h"
+#include "load.h"
 #include "parse.h"
 #include "render.h"
 #include "test.h"
@@ -63,7 +64,7 @@ static void render_bytes_do_not_depend_on_threads(void)
     RenderOptions one = {10, 1, 1, NULL, NULL}, two = {10, 1, 2, NULL, NULL},
                   many = {10, 1, 7, NULL, NULL};
 
-    CHECK_INT(0, parse_scene_file("scenes/course.txt", &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
     CHECK_INT(0, image_init(&b, sc.camera.width, sc.camera.height));
     render(&sc, &one, &a, NULL);
