@@ -230,6 +230,51 @@ mesh_hash=$(grep ' scenes/mesh.txt$' "$T/golden" | cut -d' ' -f1)
 [ "$("$RT" --no-accel scenes/mesh.txt - | sha256sum | cut -d' ' -f1)" = "$mesh_hash" ] && pass ||
     fail "--no-accel changes scenes/mesh.txt"
 
+# --- seed 002's keyword format: detection, errors, --save ---
+expect_exit "keyword --check" 0 "$RT" --check scenes/keyword.txt
+expect_line "keyword --check report" 1 "scenes/keyword.txt: OK: 480 x 320 pixels, 1605 objects, 2 lights" "$T/out"
+printf 'camera 0 0 0 0 0 5 1 40 30\nmaterial m 255 0 0 1 1 1 1\nsphere 0 0 5 1 n\n' >"$T/kw-bad.txt"
+expect_exit "keyword error" 1 "$RT" "$T/kw-bad.txt" "$T/kw-bad.ppm"
+expect_grep "keyword error position" "kw-bad.txt:3:16: error: unknown material 'n': a material line must define it before the sphere" "$T/err"
+[ ! -e "$T/kw-bad.ppm" ] && pass || fail "a bad keyword scene left an output"
+expect_exit "--scene-format course on a keyword scene" 1 "$RT" --check --scene-format course scenes/seed002.txt
+expect_grep "--scene-format course message" "seed002.txt:5:1: error: expected a number for the camera position's x, found 'camera'" "$T/err"
+expect_exit "--scene-format keyword on a course scene" 1 "$RT" --check --scene-format keyword "$scene"
+expect_grep "--scene-format keyword message" "course.txt:6:1: error: expected an element such as 'sphere', found the number '100'" "$T/err"
+expect_exit "--scene-format bad" 2 "$RT" --check --scene-format pov "$scene"
+expect_grep "--scene-format bad message" "option '--scene-format' takes course, keyword or auto, found 'pov'" "$T/err"
+expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.ppm\" <scenes/seed002.txt"
+"$RT" scenes/seed002.txt "$T/seed.ppm" && cmp -s "$T/seed.ppm" "$T/stdin-kw.ppm" && pass ||
+    fail "a keyword scene reads the same from standard input"
+# --save: the saved scene renders the same bytes, and saves to the same text.
+mkdir "$T/elsewhere"
+for s in seed002 keyword; do
+    expect_exit "--save $s" 0 "$RT" --save "$T/elsewhere/$s.txt" "scenes/$s.txt"
+    expect_exit "--save $s again" 0 "$RT" --save "$T/elsewhere/$s-2.txt" "$T/elsewhere/$s.txt"
+    cmp -s "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt" && pass || fail "--save $s is not stable" "$(diff "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt")"
+    hash=$(grep " scenes/$s.txt\$" "$T/golden" | cut -d' ' -f1)
+    [ "$("$RT" "$T/elsewhere/$s.txt" - | sha256sum | cut -d' ' -f1)" = "$hash" ] && pass ||
+        fail "the saved $s renders differently" "$(cat "$T/elsewhere/$s.txt")"
+done
+expect_grep "--save writes the mesh's absolute path from elsewhere" "mesh $(pwd)/scenes/models/torus-smooth.obj gold" "$T/elsewhere/keyword.txt"
+expect_exit "--save beside the scene" 0 "$RT" --save scenes/.saved-by-cli.txt scenes/keyword.txt
+expect_grep "--save keeps a relative mesh path beside the scene" "mesh models/torus-smooth.obj gold" scenes/.saved-by-cli.txt
+rm -f scenes/.saved-by-cli.txt
+expect_exit "--save to standard output" 0 "$RT" --save - scenes/seed002.txt
+expect_line "--save output" 2 "camera 0 0 0 0 0 5 2.0943951 700 500" "$T/out"
+echo old >"$T/kept.txt"
+expect_exit "--save a course scene" 1 "$RT" --save "$T/kept.txt" "$scene"
+expect_grep "--save a course scene message" "course.txt: error: --save writes the keyword format, which cannot express a course-format scene" "$T/err"
+expect_grep "--save a course scene keeps the output" "old" "$T/kept.txt"
+expect_clean "--save a course scene leaves no temporary file" "$T"
+expect_exit "--save a bad scene" 1 "$RT" --save "$T/kept.txt" "$T/kw-bad.txt"
+expect_grep "--save a bad scene keeps the output" "old" "$T/kept.txt"
+expect_exit "--save into a missing directory" 1 "$RT" --save "$T/nowhere/x.txt" scenes/seed002.txt
+expect_exit "--save onto the scene itself" 1 "$RT" --save "$T/elsewhere/seed002.txt" "$T/elsewhere/seed002.txt"
+expect_exit "--save without SCENE" 2 "$RT" --save "$T/x.txt"
+expect_exit "--save with an OUTPUT too" 2 "$RT" --save "$T/x.txt" scenes/seed002.txt "$T/x.ppm"
+expect_exit "--save with --check" 2 "$RT" --check --save "$T/x.txt" scenes/seed002.txt
+
 # --- OBJ files written by other tools: Debian's assimp-testmodels ---
 models=/usr/share/assimp/models
 if [ -d "$models/OBJ" ]; then
