@@ -226,9 +226,11 @@ awk 'BEGIN {
 expect_exit "many objects, hierarchy" 0 "$RT" "$T/many.txt" "$T/many-bvh.ppm"
 expect_exit "many objects, every object" 0 "$RT" --no-accel "$T/many.txt" "$T/many-all.ppm"
 cmp -s "$T/many-bvh.ppm" "$T/many-all.ppm" && pass || fail "--no-accel changes the picture of 4,000 objects"
-mesh_hash=$(grep ' scenes/mesh.txt$' "$T/golden" | cut -d' ' -f1)
-[ "$("$RT" --no-accel scenes/mesh.txt - | sha256sum | cut -d' ' -f1)" = "$mesh_hash" ] && pass ||
-    fail "--no-accel changes scenes/mesh.txt"
+for s in mesh keyword; do
+    hash=$(grep " scenes/$s.txt\$" "$T/golden" | cut -d' ' -f1)
+    [ "$("$RT" --no-accel "scenes/$s.txt" - | sha256sum | cut -d' ' -f1)" = "$hash" ] && pass ||
+        fail "--no-accel changes scenes/$s.txt"
+done
 
 # --- seed 002's keyword format: detection, errors, --save ---
 expect_exit "keyword --check" 0 "$RT" --check scenes/keyword.txt

@@ -410,19 +410,25 @@ static void keyword_finds_many_materials_by_name(void)
     free(text);
 }
 
+/* The format load_detect() sees in the C string s. */
+static SceneFormat detect(const char *s)
+{
+    return load_detect(s, strlen(s));
+}
+
 static void keyword_formats_are_told_apart(void)
 {
-    CHECK_INT(SCENE_KEYWORD, load_detect(SEED, strlen(SEED)));
-    CHECK_INT(SCENE_KEYWORD, load_detect("\xEF\xBB\xBF# c\r\n\n  \tmaterial", 22));
-    CHECK_INT(SCENE_KEYWORD, load_detect("camra 1 2", 9)); /* a misspelt keyword */
-    CHECK_INT(SCENE_COURSE, load_detect("100 100 0\n", 10));
-    CHECK_INT(SCENE_COURSE, load_detect("# c\n-1 0 0\n", 11));
-    CHECK_INT(SCENE_COURSE, load_detect("nan 0 0\n", 8));
-    CHECK_INT(SCENE_COURSE, load_detect("Infinity 0 0\n", 13));
-    CHECK_INT(SCENE_COURSE, load_detect(".5 0 0\n", 7));
-    CHECK_INT(SCENE_COURSE, load_detect("", 0));
-    CHECK_INT(SCENE_COURSE, load_detect("# only a comment", 16));
-    CHECK_INT(SCENE_COURSE, load_detect("\x01", 1));
+    CHECK_INT(SCENE_KEYWORD, detect(SEED));
+    CHECK_INT(SCENE_KEYWORD, detect("\xEF\xBB\xBF# c\r\n\n  \tmaterial"));
+    CHECK_INT(SCENE_KEYWORD, detect("camra 1 2")); /* a misspelt keyword */
+    CHECK_INT(SCENE_COURSE, detect("100 100 0\n"));
+    CHECK_INT(SCENE_COURSE, detect("# c\n-1 0 0\n"));
+    CHECK_INT(SCENE_COURSE, detect("nan 0 0\n"));
+    CHECK_INT(SCENE_COURSE, detect("Infinity 0 0\n"));
+    CHECK_INT(SCENE_COURSE, detect(".5 0 0\n"));
+    CHECK_INT(SCENE_COURSE, detect(""));
+    CHECK_INT(SCENE_COURSE, detect("# only a comment"));
+    CHECK_INT(SCENE_COURSE, detect("\x01"));
 }
 
 static void keyword_numbers_print_shortest_and_read_back(void)
