@@ -29,6 +29,13 @@ typedef struct {
     Vec3 to_light;    /* a distant light: unit vector towards it */
 } Light;
 
+/* Returns the point light at position of colour c. */
+static inline Light light_point(Vec3 position, Colour c)
+{
+    Light light = {position, c, 0, 0, {0, 0, 0}};
+    return light;
+}
+
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
 typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD } SceneFormat;

@@ -207,10 +207,8 @@ static int parse_colour(Parser *P, const RecordSpec *spec, Record *rec, Colour *
 /* Appends the light of values v (x y z r g b) to the scene. */
 static int parse_add_light(Parser *P, const double *v, Scene *scene)
 {
-    Light light = {{0, 0, 0}, {0, 0, 0}, 0, 0, {0, 0, 0}};
+    Light light = light_point(vec3(v[0], v[1], v[2]), colour(v[3], v[4], v[5]));
 
-    light.position = vec3(v[0], v[1], v[2]);
-    light.colour = colour(v[3], v[4], v[5]);
     if (scene_add_light(scene, &light) != 0) {
         error_set(P->lex.err, P->lex.name, "out of memory after %zu lights", scene->light_count);
         return -1;

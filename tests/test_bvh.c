@@ -13,7 +13,7 @@
  * exact duplicates, for ties) around the origin at scale s, and a plane. */
 static void random_scene(Scene *sc, int n, double s)
 {
-    Light light = {{0, 10 * s, 0}, {255, 255, 255}};
+    Light light = light_point(vec3(0, 10 * s, 0), colour(255, 255, 255));
 
     scene_init(sc);
     CHECK_INT(0, scene_add_light(sc, &light));
@@ -120,7 +120,7 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
      * distances: the depth stays within the traversal stack. */
     Scene sc;
     Bvh bvh;
-    Light light = {{0, 10, 0}, {255, 255, 255}};
+    Light light = light_point(vec3(0, 10, 0), colour(255, 255, 255));
 
     scene_init(&sc);
     CHECK_INT(0, scene_add_light(&sc, &light));

@@ -555,7 +555,7 @@ static void keyword_saved_scene_reads_back_the_same(void)
      * element, materials with 0 to 3 optional numbers, one unused. */
     static const char *const texts[] = {
         SEED,
-        "camera 0.30000000000000004 -0 1e-300 0.1 0.7 123456789012345.67 2.0943951023931957 "
+        ("camera 0.30000000000000004 -0 1e-300 0.1 0.7 123456789012345.67 2.0943951023931957 "
         "640 480\n"
         "background 0.1 254.99999999999997 3\nambient 1e-5 2 3\n"
         "material a 255 0 0.5 0.1 0.2 0.30000000000000004 3.5\n"
@@ -568,10 +568,10 @@ static void keyword_saved_scene_reads_back_the_same(void)
         "sphere 1.0000000000000002 2 3 0.99999999999999989 a\n"
         "plane 0 -1e-9 0 0.1 1 1e-7 b\n"
         "triangle 0 0 5 1 0 5 0.33333333333333331 1 5 c\n"
-        "sphere -7e-200 4 5 1e-100 d\n",
+        "sphere -7e-200 4 5 1e-100 d\n"),
         /* A tiny scene, enlarged on reading: saved at its own scale. */
-        "camera 0 0 0 0 0 5e-30 1 8 8\nmaterial m 1 1 1 1 1 1 1\n"
-        "sphere 1e-31 0 5e-30 1e-30 m\nplane 0 -3e-30 0 0 1 0 m\nlight 0 -1 1 1 1 1 1\n",
+        ("camera 0 0 0 0 0 5e-30 1 8 8\nmaterial m 1 1 1 1 1 1 1\n"
+         "sphere 1e-31 0 5e-30 1e-30 m\nplane 0 -3e-30 0 0 1 0 m\nlight 0 -1 1 1 1 1 1\n"),
     };
 
     for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {

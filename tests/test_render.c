@@ -151,8 +151,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             sc.camera.v = vec3_sub(moved(base_bl, s, o), sc.camera.top_left);
             sc.camera.width = sc.camera.height = BASE_W;
             sc.background = base_bg;
-            light.position = moved(base_light, s, o);
-            light.colour = colour(255, 255, 255);
+            light = light_point(moved(base_light, s, o), colour(255, 255, 255));
             CHECK_INT(0, scene_add_light(&sc, &light));
             CHECK_INT(0, scene_add_sphere(&sc, &sp));
             CHECK_INT(0, image_init(&img, BASE_W, BASE_W));

@@ -10,7 +10,7 @@
 /* An empty scene: white light at `light`, background (10, 20, 30). */
 static Scene scene_lit_from(Vec3 light)
 {
-    Light white = {light, {255, 255, 255}};
+    Light white = light_point(light, colour(255, 255, 255));
     Scene sc;
 
     scene_init(&sc);
@@ -317,7 +317,7 @@ static void trace_ambient_and_lights_add_up(void)
     /* A point lit head-on by two lights of colours A and B, plus ambient
      * Ca: Ci (A + B + Ca) / 255, channel by channel, before clamping. */
     Scene sc = scene_lit_from(vec3(0, 0, 10));
-    Light second = {{0, 0, 20}, {100, 50, 0}};
+    Light second = light_point(vec3(0, 0, 20), colour(100, 50, 0));
 
     sc.lights[0].colour = colour(255, 100, 10);
     CHECK_INT(0, scene_add_light(&sc, &second));
