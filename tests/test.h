@@ -45,4 +45,11 @@ void test_check_int(const char *file, int line, const char *expr, long long expe
 void test_check_contains(const char *file, int line, const char *expr, const char *haystack,
                          const char *needle);
 
+/* Checks that err, an Error (error.h), is at line:column with exactly
+ * message; `what` names the case in the report. */
+#define CHECK_ERROR(what, err, line, column, message)                                          \
+    test_check_error(__FILE__, __LINE__, (what), (err), (line), (column), (message))
+void test_check_error(const char *file, int line, const char *what, const void *err,
+                      int want_line, int want_column, const char *want_message);
+
 #endif

@@ -372,12 +372,7 @@ static void keyword_rejects_bad_scenes_with_position(void)
             continue;
         }
         CHECK_INT(0, (long long)sc.sphere_count);
-        if (strcmp(err.message, b->message) != 0)
-            test_fail(__FILE__, __LINE__, "case %zu: expected message \"%s\", got \"%s\"", i,
-                      b->message, err.message);
-        if (err.line != b->line || err.column != b->column)
-            test_fail(__FILE__, __LINE__, "case %zu (%s): expected %d:%d, got %d:%d", i,
-                      b->message, b->line, b->column, err.line, err.column);
+        CHECK_ERROR(b->text, &err, b->line, b->column, b->message);
     }
 }
 

@@ -98,11 +98,8 @@ static void obj_faults_name_line_and_column(void)
             obj_free(&m);
             continue;
         }
-        if (strcmp(err.message, bad[i].message) != 0 || err.line != bad[i].line ||
-            err.column != bad[i].column || strcmp(err.file, "build/t.obj") != 0)
-            test_fail(__FILE__, __LINE__, "case %zu: expected %d:%d \"%s\", got %s:%d:%d \"%s\"",
-                      i, bad[i].line, bad[i].column, bad[i].message, err.file, err.line,
-                      err.column, err.message);
+        CHECK(strcmp(err.file, "build/t.obj") == 0);
+        CHECK_ERROR(bad[i].message, &err, bad[i].line, bad[i].column, bad[i].message);
     }
     {
         ObjMesh m;

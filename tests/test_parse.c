@@ -318,12 +318,7 @@ static void parse_rejects_bad_scenes_with_position(void)
         }
         CHECK_INT(0, (long long)sc.sphere_count);
         CHECK_CONTAINS(err.file, "t.txt");
-        if (strcmp(err.message, b->message) != 0)
-            test_fail(__FILE__, __LINE__, "case %zu: expected message \"%s\", got \"%s\"", i,
-                      b->message, err.message);
-        if (err.line != b->line || err.column != b->column)
-            test_fail(__FILE__, __LINE__, "case %zu (%s): expected %d:%d, got %d:%d", i,
-                      b->message, b->line, b->column, err.line, err.column);
+        CHECK_ERROR(b->text, &err, b->line, b->column, b->message);
     }
 }
 
@@ -378,9 +373,7 @@ static void parse_expect_fault(const char *text, int line, int column, const cha
         scene_free(&sc);
         return;
     }
-    if (strcmp(err.message, message) != 0 || err.line != line || err.column != column)
-        test_fail(__FILE__, __LINE__, "expected %d:%d \"%s\", got %d:%d \"%s\"", line, column,
-                  message, err.line, err.column, err.message);
+    CHECK_ERROR(text, &err, line, column, message);
 }
 
 static void parse_every_record_rejects_each_fault(void)

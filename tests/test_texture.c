@@ -163,11 +163,8 @@ static void texture_faults_are_positioned_in_the_scene(void)
             scene_free(&sc);
             continue;
         }
-        if (strcmp(err.message, bad[i].message) != 0 || err.line != bad[i].line ||
-            err.column != bad[i].column || strcmp(err.file, "build/t.txt") != 0)
-            test_fail(__FILE__, __LINE__, "case %zu: expected %d:%d \"%s\", got %s:%d:%d \"%s\"",
-                      i, bad[i].line, bad[i].column, bad[i].message, err.file, err.line,
-                      err.column, err.message);
+        CHECK(strcmp(err.file, "build/t.txt") == 0);
+        CHECK_ERROR(bad[i].message, &err, bad[i].line, bad[i].column, bad[i].message);
     }
 }
 

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "error.h"
 #include "test.h"
 
 extern const TestCase sphere_tests[], shape_tests[], parse_tests[], trace_tests[],
@@ -56,6 +57,17 @@ void test_check_contains(const char *file, int line, const char *expr, const cha
     if (!strstr(haystack, needle))
         test_fail(file, line, "%s: expected to contain \"%s\", got \"%s\"", expr, needle,
                   haystack);
+}
+
+void test_check_error(const char *file, int line, const char *what, const void *err,
+                      int want_line, int want_column, const char *want_message)
+{
+    const Error *e = err;
+
+    if (strcmp(e->message, want_message) != 0 || e->line != want_line ||
+        e->column != want_column)
+        test_fail(file, line, "%s: expected %d:%d \"%s\", got %d:%d \"%s\"", what, want_line,
+                  want_column, want_message, e->line, e->column, e->message);
 }
 
 /* Says whether name is selected by the filters in argv[1..argc-1]. */
