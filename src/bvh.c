@@ -315,53 +315,71 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* The ray, prepared for box tests: reciprocal directions (unused where a
- * component is 0). */
+
+/* The ray, prepared for box tests: reciprocal directions (+-inf for a zero
+ * component, by the sign of that zero) and which of them are negative. */
 typedef struct {
     double o[3], d[3], inv[3];
+    int neg[3];
 } BvhRay;
 
 static BvhRay bvh_ray(const Ray *r)
 {
-    BvhRay b = {{r->origin.x, r->origin.y, r->origin.z}, {r->dir.x, r->dir.y, r->dir.z}, {0, 0, 0}};
+    BvhRay b = {{r->origin.x, r->origin.y, r->origin.z}, {r->dir.x, r->dir.y, r->dir.z},
+                {0, 0, 0}, {0, 0, 0}};
 
-    for (int a = 0; a < 3; a++)
-        b.inv[a] = b.d[a] != 0 ? 1 / b.d[a] : 0;
+    for (int a = 0; a < 3; a++) {
+        b.inv[a] = 1 / b.d[a];
+        b.neg[a] = b.inv[a] < 0;
+    }
     return b;
 }
 
-/* Says whether the ray meets node's box at some t in [0, tmax] (the
- * interval widened by a few ulps, as pbrt does, so that rounding in the
- * slabs never loses a crossing). */
-static int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax)
+/* Rounding in the slab test: every computed slab distance is within a
+ * relative 3 ulps (gamma_3) of the true one, so widening the far ends by
+ * 1 + 8 ulps > 1 + 2 gamma_3 never loses a crossing (pbrt-v3, 3.9.2). */
+#define BVH_WIDEN (1 + 4 * DBL_EPSILON)
+
+/* Says whether the ray meets node's box at some t in [0, tmax]; if so,
+ * stores in *enter where it enters (to within rounding, never later than
+ * the true entry by more than BVH_WIDEN allows). The reciprocal directions
+ * are +-inf for a zero component: the products then are +-inf (outside the
+ * slab or inside it) or NaN (on its plane), which the comparisons ignore. */
+static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, double tmax,
+                                double *enter)
 {
-    const double widen = 1 + 4 * DBL_EPSILON;
-    double t0 = 0, t1 = tmax;
+    double t0 = 0, t1 = tmax * BVH_WIDEN;
 
     for (int a = 0; a < 3; a++) {
-        double ta, tb;
-        if (r->d[a] == 0) {
-            if (r->o[a] < node->lo[a] || r->o[a] > node->hi[a])
-                return 0;
-            continue;
-        }
-        ta = (node->lo[a] - r->o[a]) * r->inv[a];
-        tb = (node->hi[a] - r->o[a]) * r->inv[a];
-        if (ta > tb) {
-            double tmp = ta;
-            ta = tb;
-            tb = tmp;
-        }
-        tb *= widen;
-        ta = ta > 0 ? ta / widen : ta * widen;
-        if (ta > t0)
-            t0 = ta;
-        if (tb < t1)
-            t1 = tb;
-        if (!(t0 <= t1))
-            return 0;
+        double near = ((r->neg[a] ? node->hi[a] : node->lo[a]) - r->o[a]) * r->inv[a];
+        double far = ((r->neg[a] ? node->lo[a] : node->hi[a]) - r->o[a]) * r->inv[a];
+        far *= BVH_WIDEN;
+        if (near > t0)
+            t0 = near;
+        if (far < t1)
+            t1 = far;
     }
-    return 1;
+    *enter = t0;
+    return t0 <= t1;
+}
+
+/* bvh_box_enter() when the entry point is not needed. */
+static inline int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax)
+{
+    double enter;
+
+    return bvh_box_enter(node, r, tmax, &enter);
+}
+
+/* Returns the next double above x, a positive finite double. */
+static inline double bvh_next_up(double x)
+{
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);
+    bits++;
+    memcpy(&x, &bits, sizeof x);
+    return x;
 }
 
 /* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
@@ -382,48 +400,76 @@ static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
 int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax, BvhHit *hit)
 {
     BvhRay r = bvh_ray(ray);
-    uint32_t stack[BVH_STACK];
+    struct {
+        uint32_t id;  /* a node still to visit */
+        double enter; /* where the ray enters its box */
+    } stack[BVH_STACK];
     int top = 0, found = 0;
-    size_t id = 0;
+    uint32_t id = 0;
+    double enter, bound = tmax; /* primitives are tested below bound */
 
+    if (!bvh_box_enter(&bvh->nodes[0], &r, tmax, &enter))
+        return 0;
     for (;;) {
         const BvhNode *node = &bvh->nodes[id];
-        /* A box entered exactly at the best t may still hold an
-         * earlier-listed object at that t: keep it. */
-        double limit = found ? hit->t : tmax;
 
-        if (bvh_box_hit(node, &r, limit)) {
-            if (node->count > 0) {
-                for (uint32_t k = node->index; k < node->index + node->count; k++) {
-                    uint32_t ref = bvh->prims[k];
-                    double t, bound = found ? nextafter(hit->t, INFINITY) : tmax;
-                    unsigned order;
-                    if (!bvh_prim_hit(scene, ref, ray, 0, bound, &t))
-                        continue;
-                    order = bvh_prim_order(scene, ref);
-                    if (!found || t < hit->t || order < hit->order) {
-                        hit->t = t;
-                        hit->prim = ref;
-                        hit->order = order;
-                        found = 1;
-                    }
+        if (node->count > 0) {
+            for (uint32_t k = node->index; k < node->index + node->count; k++) {
+                uint32_t ref = bvh->prims[k];
+                double t;
+                unsigned order;
+                if (!bvh_prim_hit(scene, ref, ray, 0, bound, &t))
+                    continue;
+                order = bvh_prim_order(scene, ref);
+                if (!found || t < hit->t || order < hit->order) {
+                    hit->t = t;
+                    hit->prim = ref;
+                    hit->order = order;
+                    found = 1;
+                    /* An exact tie with an earlier-listed object must
+                     * still be seen: the bound is the next double up. */
+                    bound = bvh_next_up(t);
                 }
-            } else {
-                /* Visit the child on the ray's side of the split first. */
-                uint32_t near = (uint32_t)id + 1, far = node->index;
-                if (r.d[node->axis] < 0) {
-                    uint32_t tmp = near;
-                    near = far;
-                    far = tmp;
+            }
+        } else {
+            /* Both children's boxes; the nearer first, the other later
+             * unless a hit before its entry is found meanwhile. A box
+             * entered exactly at the best t may still hold an
+             * earlier-listed object at that t: the limit keeps it. */
+            uint32_t a = id + 1, b = node->index;
+            double ta, tb, limit = found ? hit->t : tmax;
+            int ha = bvh_box_enter(&bvh->nodes[a], &r, limit, &ta);
+            int hb = bvh_box_enter(&bvh->nodes[b], &r, limit, &tb);
+
+            if (ha && hb) {
+                if (tb < ta) {
+                    uint32_t tmp = a;
+                    double tt = ta;
+                    a = b;
+                    b = tmp;
+                    ta = tb;
+                    tb = tt;
                 }
-                stack[top++] = far;
-                id = near;
+                stack[top].id = b;
+                stack[top].enter = tb;
+                top++;
+                id = a;
+                continue;
+            }
+            if (ha || hb) {
+                id = ha ? a : b;
                 continue;
             }
         }
-        if (top == 0)
-            return found;
-        id = stack[--top];
+        /* The next stacked node the ray can still reach before its hit. */
+        for (;;) {
+            if (top == 0)
+                return found;
+            top--;
+            if (!found || stack[top].enter <= hit->t * BVH_WIDEN)
+                break;
+        }
+        id = stack[top].id;
     }
 }
 
