@@ -7,6 +7,8 @@
 # make install      install the commands and man pages under $(DESTDIR)$(PREFIX)
 #                   (PREFIX defaults to /usr/local); make uninstall removes them
 # make gallery      render every example scene to docs/gallery/*.png
+# make bench        measure speed on generated scenes; writes docs/benchmarks.md
+#                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 
@@ -53,7 +55,7 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
 
-.PHONY: all test check clean install uninstall gallery
+.PHONY: all test check clean install uninstall gallery bench
 
 all: raytrace raytrace-diff
 
@@ -95,6 +97,14 @@ gallery: $(GALLERY)
 docs/gallery/%.png: scenes/%.txt raytrace
 	@mkdir -p $(@D)
 	./raytrace -q $< $@
+
+# The benchmark (not a test): generated scenes, medians, docs/benchmarks.md.
+$(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/bench/scenegen.c $(RT_LDLIBS) $(LDLIBS)
+
+bench: raytrace raytrace-diff $(BUILD)/scenegen
+	sh tests/bench/bench.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
 
 check: test
 

@@ -9,6 +9,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -160,7 +161,17 @@ static void main_progress(void *ctx, int rows_done, int rows_total)
             frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
 }
 
-/* Prints the -v summary: size, threads, rays by kind, time, speed. */
+/* Returns the process's peak resident memory in bytes (0 if unknown). */
+static double main_peak_memory(void)
+{
+    struct rusage ru;
+
+    /* Linux reports ru_maxrss in kilobytes. */
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
+}
+
+/* Prints the -v summary: size, threads, rays by kind, time, speed, peak
+ * memory. */
 static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
                             const RayCounts *c, double seconds)
 {
@@ -175,6 +186,7 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, int th
             c->primary, c->shadow, c->reflection, c->refraction, all);
     fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
             seconds > 0 ? all / seconds / 1e6 : 0.0);
+    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);
 }
 
 /* Reads opts' scene, reports it and renders nothing; returns the exit status. */
@@ -305,6 +317,7 @@ static int main_render(const Options *opts)
         goto fail_image;
     main_temp_path = NULL;
     if (opts->verbose) {
+        fprintf(stderr, "raytrace: read the scene in %.3f s\n", accel_start - start);
         if (scene.accel)
             fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
                             "%.3f s\n",
