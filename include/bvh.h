@@ -28,7 +28,7 @@ enum {
 #define BVH_TRIANGLE 0x80000000u
 
 typedef struct {
-    double lo[3], hi[3]; /* the box */
+    double box[6];       /* the box: lo x y z, then hi x y z */
     uint32_t index;      /* interior: the right child (the left is the next
                             node); leaf: the first of its primitives */
     uint16_t count;      /* primitives in a leaf; 0 for an interior node */

@@ -145,6 +145,57 @@ typedef struct {
     size_t parent;    /* that parent */
 } BuildTask;
 
+/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
+static int bvh_bin(const BuildPrim *p, int axis, double lo, double scale)
+{
+    int b = (int)((bvh_centroid(p, axis) - lo) * scale);
+
+    return b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
+}
+
+/* The surface area heuristic's best split of prims[start..end) into the
+ * centroid bins of one axis: the cost (traversal 1, intersection 1 a
+ * primitive, areas relative to bounds), and the first bin of the right
+ * part (-1 when no split leaves both parts non-empty). */
+static double bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const Box *bounds,
+                           int axis, double lo, double scale, int *split)
+{
+    size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
+    Box bin[BVH_BINS], left[BVH_BINS], acc;
+    double best = INFINITY;
+
+    *split = -1;
+    for (int b = 0; b < BVH_BINS; b++)
+        box_empty(&bin[b]);
+    for (size_t i = start; i < end; i++) {
+        int b = bvh_bin(&prims[i], axis, lo, scale);
+        count[b]++;
+        box_grow(&bin[b], &prims[i].box);
+    }
+    box_empty(&acc);
+    for (int b = 0, total = 0; b < BVH_BINS; b++) {
+        box_grow(&acc, &bin[b]);
+        total += (int)count[b];
+        left[b] = acc;
+        left_n[b] = (size_t)total;
+    }
+    box_empty(&acc);
+    for (int b = BVH_BINS - 1; b > 0; b--) {
+        double cost;
+        box_grow(&acc, &bin[b]);
+        if (left_n[b - 1] == 0 || left_n[b - 1] == n)
+            continue;
+        cost = 1 + (box_half_area(&left[b - 1]) * (double)left_n[b - 1] +
+                    box_half_area(&acc) * (double)(n - left_n[b - 1])) /
+                       box_half_area(bounds);
+        if (cost < best) {
+            best = cost;
+            *split = b;
+        }
+    }
+    return best;
+}
+
 /* Chooses how to split prims[start..end) (count > BVH_LEAF_MAX or SAH says
  * so); returns the index of the first primitive of the right part, or
  * start when it is better left a leaf. Sets *axis. */
@@ -153,7 +204,8 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
 {
     size_t n = end - start, mid;
     Box cb;
-    double extent[3];
+    double extent[3], scale[3], best = INFINITY;
+    int best_split = -1;
 
     box_empty(&cb);
     for (size_t i = start; i < end; i++) {
@@ -161,8 +213,10 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
                        bvh_centroid(&prims[i], 2)};
         box_grow_point(&cb, c);
     }
-    for (int a = 0; a < 3; a++)
+    for (int a = 0; a < 3; a++) {
         extent[a] = cb.hi[a] - cb.lo[a];
+        scale[a] = BVH_BINS / extent[a];
+    }
     *axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
     if (!(extent[*axis] > 0)) {
         /* All centroids at one point: split by count if the leaf is too big. */
@@ -175,66 +229,40 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         bvh_select(prims, start, end, mid, *axis);
         return mid;
     }
-    {
-        size_t count[BVH_BINS] = {0}, left_n[BVH_BINS];
-        Box bin[BVH_BINS], left[BVH_BINS], acc;
-        double scale = BVH_BINS / extent[*axis], best = INFINITY, leaf_cost = (double)n;
-        int best_split = -1;
-
-        for (int b = 0; b < BVH_BINS; b++)
-            box_empty(&bin[b]);
-        for (size_t i = start; i < end; i++) {
-            int b = (int)((bvh_centroid(&prims[i], *axis) - cb.lo[*axis]) * scale);
-            b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
-            count[b]++;
-            box_grow(&bin[b], &prims[i].box);
+    /* Every axis with some extent: the cheapest split wins. */
+    for (int a = 0; a < 3; a++) {
+        int split;
+        double cost;
+        if (!(extent[a] > 0))
+            continue;
+        cost = bvh_sah_axis(prims, start, end, bounds, a, cb.lo[a], scale[a], &split);
+        if (split >= 0 && cost < best) {
+            best = cost;
+            best_split = split;
+            *axis = a;
         }
-        box_empty(&acc);
-        for (int b = 0, total = 0; b < BVH_BINS; b++) {
-            box_grow(&acc, &bin[b]);
-            total += (int)count[b];
-            left[b] = acc;
-            left_n[b] = (size_t)total;
-        }
-        box_empty(&acc);
-        for (int b = BVH_BINS - 1; b > 0; b--) {
-            double cost;
-            box_grow(&acc, &bin[b]);
-            if (left_n[b - 1] == 0 || left_n[b - 1] == n)
-                continue;
-            /* SAH: traversal cost 1, intersection cost 1 a primitive. */
-            cost = 1 + (box_half_area(&left[b - 1]) * (double)left_n[b - 1] +
-                        box_half_area(&acc) * (double)(n - left_n[b - 1])) /
-                           box_half_area(bounds);
-            if (cost < best) {
-                best = cost;
-                best_split = b;
-            }
-        }
-        if (best_split < 0 || (best >= leaf_cost && n <= BVH_LEAF_MAX))
-            return n <= BVH_LEAF_MAX ? start : start + n / 2;
-        /* Partition by bin. */
-        {
-            size_t i = start, j = end;
-            while (i < j) {
-                int b = (int)((bvh_centroid(&prims[i], *axis) - cb.lo[*axis]) * scale);
-                b = b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
-                if (b < best_split) {
-                    i++;
-                } else {
-                    BuildPrim tmp = prims[i];
-                    prims[i] = prims[--j];
-                    prims[j] = tmp;
-                }
-            }
-            mid = i;
-        }
-        if (mid == start || mid == end) { /* cannot happen, but never loop */
-            mid = start + n / 2;
-            bvh_select(prims, start, end, mid, *axis);
-        }
-        return mid;
     }
+    if (best_split < 0 || (best >= (double)n && n <= BVH_LEAF_MAX))
+        return n <= BVH_LEAF_MAX ? start : start + n / 2;
+    /* Partition by bin. */
+    {
+        size_t i = start, j = end;
+        while (i < j) {
+            if (bvh_bin(&prims[i], *axis, cb.lo[*axis], scale[*axis]) < best_split) {
+                i++;
+            } else {
+                BuildPrim tmp = prims[i];
+                prims[i] = prims[--j];
+                prims[j] = tmp;
+            }
+        }
+        mid = i;
+    }
+    if (mid == start || mid == end) { /* cannot happen, but never loop */
+        mid = start + n / 2;
+        bvh_select(prims, start, end, mid, *axis);
+    }
+    return mid;
 }
 
 int bvh_build(Bvh *bvh, const Scene *scene)
@@ -275,8 +303,8 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         box_empty(&bounds);
         for (size_t i = task.start; i < task.end; i++)
             box_grow(&bounds, &prims[i].box);
-        memcpy(node->lo, bounds.lo, sizeof node->lo);
-        memcpy(node->hi, bounds.hi, sizeof node->hi);
+        memcpy(node->box, bounds.lo, sizeof bounds.lo);
+        memcpy(node->box + 3, bounds.hi, sizeof bounds.hi);
         if (task.depth > bvh->depth)
             bvh->depth = task.depth;
         split = task.end - task.start <= 1
@@ -317,20 +345,25 @@ void bvh_free(Bvh *bvh)
 
 
 /* The ray, prepared for box tests: reciprocal directions (+-inf for a zero
- * component, by the sign of that zero) and which of them are negative. */
+ * component, by the sign of that zero), and for each axis which end of a
+ * node's box (an offset into BvhNode.box: lo or hi) the ray meets first. */
 typedef struct {
-    double o[3], d[3], inv[3];
-    int neg[3];
+    double o[3], inv[3];
+    int near[3], far[3]; /* offsets into a node's {lo[3], hi[3]}: a, or 3 + a */
 } BvhRay;
 
 static BvhRay bvh_ray(const Ray *r)
 {
-    BvhRay b = {{r->origin.x, r->origin.y, r->origin.z}, {r->dir.x, r->dir.y, r->dir.z},
-                {0, 0, 0}, {0, 0, 0}};
+    BvhRay b;
+    double d[3] = {r->dir.x, r->dir.y, r->dir.z};
 
+    b.o[0] = r->origin.x;
+    b.o[1] = r->origin.y;
+    b.o[2] = r->origin.z;
     for (int a = 0; a < 3; a++) {
-        b.inv[a] = 1 / b.d[a];
-        b.neg[a] = b.inv[a] < 0;
+        b.inv[a] = 1 / d[a];
+        b.near[a] = b.inv[a] < 0 ? 3 + a : a;
+        b.far[a] = b.inv[a] < 0 ? a : 3 + a;
     }
     return b;
 }
@@ -348,17 +381,21 @@ static BvhRay bvh_ray(const Ray *r)
 static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, double tmax,
                                 double *enter)
 {
+    const double *b = node->box;
     double t0 = 0, t1 = tmax * BVH_WIDEN;
+    double nx = (b[r->near[0]] - r->o[0]) * r->inv[0], fx = (b[r->far[0]] - r->o[0]) * r->inv[0];
+    double ny = (b[r->near[1]] - r->o[1]) * r->inv[1], fy = (b[r->far[1]] - r->o[1]) * r->inv[1];
+    double nz = (b[r->near[2]] - r->o[2]) * r->inv[2], fz = (b[r->far[2]] - r->o[2]) * r->inv[2];
 
-    for (int a = 0; a < 3; a++) {
-        double near = ((r->neg[a] ? node->hi[a] : node->lo[a]) - r->o[a]) * r->inv[a];
-        double far = ((r->neg[a] ? node->lo[a] : node->hi[a]) - r->o[a]) * r->inv[a];
-        far *= BVH_WIDEN;
-        if (near > t0)
-            t0 = near;
-        if (far < t1)
-            t1 = far;
-    }
+    fx *= BVH_WIDEN;
+    fy *= BVH_WIDEN;
+    fz *= BVH_WIDEN;
+    t0 = nx > t0 ? nx : t0;
+    t0 = ny > t0 ? ny : t0;
+    t0 = nz > t0 ? nz : t0;
+    t1 = fx < t1 ? fx : t1;
+    t1 = fy < t1 ? fy : t1;
+    t1 = fz < t1 ? fz : t1;
     *enter = t0;
     return t0 <= t1;
 }

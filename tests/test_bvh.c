@@ -74,8 +74,8 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
                 lo = vec3_sub(s->centre, r);
                 hi = vec3_add(s->centre, r);
             }
-            if (lo.x < n->lo[0] || lo.y < n->lo[1] || lo.z < n->lo[2] || hi.x > n->hi[0] ||
-                hi.y > n->hi[1] || hi.z > n->hi[2])
+            if (lo.x < n->box[0] || lo.y < n->box[1] || lo.z < n->box[2] || hi.x > n->box[3] ||
+                hi.y > n->box[4] || hi.z > n->box[5])
                 (*bad)++;
         }
         return;
@@ -84,7 +84,7 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
         size_t child = c == 0 ? id + 1 : n->index;
         const BvhNode *k = &bvh->nodes[child];
         for (int a = 0; a < 3; a++)
-            if (k->lo[a] < n->lo[a] || k->hi[a] > n->hi[a])
+            if (k->box[a] < n->box[a] || k->box[3 + a] > n->box[3 + a])
                 (*bad)++;
         check_subtree(bvh, sc, child, depth + 1, seen, bad);
     }
