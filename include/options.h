@@ -6,6 +6,8 @@
 
 #include <stddef.h>
 
+#define OPTIONS_DEFAULT_CUTOFF 0.001 /* levels */
+
 typedef struct {
     const char *scene_path;  /* scene file, "-" for standard input */
     const char *output_path; /* image file, "-" for standard output */
@@ -21,6 +23,8 @@ typedef struct {
     int no_accel;            /* 1: no acceleration structure */
     int scene_format;        /* a SceneFormat: --scene-format, else SCENE_AUTO */
     const char *save_path;   /* --save OUT, or NULL */
+    double cutoff;           /* --cutoff: levels below which secondary rays
+                                are left out (render.h) */
 } Options;
 
 /* What options_parse() found the command line asks for. */

@@ -40,6 +40,8 @@ typedef struct {
     unsigned long long shadow;     /* towards a light */
     unsigned long long reflection; /* mirror rays */
     unsigned long long refraction; /* refracted rays */
+    unsigned long long cut;        /* secondary rays the cut-off left out */
+    unsigned long long retraced;   /* pixels traced again without it */
 } RayCounts;
 
 typedef struct {
@@ -61,6 +63,35 @@ int trace_occluded(const Scene *scene, const Ray *ray, double tmax);
 /* Returns the share of light that passes along the ray from t = 0 to tmax:
  * the product of the transparency T of every surface crossing there. */
 double trace_transmittance(const Scene *scene, const Ray *ray, double tmax);
+
+/* How much of a pixel's ray tree may be left out, and what was: a
+ * secondary ray whose weight (the product of the mirror and transparency
+ * weights down to it) times the most any ray at its depth can see falls
+ * below `cutoff` levels is not traced. */
+typedef struct {
+    double cutoff;    /* levels; 0 traces every ray */
+    double base;      /* the most a ray with no levels left below it can see */
+    double per_level; /* and what each level left below adds to that */
+    double skipped;   /* sum of weight x bound over the rays left out: the
+                         most the colour lacks because of them */
+    unsigned long long cuts; /* rays left out */
+} TraceCut;
+
+/* Sets up *cut for scene with the given cutoff (levels, >= 0), the bounds
+ * proved in trace.c, nothing skipped yet. */
+void trace_cut_init(TraceCut *cut, const struct Scene *scene, double cutoff);
+
+/* The most a ray with `levels` levels of secondary rays left below it can
+ * see, in any channel. */
+static inline double trace_cut_bound(const TraceCut *cut, int levels)
+{
+    return cut->base + levels * cut->per_level;
+}
+
+/* trace_ray() for a primary ray, leaving out the rays *cut allows and adding
+ * what they could have brought to cut->skipped. */
+Colour trace_ray_cut(const Scene *scene, const Ray *ray, int max_depth, TraceCut *cut,
+                     RayCounts *counts);
 
 /* Returns the colour seen along ray, a ray of depth `depth` (0 for primary
  * rays), tracing mirror and refracted rays down to max_depth; adds the

@@ -184,6 +184,10 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, int th
             "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
             "%llu in all\n",
             c->primary, c->shadow, c->reflection, c->refraction, all);
+    if (ropts->cutoff > 0)
+        fprintf(stderr,
+                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels traced again\n",
+                ropts->cutoff, c->cut, c->retraced);
     fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
             seconds > 0 ? all / seconds / 1e6 : 0.0);
     fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);
@@ -252,11 +256,11 @@ fail:
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    RenderOptions ropts = {opts->max_depth, 1, opts->threads, NULL, NULL};
+    RenderOptions ropts = {opts->max_depth, 1, opts->cutoff, opts->threads, NULL, NULL};
     WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
                            opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
     MainProgress progress = {0, 0, 0};
-    RayCounts counts = {0, 0, 0, 0};
+    RayCounts counts = {0, 0, 0, 0, 0, 0};
     double start = main_now(), render_start, render_time, accel_start, accel_time;
     Scene scene;
     Image img;

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "number.h"
 #include "sampler.h"
 #include "writer.h"
 #include "trace.h"
@@ -28,6 +29,10 @@ const char *options_help(void)
            "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
            "                     (anti-aliasing; a lens: record blurs with them);\n"
            "                     default: the scene's samples: record, else 1\n"
+           "  --cutoff L         leave out mirror and refracted rays that could add\n"
+           "                     less than L levels (0 to 255, default 0.001) to a\n"
+           "                     pixel; pixels near a rounding boundary are traced\n"
+           "                     again in full, so the bytes never change (0: off)\n"
            "  -j, --threads N    render with N threads, 1 to 1024 (default: one per\n"
            "                     processor; ignored in builds without OpenMP)\n"
            "  --format F         write F: ppm, png or pfm (linear floats, unclamped)\n"
@@ -110,6 +115,27 @@ static int options_match_value(const char *long_name, const char *short_name, in
     return 1;
 }
 
+/* If argv[*i] is the option long_name, reads its value, a decimal number
+ * from lo to hi, into *out and returns 1 (or -1 on a bad value, with msg
+ * set); returns 0 when argv[*i] is another argument. */
+static int options_match_real(const char *long_name, double lo, double hi, int argc, char **argv,
+                              int *i, double *out, char *msg, size_t msg_size)
+{
+    const char *value;
+    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
+    double v;
+
+    if (m <= 0)
+        return m;
+    if (number_parse(value, strlen(value), &v) != NUMBER_OK || !(v >= lo && v <= hi)) {
+        snprintf(msg, msg_size, "option '%s' takes a number from %g to %g, found '%.40s'",
+                 long_name, lo, hi, value);
+        return -1;
+    }
+    *out = v;
+    return 1;
+}
+
 /* If argv[*i] is opt, reads its value into *out and returns 1 (or -1 on a
  * bad value, with msg set); returns 0 when argv[*i] is another argument. */
 static int options_match_int(const IntOption *opt, int argc, char **argv, int *i, int *out,
@@ -181,6 +207,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->ascii = 0;
     opts->no_accel = 0;
     opts->save_path = NULL;
+    opts->cutoff = OPTIONS_DEFAULT_CUTOFF;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -221,7 +248,9 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
                    (m = options_match_word("--scene-format", scene_formats, 3, argc, argv, &i,
                                            &scene_format, msg, msg_size)) != 0 ||
                    (m = options_match_value("--save", NULL, argc, argv, &i, &opts->save_path,
-                                            msg, msg_size)) != 0) {
+                                            msg, msg_size)) != 0 ||
+                   (m = options_match_real("--cutoff", 0, 255, argc, argv, &i, &opts->cutoff,
+                                           msg, msg_size)) != 0) {
             if (m < 0)
                 return OPTIONS_USAGE;
         } else {

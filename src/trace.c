@@ -343,20 +343,51 @@ static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, Ve
     return c;
 }
 
-/* Returns weight times the colour seen along the ray leaving sh in
- * direction dir, at depth `depth`. */
+/* The colour along a ray of depth `depth`, reached with `weight` (the
+ * product of the mirror and transparency weights from the primary ray),
+ * leaving out the secondary rays cut may skip (cut NULL: none). */
+static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_depth,
+                         double weight, TraceCut *cut, RayCounts *counts);
+
+/* Returns share times the colour seen along the ray leaving sh in direction
+ * dir at depth `depth`, reached with weight times share, or 0 when cut
+ * allows leaving it out: its colour is at most the bound for its depth, so
+ * the pixel lacks at most weight x share x bound of it, which cut->skipped
+ * adds up (see render.c for how the pixel's bytes stay exact). */
 static inline Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
-                                     double weight, int depth, int max_depth, RayCounts *counts)
+                                     double share, int depth, int max_depth, double weight,
+                                     TraceCut *cut, RayCounts *counts)
 {
     Ray r;
 
+    weight *= share;
+    if (cut) {
+        double most = weight * trace_cut_bound(cut, max_depth - depth);
+        if (most < cut->cutoff) {
+            cut->skipped += most;
+            cut->cuts++;
+            return colour(0, 0, 0);
+        }
+    }
     r.dir = dir;
     r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
-    return colour_scale(trace_ray(scene, &r, depth, max_depth, counts), weight);
+    return colour_scale(trace_path(scene, &r, depth, max_depth, weight, cut, counts), share);
 }
 
 Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
                  RayCounts *counts)
+{
+    return trace_path(scene, ray, depth, max_depth, 1, NULL, counts);
+}
+
+Colour trace_ray_cut(const Scene *scene, const Ray *ray, int max_depth, TraceCut *cut,
+                     RayCounts *counts)
+{
+    return trace_path(scene, ray, 0, max_depth, 1, cut, counts);
+}
+
+static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_depth,
+                         double weight, TraceCut *cut, RayCounts *counts)
 {
     Hit hit;
     Shade sh;
@@ -393,7 +424,7 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
         if (ray_refract(ray->dir, ns, eta, &bent)) {
             counts->refraction++;
             c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth,
-                                              counts));
+                                              weight, cut, counts));
         } else {
             r += t; /* total internal reflection: the share T is mirrored */
         }
@@ -401,7 +432,46 @@ Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
     if (r > 0) {
         counts->reflection++;
         c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, ns), r,
-                                          depth + 1, max_depth, counts));
+                                          depth + 1, max_depth, weight, cut, counts));
     }
     return c;
+}
+
+/* The largest channel of c. */
+static double trace_max_channel(Colour c)
+{
+    return fmax(c.r, fmax(c.g, c.b));
+}
+
+void trace_cut_init(TraceCut *cut, const Scene *scene, double cutoff)
+{
+    double lights = 0, local = 0, bg = trace_max_channel(scene->background);
+
+    cut->cutoff = cutoff;
+    cut->skipped = 0;
+    cut->cuts = 0;
+    for (size_t i = 0; i < scene->light_count; i++)
+        lights += trace_max_channel(scene->lights[i].colour) *
+                  (scene->phong_count > 0 ? scene->lights[i].intensity : 1);
+    if (scene->phong_count == 0) {
+        /* The course's rule: local <= Ca + sum of Cs (Ci <= 255, cos <= 1,
+         * E <= 1), and C = (1 - R - T) local + R Cr + T Ct is a mean of
+         * local, Cr and Ct (weights >= 0 adding to 1; on total internal
+         * reflection too), so no ray sees more than max(background,
+         * local) at any depth. */
+        local = (scene->has_ambient ? trace_max_channel(scene->ambient) : 0) + lights;
+        cut->base = fmax(bg, local);
+        cut->per_level = 0;
+        return;
+    }
+    /* Blinn-Phong: local <= ka Ia + sum of i (kd + ks) Cs, and C = local +
+     * rho Cr + tau Ct with rho + tau <= 1: a ray that may still spawn k
+     * levels of secondary rays sees at most max(background, local) +
+     * k local. */
+    for (size_t i = 0; i < scene->phong_count; i++) {
+        const PhongMaterial *m = &scene->phong[i];
+        local = fmax(local, m->ka * trace_max_channel(scene->ambient) + (m->kd + m->ks) * lights);
+    }
+    cut->base = fmax(bg, local);
+    cut->per_level = local;
 }

@@ -125,6 +125,10 @@ while read -r hash file opts; do
     "$RT" $opts "$file" "$T/golden.ppm" 2>"$T/err"
     got=$(sha256sum <"$T/golden.ppm" | cut -d' ' -f1)
     [ "$got" = "$hash" ] && pass || fail "golden render of $file $opts changed: $got" "$(cat "$T/err")"
+    # The cut-off (on by default) changes no byte: the same render without it.
+    # shellcheck disable=SC2086
+    got=$("$RT" --cutoff 0 $opts "$file" - 2>"$T/err" | sha256sum | cut -d' ' -f1)
+    [ "$got" = "$hash" ] && pass || fail "$file $opts renders other bytes with --cutoff 0: $got" "$(cat "$T/err")"
     # The README's gallery shows these very pixels.
     if [ -z "$opts" ]; then
         picture=docs/gallery/$(basename "$file" .txt).png
@@ -136,6 +140,16 @@ done <"$T/golden"
 for file in scenes/*.txt; do
     grep -q " $file\$" "$T/golden" && pass || fail "$file has no golden hash in tests/golden.sha256"
 done
+
+# --- the cut-off keeps every byte at depth 30, where it leaves out most ---
+for s in keyword mesh; do
+    "$RT" -d 30 --cutoff 0 "scenes/$s.txt" "$T/cut0.ppm" &&
+        "$RT" -v -d 30 --cutoff 0.5 "scenes/$s.txt" "$T/cut.ppm" 2>"$T/err" &&
+        cmp -s "$T/cut0.ppm" "$T/cut.ppm" && pass || fail "--cutoff 0.5 changes scenes/$s.txt at depth 30"
+    expect_grep "--cutoff statistics" "pixels traced again" "$T/err"
+done
+expect_exit "--cutoff bad" 2 "$RT" --cutoff -1 "$scene" "$T/x.ppm"
+expect_grep "--cutoff bad message" "option '--cutoff' takes a number from 0 to 255, found '-1'" "$T/err"
 
 # --- output formats hold the same pixels ---
 expect_exit "png by extension" 0 "$RT" "$scene" "$T/course.png"

@@ -150,7 +150,7 @@ static void keyword_camera_looks_at_its_target(void)
 static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int depth)
 {
     Ray r = {o, vec3_normalize(d)};
-    RayCounts counts = {0, 0, 0, 0};
+    RayCounts counts = {0, 0, 0, 0, 0, 0};
 
     return trace_ray(sc, &r, 0, depth, &counts);
 }

@@ -9,6 +9,8 @@
 #include "load.h"
 #include "parse.h"
 #include "render.h"
+#include "rng.h"
+#include "trace.h"
 #include "test.h"
 
 static Camera camera_square(void)
@@ -61,8 +63,8 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 1, NULL, NULL}, two = {10, 1, 2, NULL, NULL},
-                  many = {10, 1, 7, NULL, NULL};
+    RenderOptions one = {10, 1, 0, 1, NULL, NULL}, two = {10, 1, 0, 2, NULL, NULL},
+                  many = {10, 1, 0, 7, NULL, NULL};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -139,7 +141,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             Scene sc;
             Sphere sp = {moved(base_centre, s, o), base_radius * s,
                          material_plain(base_colour, base_refl), 0};
-            RenderOptions opts = {10, 1, 2, NULL, NULL};
+            RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -207,7 +209,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 2, NULL, NULL};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
     Scene sc;
     Error err;
     int e;
@@ -255,7 +257,7 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, threads, NULL, NULL};
+    RenderOptions opts = {10, samples, 0, threads, NULL, NULL};
     Scene sc;
     Error err;
 
@@ -405,7 +407,106 @@ static void render_tiny_scenes_with_every_shape_exactly(void)
     image_free(&ref);
 }
 
+/* A scene of glass and mirror balls in a mirror box: long ray trees. */
+static const char render_cut_course[] =
+    "0 0 -9\n-1 1 -8\n1 1 -8\n-1 -1 -8\n16\n30 40 50\n4 6 -6 230 220 200\n"
+    "light: -5 3 -4 60 80 120\nambient: 10 10 10\n"
+    "sphere: 0 0 0 1.5 255 255 255 0.1 0.85 1.5\nsphere: 2 1 1 1 200 60 60 0.6\n"
+    "sphere: -2 -1 1 1 60 200 60 0.3 0.6 1.33\nsphere: 0 -102 0 100 200 200 200 0.5\n"
+    "plane: 0 0 6 0 0 -1 180 180 255 0.9\n";
+
+static const char render_cut_keyword[] =
+    "camera 0 1 -9 0 0 0 1 16 16\nbackground 30 40 50\n"
+    "material glass 255 255 255 0 0 0.9 300 0.05 1.5\n"
+    "material mirror 240 240 240 0.1 0.2 0.8 100 0.85\n"
+    "material red 220 50 40 0.4 0.8 0.6 20 0.2\n"
+    "light -1 -2 1 255 250 240 1\nlight 2 -1 0.5 100 120 200 0.6\n"
+    "sphere 0 0 0 1.5 glass\nsphere 2 1 1 1 mirror\nsphere -2 -1 1 1 red\n"
+    "plane 0 -1.5 0 0 1 0 mirror\nplane 0 0 6 0 0 -1 red\n";
+
+/* The colour a cut-off leaves out of a ray is at least 0 and at most what
+ * it adds up in skipped (to within rounding): the bound render.c relies on
+ * to keep the bytes exact. Many rays, an aggressive cut-off, both rules. */
+static void render_cutoff_leaves_out_no_more_than_it_counts(void)
+{
+    const char *texts[] = {render_cut_course, render_cut_keyword};
+    int bad = 0, cuts = 0;
+
+    for (int s = 0; s < 2; s++) {
+        Scene sc;
+        Error err;
+
+        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, &sc, &err));
+        for (int i = 0; i < 4000; i++) {
+            Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
+                       vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
+            RayCounts counts = {0, 0, 0, 0, 0, 0};
+            TraceCut cut;
+            Colour full = trace_ray(&sc, &ray, 0, 30, &counts), part;
+            double eta;
+
+            trace_cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
+            part = trace_ray_cut(&sc, &ray, 30, &cut, &counts);
+            eta = 1e-9 * trace_cut_bound(&cut, 30);
+            cuts += cut.cuts > 0;
+            bad += !(full.r - part.r >= -eta && full.r - part.r <= cut.skipped + eta);
+            bad += !(full.g - part.g >= -eta && full.g - part.g <= cut.skipped + eta);
+            bad += !(full.b - part.b >= -eta && full.b - part.b <= cut.skipped + eta);
+        }
+        scene_free(&sc);
+    }
+    CHECK_INT(0, bad);
+    if (cuts < 1000) /* the cut-off must have left rays out */
+        test_fail(__FILE__, __LINE__, "only %d rays of 8000 had rays left out", cuts);
+}
+
+/* Renders text with max_depth and cutoff; returns the image (free it). */
+static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
+                                RayCounts *counts)
+{
+    Scene sc;
+    Error err;
+    Image img;
+    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL};
+
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, &sc, &err));
+    CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
+    render(&sc, &opts, &img, counts);
+    scene_free(&sc);
+    return img;
+}
+
+/* Whatever the cut-off, the bytes are those of the render without it; a
+ * large one makes pixels be traced again, a small one leaves rays out. */
+static void render_cutoff_keeps_every_byte(void)
+{
+    const char *texts[] = {render_cut_course, render_cut_keyword};
+    static const double cutoffs[] = {1e-6, 1e-3, 0.5, 50};
+    unsigned long long cut = 0, retraced = 0;
+
+    for (int s = 0; s < 2; s++) {
+        RayCounts none = {0, 0, 0, 0, 0, 0};
+        Image exact = render_with_cutoff(texts[s], 25, 0, &none);
+
+        CHECK(none.cut == 0 && none.retraced == 0);
+        for (int k = 0; k < 4; k++) {
+            RayCounts c = {0, 0, 0, 0, 0, 0};
+            Image img = render_with_cutoff(texts[s], 25, cutoffs[k], &c);
+            CHECK(memcmp(exact.rgb, img.rgb, image_size(img.width, img.height)) == 0);
+            cut += c.cut;
+            retraced += c.retraced;
+            image_free(&img);
+        }
+        image_free(&exact);
+    }
+    CHECK(cut > 0);
+    CHECK(retraced > 0);
+}
+
 const TestCase render_tests[] = {
+    {"render_cutoff_leaves_out_no_more_than_it_counts",
+     render_cutoff_leaves_out_no_more_than_it_counts},
+    {"render_cutoff_keeps_every_byte", render_cutoff_keeps_every_byte},
     {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},
     {"render_pixel_centres_map_to_the_screen", render_pixel_centres_map_to_the_screen},
     {"render_sheared_screen", render_sheared_screen},

@@ -36,7 +36,7 @@ static void add_sphere(Scene *sc, Vec3 c, double r, Colour col, double refl)
 static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int max_depth)
 {
     Ray r = {o, vec3_normalize(d)};
-    RayCounts counts = {0, 0, 0, 0};
+    RayCounts counts = {0, 0, 0, 0, 0, 0};
     return trace_ray(sc, &r, 0, max_depth, &counts);
 }
 
