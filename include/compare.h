@@ -36,6 +36,7 @@ typedef struct {
     double rms_error;    /* root mean square of a - b */
     double psnr;         /* 20 log10(255 / rms_error), dB; infinite when equal */
     size_t over;         /* pixels with some channel more than tolerance apart */
+    size_t channels_over; /* channels more than tolerance apart */
     size_t pixels;       /* pixels compared */
 } Comparison;
 

@@ -127,6 +127,7 @@ Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance
                 c.max_channel = ch;
             }
             over |= d > tolerance;
+            c.channels_over += d > tolerance;
         }
         c.over += over;
     }

@@ -191,6 +191,9 @@ int main(int argc, char **argv)
         printf("over tolerance %g: %zu of %zu pixels (%.4f%%), at most %.0f allowed: %s\n",
                tolerance, c.over, c.pixels, c.pixels ? 100.0 * (double)c.over / (double)c.pixels : 0,
                max_pixels, status == 0 ? "same" : "DIFFERENT");
+        printf("channels over tolerance %g: %zu of %zu (%.4f%%)\n", tolerance, c.channels_over,
+               3 * c.pixels,
+               c.pixels ? 100.0 * (double)c.channels_over / (3.0 * (double)c.pixels) : 0);
     }
     if (diff_path && diff_write_image(diff_path, &a, &b, tolerance) != 0)
         status = 2;
