@@ -9,6 +9,8 @@
 # make gallery      render every example scene to docs/gallery/*.png
 # make bench        measure speed on generated scenes; writes docs/benchmarks.md
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
+# make trade        measure error against time for every speed/accuracy knob;
+#                   writes docs/trade.md and docs/trade-*.svg
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 
@@ -55,7 +57,7 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
 
-.PHONY: all test check clean install uninstall gallery bench
+.PHONY: all test check clean install uninstall gallery bench trade
 
 all: raytrace raytrace-diff
 
@@ -105,6 +107,10 @@ $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 
 bench: raytrace raytrace-diff $(BUILD)/scenegen
 	sh tests/bench/bench.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
+
+# The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
+trade: raytrace raytrace-diff
+	sh tests/bench/trade.sh ./raytrace ./raytrace-diff
 
 check: test
 

@@ -67,6 +67,43 @@ for s in $ONLY; do
     [ "$ALL" -gt 1 ] && measure "$s" "$ALL"
 done
 
+# Scaling: time against sphere count (one image size) and against image
+# size (one field), all threads, median of RUNS.
+: >"$DIR/scale"
+if [ "${BENCH_SCALING:-1}" = 1 ]; then
+    for n in 10 100 1000 10000 100000 1000000; do
+        f="$DIR/scale-$n.txt"
+        [ -s "$f" ] || "$GEN" spheres "$n" | sed '6s/^1920$/480/' >"$f"
+        : >"$DIR/times"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            "$RT" -v -j "$ALL" "$f" "$DIR/scale.ppm" 2>"$DIR/log" || exit 1
+            sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
+            i=$((i + 1))
+        done
+        read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log")
+        build=$(sed -n 's/.*built in \([0-9.]*\) s/\1/p' "$DIR/log")
+        printf '| spheres | %s | 480 x 270 | %s s | %s s | %s s |\n' "$n" "${read_s:-0}" \
+            "${build:-0}" "$(median <"$DIR/times")" >>"$DIR/scale"
+        echo "bench: scaling, $n spheres" >&2
+    done
+    scene spheres-1000
+    for w in 480 960 1920 3840; do
+        f="$DIR/scale-w$w.txt"
+        sed "6s/^1920\$/$w/" "$DIR/spheres-1000.txt" >"$f"
+        : >"$DIR/times"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            "$RT" -v -j "$ALL" "$f" "$DIR/scale.ppm" 2>"$DIR/log" || exit 1
+            sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
+            i=$((i + 1))
+        done
+        size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
+        printf '| image size | 1000 | %s | | | %s s |\n' "$size" "$(median <"$DIR/times")" >>"$DIR/scale"
+        echo "bench: scaling, width $w" >&2
+    done
+fi
+
 # POV-Ray on the sphere fields, alternating with raytrace run for run.
 : >"$DIR/pov"
 if command -v povray >/dev/null 2>&1; then
@@ -124,6 +161,19 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "| scene | pixels | threads | rays | wall time | Mrays/s | peak memory |"
     echo "|-------|--------|---------|------|-----------|---------|-------------|"
     cat "$DIR/rows"
+    if [ -s "$DIR/scale" ]; then
+        echo
+        echo "## Scaling"
+        echo
+        echo "Render time alone (median of $RUNS, $ALL threads) as the sphere count"
+        echo "grows (the same field generator, 480 × 270) and as the image grows (the"
+        echo "1,000-sphere field); reading the scene and building the hierarchy"
+        echo "are shown apart. Depth: see docs/trade.md."
+        echo
+        echo "| varies | spheres | pixels | read | build | render |"
+        echo "|--------|---------|--------|------|-------|--------|"
+        cat "$DIR/scale"
+    fi
     if [ -s "$DIR/pov" ]; then
         echo
         echo "## Against POV-Ray 3.7"

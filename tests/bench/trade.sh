@@ -1,0 +1,167 @@
+#!/bin/sh
+# trade.sh: the speed/accuracy trade of every knob, measured (`make trade`).
+#
+# For samples per pixel (1 to 256, against 1024), the maximum depth (0 to
+# 20, against 50) and the cut-off (against no cut-off), it renders example
+# scenes, times them (median of TRADE_RUNS, default 3) and measures the
+# error: on the 8-bit output, the share of channels that differ and the
+# largest difference; on the linear PFM, the root mean square difference
+# (in 8-bit levels). Writes docs/trade.md and its plots docs/trade-*.svg.
+#
+# Usage: sh tests/bench/trade.sh RAYTRACE RAYTRACE-DIFF [OUT.md]
+
+RT=$1
+DIFF=$2
+OUT=${3:-docs/trade.md}
+RUNS=${TRADE_RUNS:-3}
+DIR=build/trade
+PLOT=tests/bench/plot.awk
+DOCS=$(dirname "$OUT")
+mkdir -p "$DIR" || exit 2
+
+now() { date +%s%N; }
+median() { sort -n | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+# resize SCENE WIDTH: the course scene with its resolution (the fifth
+# record) set to WIDTH; the scene's directory is kept for its textures.
+resize() {
+    awk -v w="$2" '{ line = $0; sub(/#.*/, "", line) }
+        line ~ /[^ \t]/ { if (++n == 5) { print w; next } } { print }' "$1"
+}
+
+# timed NAME OPTIONS...: renders to $DIR/NAME.ppm RUNS times and prints the
+# median wall time in seconds; also renders $DIR/NAME.pfm once unless
+# pfm=0.
+timed() {
+    name=$1
+    shift
+    : >"$DIR/times"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        start=$(now)
+        "$RT" -q "$@" "$DIR/$name.ppm" || exit 1
+        end=$(now)
+        echo $(((end - start) / 1000000)) >>"$DIR/times"
+        i=$((i + 1))
+    done
+    [ "${pfm:-1}" = 0 ] || "$RT" -q "$@" "$DIR/$name.pfm" || exit 1
+    echo "$(median <"$DIR/times") / 1000" | bc -l
+}
+
+# error REF NAME: "channels% max rmse" of $DIR/NAME against $DIR/REF.
+error() {
+    "$DIFF" "$DIR/$1.ppm" "$DIR/$2.ppm" >"$DIR/d8" 2>&1
+    "$DIFF" "$DIR/$1.pfm" "$DIR/$2.pfm" >"$DIR/df" 2>&1
+    pct=$(sed -n 's/^channels over tolerance 0: [0-9]* of [0-9]* (\(.*\)%)$/\1/p' "$DIR/d8")
+    max=$(sed -n 's/^max error: \([0-9.e+-]*\).*/\1/p' "$DIR/d8")
+    rms=$(sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p' "$DIR/df")
+    echo "$pct $max $rms"
+}
+
+# --- samples per pixel: glass.txt at 240 pixels wide ---
+resize scenes/glass.txt 240 >scenes/.trade-glass.txt
+trap 'rm -f scenes/.trade-glass.txt' EXIT
+scene=scenes/.trade-glass.txt
+echo "trade: samples per pixel" >&2
+timed spp-ref --spp 1024 "$scene" >/dev/null
+: >"$DIR/spp.rows"
+: >"$DIR/spp.plot"
+for n in 1 2 4 8 16 32 64 128 256; do
+    t=$(timed "spp-$n" --spp "$n" "$scene")
+    set -- $(error spp-ref "spp-$n")
+    printf '| %d | %.3f s | %s%% | %s | %s |\n' "$n" "$t" "$1" "$2" "$3" >>"$DIR/spp.rows"
+    echo "RMSE $t $3 $n" >>"$DIR/spp.plot"
+done
+awk -v title="Samples per pixel: error against time (glass.txt, 240 x 160)" \
+    -v xlabel="render time, s" -v ylabel="RMSE against 1024 samples, levels" -v logx=1 -v logy=1 \
+    -f "$PLOT" "$DIR/spp.plot" >"$DOCS/trade-spp.svg"
+
+# --- maximum depth: facing mirrors and a ring of mirror balls ---
+echo "trade: maximum depth" >&2
+: >"$DIR/depth.rows"
+: >"$DIR/depth.plot"
+for s in corridor mirrors; do
+    timed "$s-d50" --cutoff 0 -d 50 "scenes/$s.txt" >/dev/null
+    for d in 0 1 2 3 4 5 6 8 10 12 15 20; do
+        t=$(timed "$s-d$d" --cutoff 0 -d "$d" "scenes/$s.txt")
+        set -- $(error "$s-d50" "$s-d$d")
+        printf '| %s | %d | %.3f s | %s%% | %s | %s |\n' "$s" "$d" "$t" "$1" "$2" "$3" >>"$DIR/depth.rows"
+        echo "$s $t $3 $d" >>"$DIR/depth.plot"
+    done
+done
+awk -v title="Maximum depth: error against time" -v xlabel="render time, s" \
+    -v ylabel="RMSE against depth 50, levels" -v logy=1 \
+    -f "$PLOT" "$DIR/depth.plot" >"$DOCS/trade-depth.svg"
+
+# --- the cut-off: time only, the bytes never change ---
+echo "trade: cut-off" >&2
+pfm=0
+: >"$DIR/cut.rows"
+: >"$DIR/cut.plot"
+for s in glass keyword; do
+    for d in 10 30; do
+        for c in 0 0.000001 0.0001 0.001 0.01 0.1 1; do
+            t=$(timed "$s-c" --cutoff "$c" -d "$d" "scenes/$s.txt")
+            [ "$c" = 0 ] && cp "$DIR/$s-c.ppm" "$DIR/$s-c0.ppm"
+            cmp -s "$DIR/$s-c0.ppm" "$DIR/$s-c.ppm" && same=yes || same=NO
+            "$RT" -v --cutoff "$c" -d "$d" "scenes/$s.txt" "$DIR/$s-v.ppm" 2>"$DIR/v"
+            left=$(sed -n 's/.*: \([0-9]*\) rays left out.*/\1/p' "$DIR/v")
+            again=$(sed -n 's/.*, \([0-9]*\) pixels traced again/\1/p' "$DIR/v")
+            printf '| %s | %d | %s | %.3f s | %s | %s | %s |\n' "$s" "$d" "$c" "$t" "${left:-0}" \
+                "${again:-0}" "$same" >>"$DIR/cut.rows"
+            [ "$c" = 0 ] || echo "$s-depth-$d $c $t" >>"$DIR/cut.plot"
+        done
+    done
+done
+awk -v title="Cut-off: render time (the bytes never change)" -v xlabel="cut-off, levels" \
+    -v ylabel="render time, s" -v logx=1 -v logy=1 -f "$PLOT" "$DIR/cut.plot" >"$DOCS/trade-cutoff.svg"
+
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -1)
+{
+    echo "# The speed/accuracy trade, measured"
+    echo
+    echo "Written by \`make trade\` (tests/bench/trade.sh) on $(date -u +%Y-%m-%d), on"
+    echo "${cpu:-an unknown CPU} with $(nproc) thread(s); times are medians of $RUNS runs of the"
+    echo "whole command, all threads. Error on the 8-bit output: the share of"
+    echo "channels that differ from the reference and the largest difference; on"
+    echo "the linear PFM output (colours before clamping and rounding): the root"
+    echo "mean square difference, in 8-bit levels."
+    echo
+    echo "## Samples per pixel"
+    echo
+    echo "scenes/glass.txt at 240 × 160 (glass, a mirror, a checker texture:"
+    echo "edges, refraction and texture aliasing), against 1024 samples per pixel."
+    echo
+    echo "![samples per pixel](trade-spp.svg)"
+    echo
+    echo "| samples | time | channels that differ | largest difference | RMSE (linear) |"
+    echo "|---------|------|----------------------|--------------------|---------------|"
+    cat "$DIR/spp.rows"
+    echo
+    echo "## Maximum depth"
+    echo
+    echo "scenes/corridor.txt (two facing mirrors) and scenes/mirrors.txt (a ring"
+    echo "of mirror balls), against depth 50, with \`--cutoff 0\` so that the"
+    echo "time is the depth's alone."
+    echo
+    echo "![maximum depth](trade-depth.svg)"
+    echo
+    echo "| scene | depth | time | channels that differ | largest difference | RMSE (linear) |"
+    echo "|-------|-------|------|----------------------|--------------------|---------------|"
+    cat "$DIR/depth.rows"
+    echo
+    echo "## The cut-off"
+    echo
+    echo "\`--cutoff L\` leaves out rays that could add less than L levels, and"
+    echo "traces again in full the pixels it cannot prove unchanged"
+    echo "(docs/design.md), so the error is always 0: the last column checks"
+    echo "that the bytes equal the render without the cut-off. What it trades is"
+    echo "time: rays left out against pixels traced twice."
+    echo
+    echo "![cut-off](trade-cutoff.svg)"
+    echo
+    echo "| scene | depth | cut-off | time | rays left out | pixels traced again | same bytes |"
+    echo "|-------|-------|---------|------|---------------|---------------------|------------|"
+    cat "$DIR/cut.rows"
+} >"$OUT"
+echo "trade: wrote $OUT" >&2
