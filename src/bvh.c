@@ -11,7 +11,8 @@
 enum {
     BVH_BINS = 16,        /* centroid bins per split */
     BVH_SAH_DEPTH = 48,   /* below this depth, splits halve the count */
-    BVH_STACK = 128       /* traversal stack: BVH_SAH_DEPTH + 32 + margin */
+    BVH_STACK = 128,      /* traversal stack: BVH_SAH_DEPTH + 32 + margin */
+    BVH_ALL_AXES = 4096   /* at most this many primitives: SAH on every axis */
 };
 
 /* A box, as lo and hi corners. */
@@ -27,19 +28,21 @@ static void box_empty(Box *b)
     }
 }
 
-static void box_grow(Box *b, const Box *c)
+/* Boxes never hold NaN (they come from finite coordinates), so plain
+ * comparisons do what fmin() and fmax() would, without a call. */
+static inline void box_grow(Box *b, const Box *c)
 {
     for (int a = 0; a < 3; a++) {
-        b->lo[a] = fmin(b->lo[a], c->lo[a]);
-        b->hi[a] = fmax(b->hi[a], c->hi[a]);
+        b->lo[a] = c->lo[a] < b->lo[a] ? c->lo[a] : b->lo[a];
+        b->hi[a] = c->hi[a] > b->hi[a] ? c->hi[a] : b->hi[a];
     }
 }
 
-static void box_grow_point(Box *b, const double p[3])
+static inline void box_grow_point(Box *b, const double p[3])
 {
     for (int a = 0; a < 3; a++) {
-        b->lo[a] = fmin(b->lo[a], p[a]);
-        b->hi[a] = fmax(b->hi[a], p[a]);
+        b->lo[a] = p[a] < b->lo[a] ? p[a] : b->lo[a];
+        b->hi[a] = p[a] > b->hi[a] ? p[a] : b->hi[a];
     }
 }
 
@@ -229,11 +232,13 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         bvh_select(prims, start, end, mid, *axis);
         return mid;
     }
-    /* Every axis with some extent: the cheapest split wins. */
+    /* Every axis with some extent: the cheapest split wins. Above
+     * BVH_ALL_AXES primitives only the longest is binned: near the root,
+     * where binning costs the most, it is nearly always the best. */
     for (int a = 0; a < 3; a++) {
         int split;
         double cost;
-        if (!(extent[a] > 0))
+        if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != *axis))
             continue;
         cost = bvh_sah_axis(prims, start, end, bounds, a, cb.lo[a], scale[a], &split);
         if (split >= 0 && cost < best) {
