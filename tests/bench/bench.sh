@@ -67,6 +67,19 @@ for s in $ONLY; do
     [ "$ALL" -gt 1 ] && measure "$s" "$ALL"
 done
 
+# render_time SCENE: renders RUNS times on all threads; sets render to the
+# median render time (seconds, from -v) and leaves the last -v log.
+render_time() {
+    : >"$DIR/times"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        "$RT" -v -j "$ALL" "$1" "$DIR/scale.ppm" 2>"$DIR/log" || exit 1
+        sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
+        i=$((i + 1))
+    done
+    render=$(median <"$DIR/times")
+}
+
 # Scaling: time against sphere count (one image size) and against image
 # size (one field), all threads, median of RUNS.
 : >"$DIR/scale"
@@ -74,32 +87,20 @@ if [ "${BENCH_SCALING:-1}" = 1 ]; then
     for n in 10 100 1000 10000 100000 1000000; do
         f="$DIR/scale-$n.txt"
         [ -s "$f" ] || "$GEN" spheres "$n" | sed '6s/^1920$/480/' >"$f"
-        : >"$DIR/times"
-        i=0
-        while [ $i -lt "$RUNS" ]; do
-            "$RT" -v -j "$ALL" "$f" "$DIR/scale.ppm" 2>"$DIR/log" || exit 1
-            sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
-            i=$((i + 1))
-        done
+        render_time "$f"
         read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log")
         build=$(sed -n 's/.*built in \([0-9.]*\) s/\1/p' "$DIR/log")
         printf '| spheres | %s | 480 x 270 | %s s | %s s | %s s |\n' "$n" "${read_s:-0}" \
-            "${build:-0}" "$(median <"$DIR/times")" >>"$DIR/scale"
+            "${build:-0}" "$render" >>"$DIR/scale"
         echo "bench: scaling, $n spheres" >&2
     done
     scene spheres-1000
     for w in 480 960 1920 3840; do
         f="$DIR/scale-w$w.txt"
         sed "6s/^1920\$/$w/" "$DIR/spheres-1000.txt" >"$f"
-        : >"$DIR/times"
-        i=0
-        while [ $i -lt "$RUNS" ]; do
-            "$RT" -v -j "$ALL" "$f" "$DIR/scale.ppm" 2>"$DIR/log" || exit 1
-            sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
-            i=$((i + 1))
-        done
+        render_time "$f"
         size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
-        printf '| image size | 1000 | %s | | | %s s |\n' "$size" "$(median <"$DIR/times")" >>"$DIR/scale"
+        printf '| image size | 1000 | %s | | | %s s |\n' "$size" "$render" >>"$DIR/scale"
         echo "bench: scaling, width $w" >&2
     done
 fi
