@@ -220,6 +220,7 @@ static int main_save(const Options *opts)
     Scene scene;
     OutFile out;
     Error err;
+    int rc;
 
     if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
         main_report(&err);
@@ -233,17 +234,15 @@ static int main_save(const Options *opts)
     }
     if (main_open_output(&out, opts->save_path, &err) != 0)
         goto fail;
-    if (save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
-                     &err) != 0) {
+    rc = save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
+                      &err);
+    if (rc != 0)
         outfile_abort(&out);
-        main_temp_path = NULL;
-        goto fail;
-    }
-    if (outfile_commit(&out, &err) != 0) {
-        main_temp_path = NULL;
-        goto fail;
-    }
+    else
+        rc = outfile_commit(&out, &err);
     main_temp_path = NULL;
+    if (rc != 0)
+        goto fail;
     scene_free(&scene);
     return 0;
 
