@@ -1,6 +1,7 @@
 /*
  * trace.h: following one ray through a scene: nearest hit, shadows and the
- * course's recursive shading, extended with its bonus features.
+ * course's recursive shading, extended with its bonus features, and seed
+ * 002's Blinn-Phong shading.
  *
  * The colour seen along a ray that hits an object at point P is
  *     C = (1 - R - T) * local + R * Cr + T * Ct
@@ -18,7 +19,10 @@
  * total internal reflection the share T follows the mirror ray too. A ray
  * that hits nothing sees the background. The primary ray has depth 0; a
  * mirror or refracted ray of depth k is traced only when k <= max_depth,
- * otherwise it contributes 0. Functions here only read the scene and write
+ * otherwise it contributes 0. A material with a Blinn-Phong entry (the
+ * keyword format) is shaded instead by Whitted's sum C = local + R Cr + T Ct
+ * with the Blinn-Phong local term of docs/scene-format.md, lit by distant
+ * lights whose shadow rays are unbounded. Functions here only read the scene and write
  * the counters they are given: safe to call from many threads at once, each
  * with its own counters.
  */
