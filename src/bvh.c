@@ -413,17 +413,6 @@ static inline int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax)
     return bvh_box_enter(node, r, tmax, &enter);
 }
 
-/* Returns the next double above x, a positive finite double. */
-static inline double bvh_next_up(double x)
-{
-    uint64_t bits;
-
-    memcpy(&bits, &x, sizeof bits);
-    bits++;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
 /* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
 static int bvh_prim_hit(const Scene *scene, uint32_t ref, const Ray *ray, double tmin, double tmax,
                         double *t)
@@ -470,7 +459,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
                     found = 1;
                     /* An exact tie with an earlier-listed object must
                      * still be seen: the bound is the next double up. */
-                    bound = bvh_next_up(t);
+                    bound = ray_next(t, 1);
                 }
             }
         } else {

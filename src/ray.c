@@ -1,26 +1,13 @@
 /* ray.c: where secondary rays start (see ray.h). */
 #include "ray.h"
 
-#include <float.h>
 #include <math.h>
-#include <stdint.h>
-#include <string.h>
 
 /* Moves x, a finite double, one representable double in the direction of
- * the sign of step: nextafter(), on the bits (the same result, no call). */
+ * the sign of step (not at all for 0 or NaN). */
 static inline double ray_nudge(double x, double step)
 {
-    uint64_t bits;
-
-    if (step == 0 || !(step == step))
-        return x;
-    if (x == 0)
-        return step > 0 ? DBL_TRUE_MIN : -DBL_TRUE_MIN;
-    memcpy(&bits, &x, sizeof bits);
-    /* Away from zero adds one to the magnitude's bits, towards it takes one. */
-    bits += (x > 0) == (step > 0) ? 1 : (uint64_t)-1;
-    memcpy(&x, &bits, sizeof x);
-    return x;
+    return step == 0 || !(step == step) ? x : ray_next(x, step > 0);
 }
 
 Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)

@@ -30,7 +30,7 @@ static int trace_nearest_planes(const Scene *scene, const Ray *ray, double tmax,
 {
     /* An exact tie with an earlier-listed object must be seen: the bound is
      * the next double above the best t. */
-    double bound = found ? nextafter(hit->t, INFINITY) : tmax;
+    double bound = found ? ray_next(hit->t, 1) : tmax;
 
     for (size_t k = 0; k < scene->plane_count; k++) {
         const Plane *pl = &scene->planes[k];
@@ -38,7 +38,7 @@ static int trace_nearest_planes(const Scene *scene, const Ray *ray, double tmax,
         if (plane_intersect(pl, ray, 0, bound, &t) && trace_beats(hit, found, t, pl->order)) {
             trace_set_hit(hit, t, SHAPE_PLANE, k, pl->order);
             found = 1;
-            bound = nextafter(t, INFINITY);
+            bound = ray_next(t, 1);
         }
     }
     return found;
@@ -48,7 +48,7 @@ static int trace_nearest_planes(const Scene *scene, const Ray *ray, double tmax,
 static int trace_nearest_triangles(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
                                    int found)
 {
-    double bound = found ? nextafter(hit->t, INFINITY) : tmax;
+    double bound = found ? ray_next(hit->t, 1) : tmax;
 
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
@@ -57,7 +57,7 @@ static int trace_nearest_triangles(const Scene *scene, const Ray *ray, double tm
             trace_beats(hit, found, t, tri->order)) {
             trace_set_hit(hit, t, SHAPE_TRIANGLE, k, tri->order);
             found = 1;
-            bound = nextafter(t, INFINITY);
+            bound = ray_next(t, 1);
         }
     }
     return found;

@@ -120,7 +120,11 @@ static void keyword_camera_looks_at_its_target(void)
         /* The middle of the left edge is fov / 2 away, horizontally. */
         left = ray_through(&cam, 0, 150);
         CHECK_NEAR(cos(fov / 2), vec3_dot(left, f), 1e-15);
-        CHECK_NEAR(0, left.y - f.y * vec3_dot(left, f) - 0, fabs(f.y) + 1e-15);
+        /* ... and in the plane of forward and right: square to the image's up. */
+        {
+            Vec3 right = vec3_normalize(vec3_cross(vec3(0, 1, 0), f));
+            CHECK_NEAR(0, vec3_dot(left, vec3_cross(f, right)), 1e-15);
+        }
         /* The top edge's middle: tan of the vertical half-angle is 3 / 4
          * of the horizontal one (square pixels). */
         top = ray_through(&cam, 200, 0);

@@ -63,11 +63,11 @@ resize scenes/glass.txt 240 >scenes/.trade-glass.txt
 trap 'rm -f scenes/.trade-glass.txt' EXIT
 scene=scenes/.trade-glass.txt
 echo "trade: samples per pixel" >&2
-timed spp-ref --spp 1024 "$scene" >/dev/null
+timed spp-ref --spp 1024 "$scene" >/dev/null || exit 1
 : >"$DIR/spp.rows"
 : >"$DIR/spp.plot"
 for n in 1 2 4 8 16 32 64 128 256; do
-    t=$(timed "spp-$n" --spp "$n" "$scene")
+    t=$(timed "spp-$n" --spp "$n" "$scene") || exit 1
     set -- $(error spp-ref "spp-$n")
     printf '| %d | %.3f s | %s%% | %s | %s |\n' "$n" "$t" "$1" "$2" "$3" >>"$DIR/spp.rows"
     echo "RMSE $t $3 $n" >>"$DIR/spp.plot"
@@ -81,9 +81,9 @@ echo "trade: maximum depth" >&2
 : >"$DIR/depth.rows"
 : >"$DIR/depth.plot"
 for s in corridor mirrors; do
-    timed "$s-d50" --cutoff 0 -d 50 "scenes/$s.txt" >/dev/null
+    timed "$s-d50" --cutoff 0 -d 50 "scenes/$s.txt" >/dev/null || exit 1
     for d in 0 1 2 3 4 5 6 8 10 12 15 20; do
-        t=$(timed "$s-d$d" --cutoff 0 -d "$d" "scenes/$s.txt")
+        t=$(timed "$s-d$d" --cutoff 0 -d "$d" "scenes/$s.txt") || exit 1
         set -- $(error "$s-d50" "$s-d$d")
         printf '| %s | %d | %.3f s | %s%% | %s | %s |\n' "$s" "$d" "$t" "$1" "$2" "$3" >>"$DIR/depth.rows"
         echo "$s $t $3 $d" >>"$DIR/depth.plot"
@@ -101,7 +101,7 @@ pfm=0
 for s in glass keyword; do
     for d in 10 30; do
         for c in 0 0.000001 0.0001 0.001 0.01 0.1 1; do
-            t=$(timed "$s-c" --cutoff "$c" -d "$d" "scenes/$s.txt")
+            t=$(timed "$s-c" --cutoff "$c" -d "$d" "scenes/$s.txt") || exit 1
             [ "$c" = 0 ] && cp "$DIR/$s-c.ppm" "$DIR/$s-c0.ppm"
             cmp -s "$DIR/$s-c0.ppm" "$DIR/$s-c.ppm" && same=yes || same=NO
             "$RT" -v --cutoff "$c" -d "$d" "scenes/$s.txt" "$DIR/$s-v.ppm" 2>"$DIR/v"
