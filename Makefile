@@ -11,6 +11,8 @@
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
 # make trade        measure error against time for every speed/accuracy knob;
 #                   writes docs/trade.md and docs/trade-*.svg
+# make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
+#                   each (default 60); tests/fuzz/fuzz.sh says more
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 
@@ -57,7 +59,7 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
 
-.PHONY: all test check clean install uninstall gallery bench trade
+.PHONY: all test check clean install uninstall gallery bench trade fuzz
 
 all: raytrace raytrace-diff
 
@@ -78,9 +80,12 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
-# The unit tests, then the command-line and render tests on the real binary.
-test: raytrace raytrace-diff $(BUILD)/unit
+# The unit tests, the fuzz targets on their seeds and past crashes, then the
+# command-line and render tests on the real binary.
+test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
 	$(BUILD)/unit
+	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
+		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
 	sh tests/cli.sh ./raytrace ./raytrace-diff
 	sh tests/install.sh
 
@@ -111,6 +116,31 @@ bench: raytrace raytrace-diff $(BUILD)/scenegen
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff
 	sh tests/bench/trade.sh ./raytrace ./raytrace-diff
+
+# Fuzzing: each parser's target (tests/fuzz/fuzz_*.c), built with clang's
+# libFuzzer and sanitizers in $(BUILD)/fuzz; the same targets replay their
+# inputs without libFuzzer in `make test` ($(BUILD)/replay).
+FUZZ_TARGETS := course keyword obj ppm picture
+FUZZ_CC ?= clang
+FUZZ_CFLAGS := -std=c11 -g -O1 -ffp-contract=off -fsanitize=address,undefined \
+	-fno-sanitize-recover=undefined -Iinclude -Itests/fuzz
+FUZZ_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/fuzz/%.o)
+.SECONDARY: $(FUZZ_OBJ)
+
+$(BUILD)/fuzz/%.o: src/%.c $(wildcard include/*.h)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_scene.h $(FUZZ_OBJ)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_OBJ) -lm
+
+$(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h $(LIB_OBJ)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) -Itests/fuzz $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ \
+		$< tests/fuzz/replay.c $(LIB_OBJ) $(RT_LDLIBS) $(LDLIBS)
+
+fuzz: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
+	sh tests/fuzz/fuzz.sh $(BUILD) $(FUZZ_TARGETS)
 
 check: test
 

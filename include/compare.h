@@ -24,6 +24,9 @@ typedef struct {
  * into *pic; returns 0, or -1 with *err saying why. */
 int picture_load(const char *path, Picture *pic, Error *err);
 
+/* picture_load() on the len bytes at data, errors naming name. */
+int picture_parse(const char *name, const char *data, size_t len, Picture *pic, Error *err);
+
 /* Releases pic's pixels. */
 void picture_free(Picture *pic);
 

@@ -8,6 +8,10 @@
 
 #include "error.h"
 
+/* The largest input file read, in bytes (1 GiB): a larger one is refused
+ * rather than read into memory. */
+#define FILE_MAX (1 << 30)
+
 /* Reads all of path ("-" reads standard input) into a new NUL-terminated
  * buffer stored in *data, its length (without the NUL) in *len; returns 0,
  * or -1 with *err saying why. The caller frees *data. */

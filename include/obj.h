@@ -40,6 +40,9 @@ typedef struct ObjMesh {
  * the fault, its line and column. Free with obj_free(). */
 int obj_load(const char *path, ObjMesh *mesh, Error *err);
 
+/* obj_load() on the len bytes at text, errors naming name. */
+int obj_parse(const char *name, const char *text, size_t len, ObjMesh *mesh, Error *err);
+
 /* Releases what *mesh owns. */
 void obj_free(ObjMesh *mesh);
 

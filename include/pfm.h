@@ -30,6 +30,9 @@ typedef struct {
  * what is wrong. Free with pfm_free(). */
 int pfm_read(const char *path, PfmImage *img, Error *err);
 
+/* pfm_read() on the len bytes at data, errors naming name. */
+int pfm_parse(const char *name, const char *data, size_t len, PfmImage *img, Error *err);
+
 /* Releases img's pixels. */
 void pfm_free(PfmImage *img);
 

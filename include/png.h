@@ -32,6 +32,10 @@ typedef struct {
  * what is wrong and at which byte. Free with png_free(). */
 int png_read(const char *path, PngImage *img, Error *err);
 
+/* png_read() on the len bytes at data, errors naming name. */
+int png_parse(const char *name, const unsigned char *data, size_t len, PngImage *img,
+              Error *err);
+
 /* Releases img's pixels. */
 void png_free(PngImage *img);
 

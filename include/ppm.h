@@ -9,6 +9,7 @@
 #ifndef RAYTRACE_PPM_H
 #define RAYTRACE_PPM_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "error.h"
@@ -33,6 +34,9 @@ typedef struct {
 /* Reads a P6 or P3 file into *img; returns 0, or -1 with *err describing
  * what is wrong and where. Free the result with ppm_free(). */
 int ppm_read(const char *path, PpmImage *img, Error *err);
+
+/* ppm_read() on the len bytes at data, errors naming name. */
+int ppm_parse(const char *name, const char *data, size_t len, PpmImage *img, Error *err);
 
 /* Releases the samples of *img. */
 void ppm_free(PpmImage *img);

@@ -1,12 +1,12 @@
 /* compare.c: loading and comparing renders (see compare.h). */
 #include "compare.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "file.h"
 #include "pfm.h"
 #include "png.h"
 #include "ppm.h"
@@ -30,40 +30,34 @@ static int picture_alloc(Picture *pic, int width, int height, const char *name, 
     return 0;
 }
 
-/* Returns the first bytes of path in head (up to 8), or -1 with *err set. */
-static int picture_magic(const char *path, unsigned char head[8], Error *err)
-{
-    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-    int n;
-
-    if (!f) {
-        error_set(err, path, "cannot open: %s", strerror(errno));
-        return -1;
-    }
-    n = (int)fread(head, 1, 8, f);
-    if (f != stdin)
-        fclose(f);
-    return n;
-}
-
 int picture_load(const char *path, Picture *pic, Error *err)
 {
-    unsigned char head[8] = {0};
-    int n;
+    char *data;
+    size_t len;
+    int rc;
 
     memset(pic, 0, sizeof *pic);
     if (strcmp(path, "-") == 0) {
         error_set(err, "<stdin>", "images are compared from files, not standard input");
         return -1;
     }
-    n = picture_magic(path, head, err);
-    if (n < 0)
+    if (file_read_all(path, &data, &len, err) != 0)
         return -1;
-    if (n >= 2 && head[0] == 'P' && (head[1] == '3' || head[1] == '6')) {
+    rc = picture_parse(path, data, len, pic, err);
+    free(data);
+    return rc;
+}
+
+int picture_parse(const char *name, const char *data, size_t len, Picture *pic, Error *err)
+{
+    const unsigned char *head = (const unsigned char *)data;
+
+    memset(pic, 0, sizeof *pic);
+    if (len >= 2 && head[0] == 'P' && (head[1] == '3' || head[1] == '6')) {
         PpmImage ppm;
-        if (ppm_read(path, &ppm, err) != 0)
+        if (ppm_parse(name, data, len, &ppm, err) != 0)
             return -1;
-        if (picture_alloc(pic, ppm.width, ppm.height, path, err) == 0) {
+        if (picture_alloc(pic, ppm.width, ppm.height, name, err) == 0) {
             size_t count = 3 * (size_t)ppm.width * (size_t)ppm.height;
             for (size_t k = 0; k < count; k++)
                 pic->rgb[k] = ppm.samples[k] * 255.0 / ppm.maxval;
@@ -71,11 +65,11 @@ int picture_load(const char *path, Picture *pic, Error *err)
                      ppm.maxval);
         }
         ppm_free(&ppm);
-    } else if (n >= 2 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f')) {
+    } else if (len >= 2 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f')) {
         PfmImage pfm;
-        if (pfm_read(path, &pfm, err) != 0)
+        if (pfm_parse(name, data, len, &pfm, err) != 0)
             return -1;
-        if (picture_alloc(pic, pfm.width, pfm.height, path, err) == 0) {
+        if (picture_alloc(pic, pfm.width, pfm.height, name, err) == 0) {
             size_t count = 3 * (size_t)pfm.width * (size_t)pfm.height;
             for (size_t k = 0; k < count; k++)
                 pic->rgb[k] = pfm.rgb[k] * 255.0;
@@ -83,11 +77,11 @@ int picture_load(const char *path, Picture *pic, Error *err)
                      pfm.channels == 1 ? "" : "s");
         }
         pfm_free(&pfm);
-    } else if (n == 8 && head[0] == 0x89 && memcmp(head + 1, "PNG", 3) == 0) {
+    } else if (len >= 8 && head[0] == 0x89 && memcmp(head + 1, "PNG", 3) == 0) {
         PngImage png;
-        if (png_read(path, &png, err) != 0)
+        if (png_parse(name, head, len, &png, err) != 0)
             return -1;
-        if (picture_alloc(pic, png.width, png.height, path, err) == 0) {
+        if (picture_alloc(pic, png.width, png.height, name, err) == 0) {
             size_t count = 3 * (size_t)png.width * (size_t)png.height;
             for (size_t k = 0; k < count; k++)
                 pic->rgb[k] = png.rgb[k];
@@ -96,7 +90,7 @@ int picture_load(const char *path, Picture *pic, Error *err)
         }
         png_free(&png);
     } else {
-        error_set(err, path, "not an image raytrace reads: expected PPM (P3, P6), PFM or PNG");
+        error_set(err, name, "not an image raytrace reads: expected PPM (P3, P6), PFM or PNG");
         return -1;
     }
     return pic->rgb ? 0 : -1;

@@ -245,15 +245,26 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
 int obj_load(const char *path, ObjMesh *mesh, Error *err)
 {
     char *data;
-    size_t len, caps[4] = {0, 0, 0, 0};
+    size_t len;
+    int rc;
+
+    memset(mesh, 0, sizeof *mesh);
+    if (file_read_all(path, &data, &len, err) != 0)
+        return -1;
+    rc = obj_parse(file_display_name(path), data, len, mesh, err);
+    free(data);
+    return rc;
+}
+
+int obj_parse(const char *name, const char *data, size_t len, ObjMesh *mesh, Error *err)
+{
+    size_t caps[4] = {0, 0, 0, 0};
     const char *p, *end;
     ObjReader r;
     int rc = 0;
 
     memset(mesh, 0, sizeof *mesh);
-    if (file_read_all(path, &data, &len, err) != 0)
-        return -1;
-    r.name = file_display_name(path);
+    r.name = name;
     r.err = err;
     r.lineno = 0;
     p = data;
@@ -283,7 +294,6 @@ int obj_load(const char *path, ObjMesh *mesh, Error *err)
             r.len = (size_t)(hash - r.line);
         rc = obj_record(&r, mesh, caps);
     }
-    free(data);
     if (rc != 0)
         obj_free(mesh);
     return rc;

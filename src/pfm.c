@@ -60,17 +60,28 @@ static int pfm_token(const char **p, const char *end, char *buf, size_t size)
 
 int pfm_read(const char *path, PfmImage *img, Error *err)
 {
-    const char *name = file_display_name(path);
-    char *data, tok[64], *endp;
+    char *data;
+    size_t n;
+    int rc;
+
+    memset(img, 0, sizeof *img);
+    if (file_read_all(path, &data, &n, err) != 0)
+        return -1;
+    rc = pfm_parse(file_display_name(path), data, n, img, err);
+    free(data);
+    return rc;
+}
+
+int pfm_parse(const char *name, const char *data, size_t n, PfmImage *img, Error *err)
+{
+    char tok[64], *endp;
     const char *p, *end;
-    size_t n, count;
+    size_t count;
     long w, h;
     double scale;
     int big;
 
     memset(img, 0, sizeof *img);
-    if (file_read_all(path, &data, &n, err) != 0)
-        return -1;
     p = data;
     end = data + n;
     if (n < 2 || data[0] != 'P' || (data[1] != 'F' && data[1] != 'f')) {
@@ -118,10 +129,8 @@ int pfm_read(const char *path, PfmImage *img, Error *err)
         for (size_t j = c; j < 3; j += (size_t)img->channels == 1 ? 1 : 3)
             img->rgb[3 * (y * (size_t)w + x) + j] = v;
     }
-    free(data);
     return 0;
 fail:
     pfm_free(img);
-    free(data);
     return -1;
 }

@@ -273,17 +273,28 @@ static int png_chunks(const char *name, const unsigned char *data, size_t n, Png
 
 int png_read(const char *path, PngImage *img, Error *err)
 {
-    const char *name = file_display_name(path);
-    char *data, msg[200];
-    size_t n, stride, npix;
+    char *data;
+    size_t n;
+    int rc;
+
+    memset(img, 0, sizeof *img);
+    if (file_read_all(path, &data, &n, err) != 0)
+        return -1;
+    rc = png_parse(file_display_name(path), (const unsigned char *)data, n, img, err);
+    free(data);
+    return rc;
+}
+
+int png_parse(const char *name, const unsigned char *data, size_t n, PngImage *img, Error *err)
+{
+    char msg[200];
+    size_t stride, npix;
     ByteBuf z = {0}, raw = {0};
     unsigned char *pixels = NULL;
     int depth = 0, rc = -1, bad;
 
     memset(img, 0, sizeof *img);
-    if (file_read_all(path, &data, &n, err) != 0)
-        return -1;
-    if (png_chunks(name, (const unsigned char *)data, n, img, &depth, &z, err) != 0)
+    if (png_chunks(name, data, n, img, &depth, &z, err) != 0)
         goto done;
     stride = (size_t)img->width * (size_t)img->channels;
     if ((size_t)img->height > ((size_t)-1 / 4) / (stride + 1)) {
@@ -326,6 +337,5 @@ done:
     free(pixels);
     bytebuf_free(&z);
     bytebuf_free(&raw);
-    free(data);
     return rc;
 }

@@ -160,16 +160,28 @@ static int ppm_read_ascii(PpmCursor *c, PpmImage *img, size_t count)
 int ppm_read(const char *path, PpmImage *img, Error *err)
 {
     char *data;
-    size_t len, count;
+    size_t len;
+    int rc;
+
+    img->samples = NULL;
+    img->width = img->height = img->maxval = 0;
+    if (file_read_all(path, &data, &len, err) != 0)
+        return -1;
+    rc = ppm_parse(file_display_name(path), data, len, img, err);
+    free(data);
+    return rc;
+}
+
+int ppm_parse(const char *name, const char *data, size_t len, PpmImage *img, Error *err)
+{
+    size_t count;
     long w, h, maxval;
     int binary, rc = -1;
     PpmCursor c;
 
     img->samples = NULL;
     img->width = img->height = img->maxval = 0;
-    if (file_read_all(path, &data, &len, err) != 0)
-        return -1;
-    c.name = file_display_name(path);
+    c.name = name;
     c.p = c.line_start = (const unsigned char *)data;
     c.end = c.p + len;
     c.line = 1;
@@ -229,6 +241,5 @@ int ppm_read(const char *path, PpmImage *img, Error *err)
 done:
     if (rc != 0)
         ppm_free(img);
-    free(data);
     return rc;
 }

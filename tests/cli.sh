@@ -342,7 +342,7 @@ expect_line "tab caret aligned" 3 "$(printf '      | \t  \t  ^')" "$T/err"
 expect_exit "missing scene" 1 "$RT" "$T/none.txt" "$T/keep.ppm"
 expect_line "missing scene message" 1 "raytrace: $T/none.txt: error: cannot open: No such file or directory" "$T/err"
 expect_exit "scene is a directory" 1 "$RT" "$T" "$T/keep.ppm"
-expect_grep "scene is a directory" 'Is a directory' "$T/err"
+expect_grep "scene is a directory" 'it is a directory, not a file' "$T/err"
 expect_grep "failed runs keep output" 'keep me' "$T/keep.ppm"
 
 # --- bad outputs: clear error, nothing damaged or left behind ---

@@ -133,7 +133,7 @@ static void texture_faults_are_positioned_in_the_scene(void)
         {"sphere: 0 0 5 1 1 2 3 0\ntexture: tex-bad.ppm\n", 9, 10,
          "cannot use the texture 'tex-bad.ppm': build/tex-bad.ppm:2:5: expected the maxval (a "
          "whole number), found something else"},
-        {"sphere: 0 0 5 1 1 2 3 0\ntexture: .\n", 9, 10, "cannot use the texture '.': cannot read: Is a directory"},
+        {"sphere: 0 0 5 1 1 2 3 0\ntexture: .\n", 9, 10, "cannot use the texture '.': cannot read: it is a directory, not a file"},
         {"sphere: 0 0 5 1 1 2 3 0\ntexture: tex-a.ppm\ntexture: tex-a.ppm\n", 10, 1,
          "the sphere's texture is already set: an object takes one texture: record"},
         {"sphere: 0 0 5 1 1 2 3 0\ntexture: tex-a.ppm 2\n", 9, 20,

@@ -1,0 +1,35 @@
+#!/bin/sh
+# fuzz.sh: runs each libFuzzer target for FUZZ_TIME seconds (`make fuzz`).
+#
+# Usage: sh tests/fuzz/fuzz.sh BUILD-DIR [TARGET...]
+# Each target starts from its seeds (tests/fuzz/corpus/T) and the inputs
+# that once crashed it (tests/fuzz/regress/T); what it learns is kept in
+# BUILD-DIR/fuzz/corpus/T. It runs in scenes/ so that scene inputs can
+# name the example textures and meshes. A crash leaves its input in
+# BUILD-DIR/fuzz/crash-T-* and makes this script fail: add that file to
+# tests/fuzz/regress/T once the fault is mended.
+# Environment: FUZZ_TIME (seconds a target, default 60), FUZZ_JOBS (parallel
+# fuzzing processes a target, default 1).
+
+BUILD=$1
+shift
+TIME=${FUZZ_TIME:-60}
+JOBS=${FUZZ_JOBS:-1}
+TOP=$(pwd)
+status=0
+TARGETS=${*:-course keyword obj ppm picture}
+for t in $TARGETS; do
+    mkdir -p "$BUILD/fuzz/corpus/$t" "tests/fuzz/regress/$t"
+    echo "fuzz: $t for ${TIME} s"
+    (cd scenes && "$TOP/$BUILD/fuzz/fuzz_$t" -max_total_time="$TIME" -timeout=10 \
+        -rss_limit_mb=2048 -jobs="$JOBS" -workers="$JOBS" -print_final_stats=1 \
+        -artifact_prefix="$TOP/$BUILD/fuzz/crash-$t-" "$TOP/$BUILD/fuzz/corpus/$t" \
+        "$TOP/tests/fuzz/corpus/$t" "$TOP/tests/fuzz/regress/$t") \
+        >"$BUILD/fuzz/$t.log" 2>&1 || status=1
+    grep -E '^stat::number_of_executed_units|^#[0-9]+.*DONE|ERROR|SUMMARY' "$BUILD/fuzz/$t.log" | tail -3
+done
+if ls "$BUILD"/fuzz/crash-* >/dev/null 2>&1; then
+    echo "fuzz: crashes found:" "$BUILD"/fuzz/crash-* >&2
+    status=1
+fi
+exit $status
