@@ -8,13 +8,11 @@
 # name the example textures and meshes. A crash leaves its input in
 # BUILD-DIR/fuzz/crash-T-* and makes this script fail: add that file to
 # tests/fuzz/regress/T once the fault is mended.
-# Environment: FUZZ_TIME (seconds a target, default 60), FUZZ_JOBS (parallel
-# fuzzing processes a target, default 1).
+# Environment: FUZZ_TIME (seconds a target, default 60).
 
 BUILD=$1
 shift
 TIME=${FUZZ_TIME:-60}
-JOBS=${FUZZ_JOBS:-1}
 TOP=$(pwd)
 status=0
 TARGETS=${*:-course keyword obj ppm picture}
@@ -22,7 +20,7 @@ for t in $TARGETS; do
     mkdir -p "$BUILD/fuzz/corpus/$t" "tests/fuzz/regress/$t"
     echo "fuzz: $t for ${TIME} s"
     (cd scenes && "$TOP/$BUILD/fuzz/fuzz_$t" -max_total_time="$TIME" -timeout=10 \
-        -rss_limit_mb=2048 -jobs="$JOBS" -workers="$JOBS" -print_final_stats=1 \
+        -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$TOP/$BUILD/fuzz/crash-$t-" "$TOP/$BUILD/fuzz/corpus/$t" \
         "$TOP/tests/fuzz/corpus/$t" "$TOP/tests/fuzz/regress/$t") \
         >"$BUILD/fuzz/$t.log" 2>&1 || status=1
