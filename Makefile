@@ -4,6 +4,8 @@
 #                   compiler has it)
 # make test         build and run every test (alias: make check)
 # make OPENMP=0     build without OpenMP
+# make REAL=float   build with single-precision geometry (not exact: see
+#                   docs/trade.md); $(BUILD)/raytrace-float is that build too
 # make install      install the commands and man pages under $(DESTDIR)$(PREFIX)
 #                   (PREFIX defaults to /usr/local); make uninstall removes them
 # make gallery      render every example scene to docs/gallery/*.png
@@ -32,7 +34,18 @@ else
 RT_OMP :=
 endif
 
-RT_CFLAGS := -std=c11 -Wall -Wextra -pedantic -ffp-contract=off $(RT_OMP)
+# The geometry's floating-point type (include/real.h): double, or float to
+# measure what single precision costs (docs/trade.md).
+REAL ?= double
+ifeq ($(REAL),float)
+RT_REAL := -DRAYTRACE_REAL_FLOAT
+else ifeq ($(REAL),double)
+RT_REAL :=
+else
+$(error REAL must be double or float, not '$(REAL)')
+endif
+
+RT_CFLAGS := -std=c11 -Wall -Wextra -pedantic -ffp-contract=off $(RT_OMP) $(RT_REAL)
 RT_CPPFLAGS := -Iinclude -MMD -MP
 RT_LDLIBS := -lm
 
@@ -82,11 +95,11 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 
 # The unit tests, the fuzz targets on their seeds and past crashes, then the
 # command-line and render tests on the real binary.
-test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
+test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
 	$(BUILD)/unit
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
-	sh tests/cli.sh ./raytrace ./raytrace-diff
+	RT_FLOAT=$(BUILD)/raytrace-float sh tests/cli.sh ./raytrace ./raytrace-diff
 	sh tests/install.sh
 
 install: $(PROGRAMS)
@@ -105,6 +118,16 @@ docs/gallery/%.png: scenes/%.txt raytrace
 	@mkdir -p $(@D)
 	./raytrace -q $< $@
 
+# The single-precision build beside the double one, for `make trade`.
+FLOAT_OBJ := $(BUILD)/float/main.o $(LIB_SRC:src/%.c=$(BUILD)/float/%.o)
+
+$(BUILD)/float/%.o: src/%.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) -DRAYTRACE_REAL_FLOAT $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/raytrace-float: $(FLOAT_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+
 # The benchmark (not a test): generated scenes, medians, docs/benchmarks.md.
 $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
@@ -114,8 +137,8 @@ bench: raytrace raytrace-diff $(BUILD)/scenegen
 	sh tests/bench/bench.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
 
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
-trade: raytrace raytrace-diff
-	sh tests/bench/trade.sh ./raytrace ./raytrace-diff
+trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
+	sh tests/bench/trade.sh ./raytrace ./raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 
 # Fuzzing: each parser's target (tests/fuzz/fuzz_*.c), built with clang's
 # libFuzzer and sanitizers in $(BUILD)/fuzz; the same targets replay their
@@ -147,4 +170,4 @@ check: test
 clean:
 	rm -rf $(BUILD) raytrace raytrace-diff
 
--include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d)
+-include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/float/*.d)

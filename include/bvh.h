@@ -28,7 +28,7 @@ enum {
 #define BVH_TRIANGLE 0x80000000u
 
 typedef struct {
-    double box[6];       /* the box: lo x y z, then hi x y z */
+    real box[6];       /* the box: lo x y z, then hi x y z */
     uint32_t index;      /* interior: the right child (the left is the next
                             node); leaf: the first of its primitives */
     uint16_t count;      /* primitives in a leaf; 0 for an interior node */
@@ -53,19 +53,19 @@ void bvh_free(Bvh *bvh);
 
 /* The nearest crossing a query found. */
 typedef struct {
-    double t;       /* ray parameter */
+    real t;       /* ray parameter */
     uint32_t prim;  /* primitive reference */
     unsigned order; /* the object's position among all objects */
 } BvhHit;
 
 /* Finds the sphere or triangle the ray crosses first at 0 < t < tmax (the
  * earliest-listed on an exact tie); returns 1 with *hit set, or 0. */
-int bvh_nearest(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax,
+int bvh_nearest(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
                 BvhHit *hit);
 
 /* Returns 1 when some sphere or triangle crosses the ray at 0 < t < tmax
  * (tmax = 1: the segment from ray->origin to ray->origin + ray->dir), else 0. */
-int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax);
+int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax);
 
 /* A surface crossed by a shadow ray, and how many times. */
 typedef struct {
@@ -77,7 +77,7 @@ typedef struct {
  * 0 < t < tmax, sorted spheres first, each kind by index; returns
  * how many, -1 when more than max, or -2 as soon as an opaque one (T = 0) is
  * crossed. */
-int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *ray, double tmax,
+int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
                   BvhCrossing *out, int max);
 
 #endif

@@ -18,7 +18,7 @@ typedef struct {
     Vec3 given;        /* the normal as given to plane_make(), any length */
     Vec3 axis_u;       /* unit vector in the plane: the texture's u direction */
     Vec3 axis_v;       /* normal x axis_u: the texture's v direction */
-    double tile;       /* texture repeat, scene units per image, > 0 */
+    double tile;     /* texture repeat, scene units per image, > 0 */
     Material material; /* what the surface looks like */
     unsigned order;    /* position among the scene's objects, for ties */
 } Plane;
@@ -29,7 +29,7 @@ Plane plane_make(Vec3 point, Vec3 n, double tile, Material m);
 
 /* Finds where the ray crosses the plane with tmin < t < tmax; returns 1 and
  * stores t, or returns 0 (a ray parallel to the plane never crosses it). */
-int plane_intersect(const Plane *pl, const Ray *ray, double tmin, double tmax, double *t);
+int plane_intersect(const Plane *pl, const Ray *ray, real tmin, real tmax, real *t);
 
 /* Re-projects p, a point near the plane, onto it and returns it with the
  * plane's normal and the point's error bound. */

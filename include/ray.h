@@ -7,10 +7,6 @@
 #ifndef RAYTRACE_RAY_H
 #define RAYTRACE_RAY_H
 
-#include <float.h>
-#include <stdint.h>
-#include <string.h>
-
 #include "vec3.h"
 
 typedef struct {
@@ -27,25 +23,8 @@ typedef struct {
     Vec3 error;  /* per-component bound on |point - true surface point| */
 } SurfacePoint;
 
-/* Returns the double next to x, a finite double, above it (up = 1) or below
- * it (up = 0): what nextafter() returns, stepped on the bits without a libm
- * call. Exact ties between hits use it: the next double above the best t
- * bounds the search for an earlier-listed object at that t. */
-static inline double ray_next(double x, int up)
-{
-    uint64_t bits;
-
-    if (x == 0)
-        return up ? DBL_TRUE_MIN : -DBL_TRUE_MIN;
-    memcpy(&bits, &x, sizeof bits);
-    /* Away from zero adds one to the magnitude's bits, towards it takes one. */
-    bits += (x > 0) == (up != 0) ? 1 : (uint64_t)-1;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
 /* Returns the point origin + t * dir. */
-static inline Vec3 ray_at(const Ray *ray, double t)
+static inline Vec3 ray_at(const Ray *ray, real t)
 {
     return vec3_add(ray->origin, vec3_scale(ray->dir, t));
 }
@@ -72,7 +51,7 @@ static inline Vec3 ray_reflect(Vec3 d, Vec3 n)
  * stores the unit refracted direction in *out and returns 1, or returns 0
  * on total internal reflection (sin i2 would exceed 1).
  */
-int ray_refract(Vec3 d, Vec3 n, double eta, Vec3 *out);
+int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out);
 
 /*
  * Returns a start point for a ray leaving the surface point p in direction

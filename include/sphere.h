@@ -16,7 +16,7 @@
 
 typedef struct {
     Vec3 centre;       /* scene units */
-    double radius;     /* scene units, > 0 */
+    real radius;     /* scene units, > 0 */
     Material material; /* what the surface looks like */
     unsigned order;    /* position among the scene's objects, for ties */
 } Sphere;
@@ -26,11 +26,11 @@ typedef struct {
  * interval); returns 1 and stores that t in *t, or returns 0. The ray's
  * direction may have any non-zero length; a tangent ray counts as crossing.
  */
-int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t);
+int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t);
 
 /* Returns how many times the ray crosses s's surface with tmin < t < tmax:
  * 0, 1 or 2. */
-int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax);
+int sphere_crossings(const Sphere *s, const Ray *ray, real tmin, real tmax);
 
 /* Re-projects p, a point near s's surface, onto the surface and returns it
  * with its outward normal and error bound. */

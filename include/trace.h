@@ -49,7 +49,7 @@ typedef struct {
 } RayCounts;
 
 typedef struct {
-    double t;       /* ray parameter of the crossing, > 0 */
+    real t;       /* ray parameter of the crossing, > 0 */
     ShapeKind kind; /* which array the object is in */
     size_t index;   /* its index there */
     unsigned order; /* its position among all objects */
@@ -57,16 +57,16 @@ typedef struct {
 
 /* Finds the object whose surface the ray crosses first at 0 < t < tmax, the
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
-int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit);
+int trace_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
 
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +
  * ray->dir (ends excluded), tmax = INFINITY the whole ray. */
-int trace_occluded(const Scene *scene, const Ray *ray, double tmax);
+int trace_occluded(const Scene *scene, const Ray *ray, real tmax);
 
 /* Returns the share of light that passes along the ray from t = 0 to tmax:
  * the product of the transparency T of every surface crossing there. */
-double trace_transmittance(const Scene *scene, const Ray *ray, double tmax);
+double trace_transmittance(const Scene *scene, const Ray *ray, real tmax);
 
 /* How much of a pixel's ray tree may be left out, and what was: a
  * secondary ray whose weight (the product of the mirror and transparency

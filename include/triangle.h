@@ -37,7 +37,7 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m);
 
 /* Finds where the ray crosses the triangle with tmin < t < tmax; returns 1
  * and stores t, or returns 0. */
-int triangle_intersect(const Triangle *tri, const Ray *ray, double tmin, double tmax, double *t);
+int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax, real *t);
 
 /* Returns the point where the ray meets the triangle's plane, computed from
  * its barycentric coordinates, with the normal (and, on a smooth triangle,

@@ -1,5 +1,6 @@
 /*
- * vec3.h: three-component double vectors for points, directions and normals.
+ * vec3.h: three-component vectors of reals (real.h) for points, directions
+ * and normals.
  *
  * Every operation is a small static inline function so the compiler can keep
  * vectors in registers; none allocates or fails. Floating-point results are
@@ -9,14 +10,14 @@
 #ifndef RAYTRACE_VEC3_H
 #define RAYTRACE_VEC3_H
 
-#include <math.h>
+#include "real.h"
 
 typedef struct {
-    double x, y, z;
+    real x, y, z;
 } Vec3;
 
 /* Builds the vector (x, y, z). */
-static inline Vec3 vec3(double x, double y, double z)
+static inline Vec3 vec3(real x, real y, real z)
 {
     Vec3 v = {x, y, z};
     return v;
@@ -35,7 +36,7 @@ static inline Vec3 vec3_sub(Vec3 a, Vec3 b)
 }
 
 /* Returns s * a. */
-static inline Vec3 vec3_scale(Vec3 a, double s)
+static inline Vec3 vec3_scale(Vec3 a, real s)
 {
     return vec3(s * a.x, s * a.y, s * a.z);
 }
@@ -47,7 +48,7 @@ static inline Vec3 vec3_neg(Vec3 a)
 }
 
 /* Returns the dot product a . b, summed x, then y, then z. */
-static inline double vec3_dot(Vec3 a, Vec3 b)
+static inline real vec3_dot(Vec3 a, Vec3 b)
 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
@@ -59,7 +60,7 @@ static inline Vec3 vec3_cross(Vec3 a, Vec3 b)
 }
 
 /* Returns the Euclidean length of a. */
-static inline double vec3_length(Vec3 a)
+static inline real vec3_length(Vec3 a)
 {
     return sqrt(vec3_dot(a, a));
 }
@@ -67,7 +68,7 @@ static inline double vec3_length(Vec3 a)
 /* Returns a / |a|; the zero vector yields non-finite components. */
 static inline Vec3 vec3_normalize(Vec3 a)
 {
-    return vec3_scale(a, 1.0 / vec3_length(a));
+    return vec3_scale(a, (real)1 / vec3_length(a));
 }
 
 /* Returns the component-wise absolute value of a. */
@@ -77,14 +78,14 @@ static inline Vec3 vec3_abs(Vec3 a)
 }
 
 /* Returns the largest absolute value among a's components. */
-static inline double vec3_max_abs(Vec3 a)
+static inline real vec3_max_abs(Vec3 a)
 {
     return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
 }
 
 /* Returns the k for which m * 2^k lies in [0.5, 1), for finite m > 0: the
  * exact change of unit that brings the magnitude m near 1. */
-static inline int vec3_unit_exponent(double m)
+static inline int vec3_unit_exponent(real m)
 {
     int e;
     frexp(m, &e);

@@ -17,7 +17,7 @@ enum {
 
 /* A box, as lo and hi corners. */
 typedef struct {
-    double lo[3], hi[3];
+    real lo[3], hi[3];
 } Box;
 
 static void box_empty(Box *b)
@@ -38,7 +38,7 @@ static inline void box_grow(Box *b, const Box *c)
     }
 }
 
-static inline void box_grow_point(Box *b, const double p[3])
+static inline void box_grow_point(Box *b, const real p[3])
 {
     for (int a = 0; a < 3; a++) {
         b->lo[a] = p[a] < b->lo[a] ? p[a] : b->lo[a];
@@ -47,9 +47,9 @@ static inline void box_grow_point(Box *b, const double p[3])
 }
 
 /* Half the surface area of b (0 for an empty box). */
-static double box_half_area(const Box *b)
+static real box_half_area(const Box *b)
 {
-    double dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
+    real dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
     return dx < 0 ? 0 : dx * dy + dy * dz + dz * dx;
 }
 
@@ -60,18 +60,26 @@ typedef struct {
 } BuildPrim;
 
 /* Returns coordinate axis of the centre of p's box, its centroid. */
-static double bvh_centroid(const BuildPrim *p, int axis)
+static real bvh_centroid(const BuildPrim *p, int axis)
 {
     return 0.5 * p->box.lo[axis] + 0.5 * p->box.hi[axis];
 }
 
-/* The padding of every box: 2^-36 (1.5e-11) of the scene's largest
- * coordinate. The primitive tests round at about 1e-16 of the distances
- * involved, all below twice that coordinate; the margin is 10^4-fold and
- * costs nothing measurable. */
-static double bvh_padding(const Scene *scene)
+/* The padding of every box, in units of the scene's largest coordinate
+ * times REAL_EPSILON. The primitive tests round at a few REAL_EPSILON of the
+ * distances involved, all below twice that coordinate. Double takes 2^16
+ * (boxes 1.5e-11 of the scene wider: a 10^4-fold margin that costs nothing
+ * measurable); float takes 2^6 (7.6e-6 of the scene), as 2^16 would widen
+ * every box by 1/128 of the scene. Spheres' radii grow by 1/16 of that. */
+#ifdef RAYTRACE_REAL_FLOAT
+#define BVH_PAD_ULPS 0x1p6
+#else
+#define BVH_PAD_ULPS 0x1p16
+#endif
+
+static real bvh_padding(const Scene *scene)
 {
-    double m = fmax(vec3_max_abs(scene->camera.eye),
+    real m = fmax(vec3_max_abs(scene->camera.eye),
                     fmax(vec3_max_abs(scene->camera.top_left),
                          vec3_max_abs(vec3_add(scene->camera.top_left,
                                                vec3_add(scene->camera.u, scene->camera.v)))));
@@ -85,17 +93,17 @@ static double bvh_padding(const Scene *scene)
     for (size_t i = 0; i < scene->triangle_count; i++)
         for (int k = 0; k < 3; k++)
             m = fmax(m, vec3_max_abs(scene->triangles[i].v[k]));
-    return ldexp(m, -36);
+    return m * (REAL_EPSILON * BVH_PAD_ULPS);
 }
 
-static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim *p)
+static void bvh_prim_box(const Scene *scene, uint32_t ref, real pad, BuildPrim *p)
 {
     p->ref = ref;
     if (ref & BVH_TRIANGLE) {
         const Triangle *t = &scene->triangles[ref & ~BVH_TRIANGLE];
         box_empty(&p->box);
         for (int k = 0; k < 3; k++) {
-            double v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
+            real v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
             box_grow_point(&p->box, v);
         }
         for (int a = 0; a < 3; a++) {
@@ -104,7 +112,7 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim
         }
     } else {
         const Sphere *s = &scene->spheres[ref];
-        double c[3] = {s->centre.x, s->centre.y, s->centre.z}, r = s->radius * (1 + 0x1p-40) + pad;
+        real c[3] = {s->centre.x, s->centre.y, s->centre.z}, r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
         for (int a = 0; a < 3; a++) {
             p->box.lo[a] = c[a] - r;
             p->box.hi[a] = c[a] + r;
@@ -117,7 +125,7 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, double pad, BuildPrim
 static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
 {
     while (hi - lo > 1) {
-        double pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
+        real pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
         size_t i = lo, j = hi - 1;
         for (;;) {
             while (bvh_centroid(&prims[i], axis) < pivot)
@@ -149,7 +157,7 @@ typedef struct {
 } BuildTask;
 
 /* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
-static int bvh_bin(const BuildPrim *p, int axis, double lo, double scale)
+static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale)
 {
     int b = (int)((bvh_centroid(p, axis) - lo) * scale);
 
@@ -160,12 +168,12 @@ static int bvh_bin(const BuildPrim *p, int axis, double lo, double scale)
  * centroid bins of one axis: the cost (traversal 1, intersection 1 a
  * primitive, areas relative to bounds), and the first bin of the right
  * part (-1 when no split leaves both parts non-empty). */
-static double bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const Box *bounds,
-                           int axis, double lo, double scale, int *split)
+static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const Box *bounds,
+                           int axis, real lo, real scale, int *split)
 {
     size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
     Box bin[BVH_BINS], left[BVH_BINS], acc;
-    double best = INFINITY;
+    real best = INFINITY;
 
     *split = -1;
     for (int b = 0; b < BVH_BINS; b++)
@@ -184,12 +192,12 @@ static double bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, con
     }
     box_empty(&acc);
     for (int b = BVH_BINS - 1; b > 0; b--) {
-        double cost;
+        real cost;
         box_grow(&acc, &bin[b]);
         if (left_n[b - 1] == 0 || left_n[b - 1] == n)
             continue;
-        cost = 1 + (box_half_area(&left[b - 1]) * (double)left_n[b - 1] +
-                    box_half_area(&acc) * (double)(n - left_n[b - 1])) /
+        cost = 1 + (box_half_area(&left[b - 1]) * (real)left_n[b - 1] +
+                    box_half_area(&acc) * (real)(n - left_n[b - 1])) /
                        box_half_area(bounds);
         if (cost < best) {
             best = cost;
@@ -207,12 +215,12 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
 {
     size_t n = end - start, mid;
     Box cb;
-    double extent[3], scale[3], best = INFINITY;
+    real extent[3], scale[3], best = INFINITY;
     int best_split = -1;
 
     box_empty(&cb);
     for (size_t i = start; i < end; i++) {
-        double c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+        real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
                        bvh_centroid(&prims[i], 2)};
         box_grow_point(&cb, c);
     }
@@ -237,7 +245,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
      * where binning costs the most, it is nearly always the best. */
     for (int a = 0; a < 3; a++) {
         int split;
-        double cost;
+        real cost;
         if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != *axis))
             continue;
         cost = bvh_sah_axis(prims, start, end, bounds, a, cb.lo[a], scale[a], &split);
@@ -247,7 +255,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
             *axis = a;
         }
     }
-    if (best_split < 0 || (best >= (double)n && n <= BVH_LEAF_MAX))
+    if (best_split < 0 || (best >= (real)n && n <= BVH_LEAF_MAX))
         return n <= BVH_LEAF_MAX ? start : start + n / 2;
     /* Partition by bin. */
     {
@@ -275,7 +283,7 @@ int bvh_build(Bvh *bvh, const Scene *scene)
     size_t n = scene->sphere_count + scene->triangle_count, top = 0, cap_nodes;
     BuildPrim *prims;
     BuildTask *stack;
-    double pad = bvh_padding(scene);
+    real pad = bvh_padding(scene);
 
     memset(bvh, 0, sizeof *bvh);
     if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0)
@@ -353,14 +361,14 @@ void bvh_free(Bvh *bvh)
  * component, by the sign of that zero), and for each axis which end of a
  * node's box (an offset into BvhNode.box: lo or hi) the ray meets first. */
 typedef struct {
-    double o[3], inv[3];
+    real o[3], inv[3];
     int near[3], far[3]; /* offsets into a node's {lo[3], hi[3]}: a, or 3 + a */
 } BvhRay;
 
 static BvhRay bvh_ray(const Ray *r)
 {
     BvhRay b;
-    double d[3] = {r->dir.x, r->dir.y, r->dir.z};
+    real d[3] = {r->dir.x, r->dir.y, r->dir.z};
 
     b.o[0] = r->origin.x;
     b.o[1] = r->origin.y;
@@ -376,21 +384,21 @@ static BvhRay bvh_ray(const Ray *r)
 /* Rounding in the slab test: every computed slab distance is within a
  * relative 3 ulps (gamma_3) of the true one, so widening the far ends by
  * 1 + 8 ulps > 1 + 2 gamma_3 never loses a crossing (pbrt-v3, 3.9.2). */
-#define BVH_WIDEN (1 + 4 * DBL_EPSILON)
+#define BVH_WIDEN (1 + 4 * REAL_EPSILON)
 
 /* Says whether the ray meets node's box at some t in [0, tmax]; if so,
  * stores in *enter where it enters (to within rounding, never later than
  * the true entry by more than BVH_WIDEN allows). The reciprocal directions
  * are +-inf for a zero component: the products then are +-inf (outside the
  * slab or inside it) or NaN (on its plane), which the comparisons ignore. */
-static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, double tmax,
-                                double *enter)
+static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, real tmax,
+                                real *enter)
 {
-    const double *b = node->box;
-    double t0 = 0, t1 = tmax * BVH_WIDEN;
-    double nx = (b[r->near[0]] - r->o[0]) * r->inv[0], fx = (b[r->far[0]] - r->o[0]) * r->inv[0];
-    double ny = (b[r->near[1]] - r->o[1]) * r->inv[1], fy = (b[r->far[1]] - r->o[1]) * r->inv[1];
-    double nz = (b[r->near[2]] - r->o[2]) * r->inv[2], fz = (b[r->far[2]] - r->o[2]) * r->inv[2];
+    const real *b = node->box;
+    real t0 = 0, t1 = tmax * BVH_WIDEN;
+    real nx = (b[r->near[0]] - r->o[0]) * r->inv[0], fx = (b[r->far[0]] - r->o[0]) * r->inv[0];
+    real ny = (b[r->near[1]] - r->o[1]) * r->inv[1], fy = (b[r->far[1]] - r->o[1]) * r->inv[1];
+    real nz = (b[r->near[2]] - r->o[2]) * r->inv[2], fz = (b[r->far[2]] - r->o[2]) * r->inv[2];
 
     fx *= BVH_WIDEN;
     fy *= BVH_WIDEN;
@@ -406,16 +414,16 @@ static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, double tma
 }
 
 /* bvh_box_enter() when the entry point is not needed. */
-static inline int bvh_box_hit(const BvhNode *node, const BvhRay *r, double tmax)
+static inline int bvh_box_hit(const BvhNode *node, const BvhRay *r, real tmax)
 {
-    double enter;
+    real enter;
 
     return bvh_box_enter(node, r, tmax, &enter);
 }
 
 /* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
-static int bvh_prim_hit(const Scene *scene, uint32_t ref, const Ray *ray, double tmin, double tmax,
-                        double *t)
+static int bvh_prim_hit(const Scene *scene, uint32_t ref, const Ray *ray, real tmin, real tmax,
+                        real *t)
 {
     if (ref & BVH_TRIANGLE)
         return triangle_intersect(&scene->triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
@@ -428,16 +436,16 @@ static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
                               : scene->spheres[ref].order;
 }
 
-int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax, BvhHit *hit)
+int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
 {
     BvhRay r = bvh_ray(ray);
     struct {
         uint32_t id;  /* a node still to visit */
-        double enter; /* where the ray enters its box */
+        real enter; /* where the ray enters its box */
     } stack[BVH_STACK];
     int top = 0, found = 0;
     uint32_t id = 0;
-    double enter, bound = tmax; /* primitives are tested below bound */
+    real enter, bound = tmax; /* primitives are tested below bound */
 
     if (!bvh_box_enter(&bvh->nodes[0], &r, tmax, &enter))
         return 0;
@@ -447,7 +455,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
         if (node->count > 0) {
             for (uint32_t k = node->index; k < node->index + node->count; k++) {
                 uint32_t ref = bvh->prims[k];
-                double t;
+                real t;
                 unsigned order;
                 if (!bvh_prim_hit(scene, ref, ray, 0, bound, &t))
                     continue;
@@ -458,8 +466,8 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
                     hit->order = order;
                     found = 1;
                     /* An exact tie with an earlier-listed object must
-                     * still be seen: the bound is the next double up. */
-                    bound = ray_next(t, 1);
+                     * still be seen: the bound is the next real up. */
+                    bound = real_next(t, 1);
                 }
             }
         } else {
@@ -468,14 +476,14 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
              * entered exactly at the best t may still hold an
              * earlier-listed object at that t: the limit keeps it. */
             uint32_t a = id + 1, b = node->index;
-            double ta, tb, limit = found ? hit->t : tmax;
+            real ta, tb, limit = found ? hit->t : tmax;
             int ha = bvh_box_enter(&bvh->nodes[a], &r, limit, &ta);
             int hb = bvh_box_enter(&bvh->nodes[b], &r, limit, &tb);
 
             if (ha && hb) {
                 if (tb < ta) {
                     uint32_t tmp = a;
-                    double tt = ta;
+                    real tt = ta;
                     a = b;
                     b = tmp;
                     ta = tb;
@@ -512,7 +520,7 @@ typedef struct {
 
 /* Returns the next leaf whose box the ray r meets at some t in [0, tmax],
  * or NULL when there are no more; start w with bvh_walk_start(). */
-static const BvhNode *bvh_next_leaf(const Bvh *bvh, const BvhRay *r, double tmax, BvhWalk *w)
+static const BvhNode *bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w)
 {
     while (w->top > 0) {
         uint32_t id = w->stack[--w->top];
@@ -534,12 +542,12 @@ static void bvh_walk_start(BvhWalk *w)
     w->top = 1;
 }
 
-int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax)
+int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
 {
     BvhRay r = bvh_ray(ray);
     BvhWalk w;
     const BvhNode *leaf;
-    double t;
+    real t;
 
     bvh_walk_start(&w);
     while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL)
@@ -555,14 +563,14 @@ static int bvh_crossing_before(const BvhCrossing *a, const BvhCrossing *b)
     return a->prim < b->prim; /* BVH_TRIANGLE is the top bit */
 }
 
-int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, double tmax,
+int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
                   BvhCrossing *out, int max)
 {
     BvhRay r = bvh_ray(ray);
     BvhWalk w;
     const BvhNode *leaf;
     int n = 0;
-    double t;
+    real t;
 
     bvh_walk_start(&w);
     while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL) {

@@ -359,7 +359,11 @@ int main(int argc, char **argv)
         fputs(options_help(), stdout);
         return 0;
     case OPTIONS_VERSION:
+#ifdef RAYTRACE_REAL_FLOAT
+        puts("raytrace " RAYTRACE_VERSION " (geometry in single precision: make REAL=float)");
+#else
         puts("raytrace " RAYTRACE_VERSION);
+#endif
         return 0;
     case OPTIONS_USAGE:
         return main_usage(msg);

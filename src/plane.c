@@ -5,7 +5,7 @@
 #include <math.h>
 
 /*
- * Error bound of plane_surface_at()'s point, as a multiple of u = DBL_EPSILON
+ * Error bound of plane_surface_at()'s point, as a multiple of u = REAL_EPSILON
  * / 2 of |point| + |plane point| per component. The re-projection
  * p - ((p - q) . n) n rounds a few times (about 8u of those magnitudes); 16
  * leaves the margin that the next intersection test needs to see the offset
@@ -33,10 +33,10 @@ Plane plane_make(Vec3 point, Vec3 n, double tile, Material m)
     return pl;
 }
 
-int plane_intersect(const Plane *pl, const Ray *ray, double tmin, double tmax, double *t)
+int plane_intersect(const Plane *pl, const Ray *ray, real tmin, real tmax, real *t)
 {
-    double den = vec3_dot(pl->normal, ray->dir);
-    double tt;
+    real den = vec3_dot(pl->normal, ray->dir);
+    real tt;
 
     if (den == 0)
         return 0;
@@ -50,8 +50,8 @@ int plane_intersect(const Plane *pl, const Ray *ray, double tmin, double tmax, d
 SurfacePoint plane_surface_at(const Plane *pl, Vec3 p)
 {
     SurfacePoint sp;
-    double u = DBL_EPSILON / 2, g = PLANE_ERROR_ULPS * u / (1 - PLANE_ERROR_ULPS * u);
-    double dist = vec3_dot(vec3_sub(p, pl->point), pl->normal);
+    real u = REAL_EPSILON / 2, g = PLANE_ERROR_ULPS * u / (1 - PLANE_ERROR_ULPS * u);
+    real dist = vec3_dot(vec3_sub(p, pl->point), pl->normal);
 
     sp.point = vec3_sub(p, vec3_scale(pl->normal, dist));
     sp.normal = pl->normal;

@@ -1,18 +1,17 @@
 /* ray.c: where secondary rays start (see ray.h). */
 #include "ray.h"
 
-#include <math.h>
 
-/* Moves x, a finite double, one representable double in the direction of
+/* Moves x, a finite real, one representable real in the direction of
  * the sign of step (not at all for 0 or NaN). */
-static inline double ray_nudge(double x, double step)
+static inline real ray_nudge(real x, real step)
 {
-    return step == 0 || !(step == step) ? x : ray_next(x, step > 0);
+    return step == 0 || !(step == step) ? x : real_next(x, step > 0);
 }
 
 Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
 {
-    double d = vec3_dot(vec3_abs(n), perr);
+    real d = vec3_dot(vec3_abs(n), perr);
     Vec3 offset = vec3_scale(n, d);
     Vec3 o;
 
@@ -25,11 +24,11 @@ Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
     return o;
 }
 
-int ray_refract(Vec3 d, Vec3 n, double eta, Vec3 *out)
+int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out)
 {
     Vec3 u = vec3_normalize(d);
-    double cos_i = -vec3_dot(u, n);
-    double k = 1 - eta * eta * (1 - cos_i * cos_i); /* cos^2 of the refracted angle */
+    real cos_i = -vec3_dot(u, n);
+    real k = 1 - eta * eta * (1 - cos_i * cos_i); /* cos^2 of the refracted angle */
 
     if (k < 0)
         return 0;

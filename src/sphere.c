@@ -8,7 +8,7 @@
 
 /*
  * Relative error bound of sphere_surface_at()'s point, in the style of
- * pbrt's gamma(n) = n u / (1 - n u), u = DBL_EPSILON / 2.
+ * pbrt's gamma(n) = n u / (1 - n u), u = REAL_EPSILON / 2.
  *
  * The point is centre + radius * n with n = v / |v|. Normalising leaves |n|
  * within about 3u of 1, the product radius * n_i adds u, the sum adds u of
@@ -21,24 +21,24 @@
  */
 #define SPHERE_ERROR_ULPS 16.0
 
-static double sphere_gamma(double n)
+static real sphere_gamma(real n)
 {
-    double u = DBL_EPSILON / 2;
+    real u = REAL_EPSILON / 2;
     return n * u / (1 - n * u);
 }
 
-int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, double *t)
+int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t)
 {
     Vec3 f = vec3_sub(ray->origin, s->centre);
     Vec3 d = ray->dir;
-    double a = vec3_dot(d, d);
-    double h = vec3_dot(f, d); /* half of the quadratic's b */
-    double r2 = s->radius * s->radius;
+    real a = vec3_dot(d, d);
+    real h = vec3_dot(f, d); /* half of the quadratic's b */
+    real r2 = s->radius * s->radius;
     /* l is f minus its projection on d: its length is the centre's distance
      * to the line, so r2 - |l|^2 = (h^2 - a c) / a without cancellation. */
     Vec3 l = vec3_sub(f, vec3_scale(d, h / a));
-    double disc = r2 - vec3_dot(l, l);
-    double c, q, t0, t1;
+    real disc = r2 - vec3_dot(l, l);
+    real c, q, t0, t1;
 
     if (!(disc >= 0))
         return 0;
@@ -51,7 +51,7 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
         t0 = q / a;
         t1 = c / q;
         if (t0 > t1) {
-            double tmp = t0;
+            real tmp = t0;
             t0 = t1;
             t1 = tmp;
         }
@@ -67,9 +67,9 @@ int sphere_intersect(const Sphere *s, const Ray *ray, double tmin, double tmax, 
     return 0;
 }
 
-int sphere_crossings(const Sphere *s, const Ray *ray, double tmin, double tmax)
+int sphere_crossings(const Sphere *s, const Ray *ray, real tmin, real tmax)
 {
-    double t, t2;
+    real t, t2;
 
     if (!sphere_intersect(s, ray, tmin, tmax, &t))
         return 0;
@@ -81,12 +81,12 @@ SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
 {
     SurfacePoint sp;
     Vec3 v = vec3_sub(p, s->centre);
-    double len = vec3_length(v);
-    double g = sphere_gamma(SPHERE_ERROR_ULPS);
+    real len = vec3_length(v);
+    real g = sphere_gamma(SPHERE_ERROR_ULPS);
 
     /* A hit at the centre (possible only when the radius is below the
      * resolution of the coordinates) has no direction: any unit one will do. */
-    sp.normal = len > 0 ? vec3_scale(v, 1.0 / len) : vec3(0, 0, 1);
+    sp.normal = len > 0 ? vec3_scale(v, (real)1 / len) : vec3(0, 0, 1);
     sp.shading = sp.normal;
     sp.point = vec3_add(s->centre, vec3_scale(sp.normal, s->radius));
     sp.error = vec3_scale(vec3_add(vec3_abs(s->centre), vec3(s->radius, s->radius, s->radius)), g);

@@ -8,7 +8,7 @@
 #include "texture.h"
 
 /* Stores in *hit the object of kind, index and order crossed at t. */
-static void trace_set_hit(Hit *hit, double t, ShapeKind kind, size_t index, unsigned order)
+static void trace_set_hit(Hit *hit, real t, ShapeKind kind, size_t index, unsigned order)
 {
     hit->t = t;
     hit->kind = kind;
@@ -18,53 +18,53 @@ static void trace_set_hit(Hit *hit, double t, ShapeKind kind, size_t index, unsi
 
 /* Says whether a crossing at t of the object of position order beats *hit
  * (t is at most hit->t): it is nearer, or as near and listed first. */
-static int trace_beats(const Hit *hit, int found, double t, unsigned order)
+static int trace_beats(const Hit *hit, int found, real t, unsigned order)
 {
     return !found || t < hit->t || order < hit->order;
 }
 
 /* Continues trace_nearest() over planes, after *hit (when found); returns
  * whether any object is hit. */
-static int trace_nearest_planes(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
+static int trace_nearest_planes(const Scene *scene, const Ray *ray, real tmax, Hit *hit,
                                 int found)
 {
     /* An exact tie with an earlier-listed object must be seen: the bound is
-     * the next double above the best t. */
-    double bound = found ? ray_next(hit->t, 1) : tmax;
+     * the next real above the best t. */
+    real bound = found ? real_next(hit->t, 1) : tmax;
 
     for (size_t k = 0; k < scene->plane_count; k++) {
         const Plane *pl = &scene->planes[k];
-        double t;
+        real t;
         if (plane_intersect(pl, ray, 0, bound, &t) && trace_beats(hit, found, t, pl->order)) {
             trace_set_hit(hit, t, SHAPE_PLANE, k, pl->order);
             found = 1;
-            bound = ray_next(t, 1);
+            bound = real_next(t, 1);
         }
     }
     return found;
 }
 
 /* Continues trace_nearest() over triangles, tested one by one. */
-static int trace_nearest_triangles(const Scene *scene, const Ray *ray, double tmax, Hit *hit,
+static int trace_nearest_triangles(const Scene *scene, const Ray *ray, real tmax, Hit *hit,
                                    int found)
 {
-    double bound = found ? ray_next(hit->t, 1) : tmax;
+    real bound = found ? real_next(hit->t, 1) : tmax;
 
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
-        double t;
+        real t;
         if (triangle_intersect(tri, ray, 0, bound, &t) &&
             trace_beats(hit, found, t, tri->order)) {
             trace_set_hit(hit, t, SHAPE_TRIANGLE, k, tri->order);
             found = 1;
-            bound = ray_next(t, 1);
+            bound = real_next(t, 1);
         }
     }
     return found;
 }
 
 /* trace_nearest() through the hierarchy, planes aside. */
-static int trace_find_accel(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+static int trace_find_accel(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     BvhHit bh;
     int found = bvh_nearest(scene->accel, scene, ray, tmax, &bh);
@@ -76,7 +76,7 @@ static int trace_find_accel(const Scene *scene, const Ray *ray, double tmax, Hit
 }
 
 /* trace_nearest(), inlined into trace_ray(): its hottest caller. */
-static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+static inline int trace_find(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     int found = 0;
     size_t best = 0;
@@ -84,7 +84,7 @@ static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hi
     if (scene->accel)
         return trace_find_accel(scene, ray, tmax, hit);
     for (size_t k = 0; k < scene->sphere_count; k++) {
-        double t;
+        real t;
         /* The interval is open at tmax, so an exact tie keeps the earlier sphere. */
         if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t)) {
             tmax = t;
@@ -101,14 +101,14 @@ static inline int trace_find(const Scene *scene, const Ray *ray, double tmax, Hi
     return found;
 }
 
-int trace_nearest(const Scene *scene, const Ray *ray, double tmax, Hit *hit)
+int trace_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     return trace_find(scene, ray, tmax, hit);
 }
 
-int trace_occluded(const Scene *scene, const Ray *ray, double tmax)
+int trace_occluded(const Scene *scene, const Ray *ray, real tmax)
 {
-    double t;
+    real t;
 
     for (size_t k = 0; k < scene->plane_count; k++)
         if (plane_intersect(&scene->planes[k], ray, 0, tmax, &t))
@@ -135,10 +135,10 @@ static int trace_attenuate(double *share, const Material *m, int crossings)
 
 /* Multiplies *share by the transparency of every plane the ray crosses at
  * 0 < t < tmax; returns 0 once nothing is left, else 1. */
-static int trace_attenuate_planes(const Scene *scene, const Ray *ray, double tmax,
+static int trace_attenuate_planes(const Scene *scene, const Ray *ray, real tmax,
                                   double *share)
 {
-    double t;
+    real t;
 
     for (size_t k = 0; k < scene->plane_count; k++) {
         const Plane *pl = &scene->planes[k];
@@ -152,7 +152,7 @@ static int trace_attenuate_planes(const Scene *scene, const Ray *ray, double tma
  * multiplied in the order of the loop below (spheres, planes, triangles,
  * each by index), so the product has the very same bits. Returns -1 when
  * there are too many crossings to list. */
-static double trace_transmittance_accel(const Scene *scene, const Ray *ray, double tmax)
+static double trace_transmittance_accel(const Scene *scene, const Ray *ray, real tmax)
 {
     enum { MAX = 64 };
     BvhCrossing c[MAX];
@@ -175,9 +175,10 @@ static double trace_transmittance_accel(const Scene *scene, const Ray *ray, doub
     return share;
 }
 
-double trace_transmittance(const Scene *scene, const Ray *ray, double tmax)
+double trace_transmittance(const Scene *scene, const Ray *ray, real tmax)
 {
-    double share = 1, t;
+    double share = 1;
+    real t;
 
     if (scene->accel) {
         double s = trace_transmittance_accel(scene, ray, tmax);

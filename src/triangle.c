@@ -6,7 +6,7 @@
 
 /*
  * Error bound of triangle_surface_at()'s point, as a multiple of u =
- * DBL_EPSILON / 2 of the largest vertex magnitude per component. The point is
+ * REAL_EPSILON / 2 of the largest vertex magnitude per component. The point is
  * a barycentric blend b0 v0 + b1 v1 + b2 v2 (pbrt-v4 bounds it by 7u of
  * sum |b_i v_i|); bounding by the vertices' magnitude with 16u also covers the
  * rounding of the next ray's triple products, which are computed from
@@ -28,12 +28,12 @@ static int triangle_vertex_before(Vec3 a, Vec3 b)
 int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
 {
     Vec3 e1 = vec3_sub(v1, v0), e2 = vec3_sub(v2, v0);
-    double scale = fmax(vec3_max_abs(e1), vec3_max_abs(e2));
+    real scale = fmax(vec3_max_abs(e1), vec3_max_abs(e2));
     Vec3 n;
 
     /* The normal of scaled edges: a tiny triangle's cross product would
      * underflow. */
-    if (scale > 0 && scale <= DBL_MAX) {
+    if (scale > 0 && scale <= REAL_MAX) {
         int k = vec3_unit_exponent(scale);
         n = vec3_cross(vec3_ldexp(e1, k), vec3_ldexp(e2, k));
     } else {
@@ -63,7 +63,7 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
 /* Returns d . (p x q), the weight of the vertex opposite an edge whose
  * vertices lie at p and q from the ray origin; computed as -(d . (q x p))
  * when the edge is swapped, so that every triangle gets the same bits. */
-static double triangle_edge(Vec3 d, Vec3 p, Vec3 q, int swapped)
+static real triangle_edge(Vec3 d, Vec3 p, Vec3 q, int swapped)
 {
     return swapped ? -vec3_dot(d, vec3_cross(q, p)) : vec3_dot(d, vec3_cross(p, q));
 }
@@ -72,9 +72,9 @@ static double triangle_edge(Vec3 d, Vec3 p, Vec3 q, int swapped)
  * the ray's line in w, and the vertices relative to the origin in rel;
  * returns their sum, or 0 when the line misses the triangle or runs in its
  * plane. */
-static double triangle_weights(const Triangle *tri, const Ray *ray, double w[3], Vec3 rel[3])
+static real triangle_weights(const Triangle *tri, const Ray *ray, real w[3], Vec3 rel[3])
 {
-    double det;
+    real det;
 
     for (int k = 0; k < 3; k++)
         rel[k] = vec3_sub(tri->v[k], ray->origin);
@@ -87,9 +87,9 @@ static double triangle_weights(const Triangle *tri, const Ray *ray, double w[3],
     return det;
 }
 
-int triangle_intersect(const Triangle *tri, const Ray *ray, double tmin, double tmax, double *t)
+int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax, real *t)
 {
-    double w[3], det, den, tt;
+    real w[3], det, den, tt;
     Vec3 rel[3];
 
     det = triangle_weights(tri, ray, w, rel);
@@ -112,8 +112,8 @@ int triangle_intersect(const Triangle *tri, const Ray *ray, double tmin, double 
 SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[2])
 {
     SurfacePoint sp;
-    double w[3], b[3], det, u = DBL_EPSILON / 2;
-    double g = TRIANGLE_ERROR_ULPS * u / (1 - TRIANGLE_ERROR_ULPS * u);
+    real w[3], b[3], det, u = REAL_EPSILON / 2;
+    real g = TRIANGLE_ERROR_ULPS * u / (1 - TRIANGLE_ERROR_ULPS * u);
     Vec3 rel[3], m;
 
     det = triangle_weights(tri, ray, w, rel);

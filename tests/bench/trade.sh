@@ -6,14 +6,22 @@
 # scenes, times them (median of TRADE_RUNS, default 3) and measures the
 # error: on the 8-bit output, the share of channels that differ and the
 # largest difference; on the linear PFM, the root mean square difference
-# (in 8-bit levels). Writes docs/trade.md and its plots docs/trade-*.svg.
+# (in 8-bit levels). Then the precision: the single-precision build against
+# the double one, side by side, on scenes near the origin, far from it, and
+# at huge and tiny scales. Writes docs/trade.md and its plots
+# docs/trade-*.svg.
 #
-# Usage: sh tests/bench/trade.sh RAYTRACE RAYTRACE-DIFF [OUT.md]
+# Usage: sh tests/bench/trade.sh RAYTRACE RAYTRACE-DIFF RAYTRACE-FLOAT SCENEGEN [OUT.md]
+# Environment: TRADE_RUNS (runs per measure, default 3), TRADE_ONLY (a
+# subset of: spp depth cut precision; the others keep their last rows).
 
 RT=$1
 DIFF=$2
-OUT=${3:-docs/trade.md}
+RT_FLOAT=$3
+GEN=$4
+OUT=${5:-docs/trade.md}
 RUNS=${TRADE_RUNS:-3}
+ONLY=${TRADE_ONLY:-"spp depth cut precision"}
 DIR=build/trade
 PLOT=tests/bench/plot.awk
 DOCS=$(dirname "$OUT")
@@ -58,10 +66,14 @@ error() {
     echo "$pct $max $rms"
 }
 
+# wanted SECTION: whether TRADE_ONLY includes it.
+wanted() { case " $ONLY " in *" $1 "*) return 0 ;; esac; return 1; }
+
 # --- samples per pixel: glass.txt at 240 pixels wide ---
 resize scenes/glass.txt 240 >scenes/.trade-glass.txt
 trap 'rm -f scenes/.trade-glass.txt' EXIT
 scene=scenes/.trade-glass.txt
+if wanted spp; then
 echo "trade: samples per pixel" >&2
 timed spp-ref --spp 1024 "$scene" >/dev/null || exit 1
 : >"$DIR/spp.rows"
@@ -75,8 +87,10 @@ done
 awk -v title="Samples per pixel: error against time (glass.txt, 240 x 160)" \
     -v xlabel="render time, s" -v ylabel="RMSE against 1024 samples, levels" -v logx=1 -v logy=1 \
     -f "$PLOT" "$DIR/spp.plot" >"$DOCS/trade-spp.svg"
+fi
 
 # --- maximum depth: facing mirrors and a ring of mirror balls ---
+if wanted depth; then
 echo "trade: maximum depth" >&2
 : >"$DIR/depth.rows"
 : >"$DIR/depth.plot"
@@ -92,8 +106,10 @@ done
 awk -v title="Maximum depth: error against time" -v xlabel="render time, s" \
     -v ylabel="RMSE against depth 50, levels" -v logy=1 \
     -f "$PLOT" "$DIR/depth.plot" >"$DOCS/trade-depth.svg"
+fi
 
 # --- the cut-off: time only, the bytes never change ---
+if wanted cut; then
 echo "trade: cut-off" >&2
 pfm=0
 : >"$DIR/cut.rows"
@@ -115,6 +131,70 @@ for s in glass keyword; do
 done
 awk -v title="Cut-off: render time (the bytes never change)" -v xlabel="cut-off, levels" \
     -v ylabel="render time, s" -v logx=1 -v logy=1 -f "$PLOT" "$DIR/cut.plot" >"$DOCS/trade-cutoff.svg"
+pfm=1
+fi
+
+# transform FILE SCALE SHIFT: a course scene (camera, corners, light and
+# spheres only) with every point p moved to SCALE p + SHIFT and every
+# radius to SCALE r.
+transform() {
+    awk -v s="$2" -v d="$3" '
+        function point(i) { $i = sprintf("%.17g", $i * s + d); $(i + 1) = sprintf("%.17g", $(i + 1) * s + d)
+                            $(i + 2) = sprintf("%.17g", $(i + 2) * s + d) }
+        { sub(/#.*/, "") }
+        !/[^ \t]/ { next }
+        { n++ }
+        n <= 4 || n == 7 { point(1) }
+        $1 == "sphere:" { point(2); $5 = sprintf("%.17g", $5 * s) }
+        { print }' "$1"
+}
+
+# pair NAME SCENE OPTIONS...: renders SCENE with the double and the float
+# build, run for run alternately RUNS times; prints "double-s float-s" (the
+# medians) and leaves NAME-double.ppm/.pfm and NAME-float.ppm/.pfm.
+pair() {
+    name=$1
+    shift
+    : >"$DIR/times-double"
+    : >"$DIR/times-float"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        for b in double float; do
+            [ $b = double ] && bin=$RT || bin=$RT_FLOAT
+            start=$(now)
+            "$bin" -q "$@" "$DIR/$name-$b.ppm" || exit 1
+            end=$(now)
+            echo $(((end - start) / 1000000)) >>"$DIR/times-$b"
+        done
+        i=$((i + 1))
+    done
+    "$RT" -q "$@" "$DIR/$name-double.pfm" || exit 1
+    "$RT_FLOAT" -q "$@" "$DIR/$name-float.pfm" || exit 1
+    echo "$(median <"$DIR/times-double") $(median <"$DIR/times-float")"
+}
+
+# --- precision: the float build against the double one ---
+if wanted precision; then
+echo "trade: precision" >&2
+: >"$DIR/real.rows"
+"$GEN" spheres 1000 | resize /dev/stdin 960 >"$DIR/field.txt" || exit 1
+transform scenes/course.txt 1 0 | resize /dev/stdin 1200 >"$DIR/course-1.txt"
+transform scenes/course.txt 0.0001 0 | resize /dev/stdin 1200 >"$DIR/course-tiny.txt"
+transform scenes/course.txt 1000000 0 | resize /dev/stdin 1200 >"$DIR/course-huge.txt"
+transform scenes/course.txt 1 10000000 | resize /dev/stdin 1200 >"$DIR/course-far.txt"
+transform scenes/course.txt 0.000001 1 | resize /dev/stdin 1200 >"$DIR/course-far-tiny.txt"
+for s in course-1 course-tiny course-huge course-far course-far-tiny field mirrors keyword obj; do
+    case $s in
+    mirrors | keyword | obj) f=scenes/$s.txt ;;
+    *) f=$DIR/$s.txt ;;
+    esac
+    set -- $(pair "real-$s" "$f") || exit 1
+    td=$1 tf=$2
+    set -- $(error "real-$s-double" "real-$s-float")
+    printf '| %s | %.3f s | %.3f s | %.2f | %s%% | %s | %s |\n' "$s" "$(echo "$td / 1000" | bc -l)" \
+        "$(echo "$tf / 1000" | bc -l)" "$(echo "$td / $tf" | bc -l)" "$1" "$2" "$3" >>"$DIR/real.rows"
+done
+fi
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -1)
 {
@@ -163,5 +243,20 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "| scene | depth | cut-off | time | rays left out | pixels traced again | same bytes |"
     echo "|-------|-------|---------|------|---------------|---------------------|------------|"
     cat "$DIR/cut.rows"
+    echo
+    echo "## Precision: float against double"
+    echo
+    echo "\`make REAL=float\` computes the geometry (points, directions, ray"
+    echo "parameters, intersections, error bounds, the hierarchy's boxes) in"
+    echo "single precision; colours stay double (include/real.h). Each scene is"
+    echo "rendered by both builds, run for run alternately; the error is the float"
+    echo "render's against the double one. The course scene is also shown"
+    echo "scaled by 10^-4 and 10^6, moved 10^7 away on each axis, and both shrunk"
+    echo "to 10^-6 and moved 1 away, all at 1200 × 1200; \`field\` is the"
+    echo "benchmark's 1,000-sphere field at 960 × 540."
+    echo
+    echo "| scene | double | float | speed-up | channels that differ | largest difference | RMSE (linear) |"
+    echo "|-------|--------|-------|----------|----------------------|--------------------|---------------|"
+    cat "$DIR/real.rows"
 } >"$OUT"
 echo "trade: wrote $OUT" >&2
