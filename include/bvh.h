@@ -51,6 +51,12 @@ int bvh_build(Bvh *bvh, const struct Scene *scene);
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);
 
+/* Returns the most bytes bvh_build() allocates at once for n primitives. */
+size_t bvh_build_memory(size_t n);
+
+/* Returns the bytes *bvh holds. */
+size_t bvh_memory(const Bvh *bvh);
+
 /* The nearest crossing a query found. */
 typedef struct {
     real t;       /* ray parameter */

@@ -24,7 +24,8 @@ typedef struct {
     unsigned char *data; /* len bytes, owned */
     size_t len;
     size_t cap;
-    int failed;
+    int failed;          /* 1: memory ran out; 2: len would have passed max */
+    size_t max;          /* the most bytes it may hold; 0: no limit */
 } ByteBuf;
 
 /* Appends n bytes to b (or sets b->failed). */
@@ -43,7 +44,8 @@ int deflate_zlib(ByteBuf *out, const unsigned char *in, size_t n, DeflateMode mo
 
 /* Inflates the zlib stream of n bytes at in, appending the data to out;
  * returns 0, or -1 with a message in msg (size msg_size) when the stream is
- * malformed, fails its checksum or memory runs out. */
+ * malformed, fails its checksum, holds more than out->max allows (a
+ * decompression bomb stops there) or memory runs out. */
 int inflate_zlib(ByteBuf *out, const unsigned char *in, size_t n, char *msg, size_t msg_size);
 
 #endif

@@ -16,9 +16,11 @@
 #include "scene.h"
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
- * and for relative mesh paths, into *scene, which this call initialises;
- * returns 0, or -1 with *err filled and *scene empty. */
-int keyword_parse_text(const char *name, const char *text, size_t len, Scene *scene,
+ * and for relative mesh paths, into *scene, which this call initialises
+ * with memory_limit (scene.h); returns 0, or -1 with *err filled and *scene
+ * empty. */
+int keyword_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                       Scene *scene,
                        Error *err);
 
 #endif

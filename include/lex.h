@@ -123,6 +123,10 @@ int lex_fail_extra(Lexer *L, const Record *rec, int k, const char *what);
  * string; NULL with the fault recorded when memory runs out. */
 char *lex_path(Lexer *L, const Token *t);
 
+/* Records that the element of rec cannot be stored: over = 1 when it would
+ * pass the memory limit of limit bytes, 0 when memory ran out; returns -1. */
+int lex_fail_memory(Lexer *L, const Record *rec, int over, size_t limit);
+
 /* Records that the file named by token t of rec, a `what` ("texture",
  * "mesh"), cannot be used, quoting the fault inner found in it. */
 void lex_fail_file(Lexer *L, const Record *rec, const Token *t, const char *what,

@@ -36,12 +36,17 @@ typedef struct ObjMesh {
     size_t tri_count;
 } ObjMesh;
 
-/* Reads the OBJ file at path into *mesh; returns 0, or -1 with *err naming
- * the fault, its line and column. Free with obj_free(). */
-int obj_load(const char *path, ObjMesh *mesh, Error *err);
+/* Reads the OBJ file at path into *mesh, its arrays taking at most
+ * max_bytes (0: no limit); returns 0, or -1 with *err naming the fault, its
+ * line and column. Free with obj_free(). */
+int obj_load(const char *path, size_t max_bytes, ObjMesh *mesh, Error *err);
 
 /* obj_load() on the len bytes at text, errors naming name. */
-int obj_parse(const char *name, const char *text, size_t len, ObjMesh *mesh, Error *err);
+int obj_parse(const char *name, const char *text, size_t len, size_t max_bytes, ObjMesh *mesh,
+              Error *err);
+
+/* Returns the bytes the arrays of *mesh hold (at least). */
+size_t obj_memory(const ObjMesh *mesh);
 
 /* Releases what *mesh owns. */
 void obj_free(ObjMesh *mesh);

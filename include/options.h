@@ -7,6 +7,7 @@
 #include <stddef.h>
 
 #define OPTIONS_DEFAULT_CUTOFF 0.001 /* levels */
+#define OPTIONS_DEFAULT_MEMORY_LIMIT ((size_t)4 << 30) /* bytes: 4 GiB */
 
 typedef struct {
     const char *scene_path;  /* scene file, "-" for standard input */
@@ -25,6 +26,8 @@ typedef struct {
     const char *save_path;   /* --save OUT, or NULL */
     double cutoff;           /* --cutoff: levels below which secondary rays
                                 are left out (render.h) */
+    size_t memory_limit;     /* --memory-limit: bytes the scene, its
+                                hierarchy and the image may take; 0: none */
 } Options;
 
 /* What options_parse() found the command line asks for. */

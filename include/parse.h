@@ -17,9 +17,10 @@
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative texture and mesh paths, into *scene, which this call
- * initialises, ready to render (a tiny scene is enlarged exactly by
- * scene_fit_scale()); returns 0, or -1 with *err filled and *scene empty.
- * load.h reads files, in either format. */
-int parse_scene_text(const char *name, const char *text, size_t len, Scene *scene, Error *err);
+ * initialises with memory_limit (scene.h), ready to render (a tiny scene is
+ * enlarged exactly by scene_fit_scale()); returns 0, or -1 with *err filled
+ * and *scene empty. load.h reads files, in either format. */
+int parse_scene_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                     Scene *scene, Error *err);
 
 #endif

@@ -92,7 +92,13 @@ typedef struct Scene {
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()
                                enlarged a tiny scene */
+    size_t memory_limit;    /* bytes the scene's arrays, meshes being read and
+                               hierarchy may take together; 0: no limit */
 } Scene;
+
+/* What scene_add_*() and scene_build_accel() return when the memory limit
+ * would be passed (-1 is for memory running out). */
+#define SCENE_OVER_LIMIT (-2)
 
 /* Makes *scene an empty scene that owns nothing. */
 void scene_init(Scene *scene);
@@ -101,8 +107,9 @@ void scene_init(Scene *scene);
 void scene_free(Scene *scene);
 
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
- * position among the scene's objects; returns 0, or -1 with the scene
- * unchanged when memory runs out. */
+ * position among the scene's objects; returns 0, or -1 when memory runs
+ * out or SCENE_OVER_LIMIT when it would pass the memory limit, the scene
+ * unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
@@ -111,8 +118,9 @@ int scene_add_triangle(Scene *scene, const Triangle *t);
 /* Appends the triangles of OBJ mesh m with material mat, smooth where all
  * three corners have a non-zero normal, with the texture coordinates of
  * their corners when all three have some; triangles without area are left
- * out. Returns how many it added, or -1 when memory runs out (those added
- * stay). */
+ * out. Returns how many it added, -1 when memory runs out (those added
+ * stay), or SCENE_OVER_LIMIT (none added) when the triangles and the mesh
+ * together would pass the memory limit. */
 long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
 
 /* Appends *m, taking ownership of its name (freed on failure); returns its
@@ -128,9 +136,23 @@ int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
 int scene_add_texture(Scene *scene, Texture *tex);
 
 /* Builds the acceleration structure (bvh.h) when the scene has enough
- * spheres and triangles to gain from one; returns 0, or -1 when memory runs
- * out (the scene is then left without one, and still renders). */
+ * spheres and triangles to gain from one; returns 0, SCENE_OVER_LIMIT
+ * (nothing allocated) when its estimated size would pass the memory limit,
+ * or -1 when memory runs out (the scene is then left without one, and still
+ * renders). */
 int scene_build_accel(Scene *scene);
+
+/* Returns the bytes the scene holds: its arrays at their capacity, its
+ * textures' texels and its hierarchy. */
+size_t scene_memory(const Scene *scene);
+
+/* Returns the budget to give obj_load() for a mesh of this scene: the bytes
+ * left under the limit (at least 1), or 0 without a limit. */
+size_t scene_obj_budget(const Scene *scene);
+
+/* Returns the bytes of the limit left for more (SIZE_MAX without a limit,
+ * 0 once it is used up). */
+size_t scene_memory_left(const Scene *scene);
 
 /* Returns the number of objects (shapes) in the scene. */
 size_t scene_object_count(const Scene *scene);

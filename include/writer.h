@@ -33,6 +33,11 @@ int writer_format_named(const char *name);
  * case), or FORMAT_PPM for any other name and for "-". */
 ImageFormat writer_format_for(const char *path);
 
+/* Returns the bytes a width x height image takes in memory, and writing it
+ * as opts say on top of that (PNG: its filtered rows and their compressed
+ * stream; PFM: the linear colours). */
+size_t writer_memory(const WriterOptions *opts, int width, int height);
+
 /* Writes img to f as opts say; img must keep its linear colours for PFM.
  * Returns 0, or -1 with errno set. */
 int writer_write(FILE *f, const Image *img, const WriterOptions *opts);

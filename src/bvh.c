@@ -349,6 +349,18 @@ int bvh_build(Bvh *bvh, const Scene *scene)
     return 0;
 }
 
+size_t bvh_build_memory(size_t n)
+{
+    size_t each = sizeof(BuildPrim) + 2 * sizeof(BvhNode) + sizeof(uint32_t);
+
+    return n > (SIZE_MAX - 4096) / each ? SIZE_MAX : n * each + 4096;
+}
+
+size_t bvh_memory(const Bvh *bvh)
+{
+    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims;
+}
+
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);

@@ -9,6 +9,10 @@ void bytebuf_append(ByteBuf *b, const void *bytes, size_t n)
 {
     if (b->failed)
         return;
+    if (b->max && n > b->max - b->len) {
+        b->failed = 2;
+        return;
+    }
     if (n > b->cap - b->len) {
         size_t cap = b->cap ? b->cap : 4096;
         unsigned char *grown;
@@ -352,6 +356,9 @@ static int inflate_codes(BitReader *r, ByteBuf *out, const Huffman *lit, const H
             unsigned char byte = (unsigned char)s;
             bytebuf_append(out, &byte, 1);
         } else if (s == 256) {
+            if (out->failed)
+                snprintf(msg, msg_size, out->failed == 2 ? "more data than the image needs" :
+                                                           "out of memory");
             return out->failed ? -1 : 0;
         } else {
             int len, d, distance;
@@ -498,7 +505,8 @@ int inflate_zlib(ByteBuf *out, const unsigned char *in, size_t n, char *msg, siz
             return -1;
         }
         if (out->failed) {
-            snprintf(msg, msg_size, "out of memory");
+            snprintf(msg, msg_size, out->failed == 2 ? "more data than the image needs" :
+                                                       "out of memory");
             return -1;
         }
     }

@@ -229,12 +229,11 @@ static int keyword_numbers_and_material(Keyword *K, const Record *rec, int first
     return 0;
 }
 
-/* Records that the scene ran out of memory after its objects. */
-static int keyword_fail_objects(Keyword *K, const Scene *scene)
+/* Records that rec's element could not be stored, scene_add_*() having
+ * returned rc; returns -1. */
+static int keyword_fail_store(Keyword *K, const Record *rec, const Scene *scene, long rc)
 {
-    error_set(K->lex.err, K->lex.name, "out of memory after %zu objects",
-              scene_object_count(scene));
-    return -1;
+    return lex_fail_memory(&K->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
 }
 
 /* camera -> 'camera' x0 y0 z0 xA yA zA alpha width height */
@@ -332,7 +331,7 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     pm.name[name->len] = '\0';
     index = scene_add_phong(scene, &pm);
     if (index < 0)
-        return keyword_fail_memory(K);
+        return keyword_fail_store(K, rec, scene, index);
     scene->phong[index].base.phong = index;
     return keyword_file_name(K, scene, name, (size_t)index);
 }
@@ -347,7 +346,10 @@ static int keyword_sphere_record(Keyword *K, const Record *rec, Scene *scene)
         return -1;
     s.centre = vec3(v[0], v[1], v[2]);
     s.radius = v[3];
-    return scene_add_sphere(scene, &s) != 0 ? keyword_fail_objects(K, scene) : 0;
+    {
+        int rc = scene_add_sphere(scene, &s);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
 }
 
 /* plane -> 'plane' px py pz nx ny nz material */
@@ -365,7 +367,10 @@ static int keyword_plane_record(Keyword *K, const Record *rec, Scene *scene)
         return -1;
     }
     pl = plane_make(vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m);
-    return scene_add_plane(scene, &pl) != 0 ? keyword_fail_objects(K, scene) : 0;
+    {
+        int rc = scene_add_plane(scene, &pl);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
 }
 
 /* triangle -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material */
@@ -383,7 +388,10 @@ static int keyword_triangle_record(Keyword *K, const Record *rec, Scene *scene)
                      "the triangle's three vertices lie on one line: it has no area");
         return -1;
     }
-    return scene_add_triangle(scene, &tri) != 0 ? keyword_fail_objects(K, scene) : 0;
+    {
+        int rc = scene_add_triangle(scene, &tri);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
 }
 
 /* Returns a new string holding token t; NULL out of memory. */
@@ -422,7 +430,7 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
     sm.opened = lex_path(&K->lex, path_tok);
     if (!sm.opened)
         return -1;
-    if (obj_load(sm.opened, &mesh, &inner) != 0) {
+    if (obj_load(sm.opened, scene_obj_budget(scene), &mesh, &inner) != 0) {
         lex_fail_file(&K->lex, rec, path_tok, "mesh", &inner);
         free(sm.opened);
         return -1;
@@ -433,7 +441,7 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
     if (added <= 0) {
         free(sm.opened);
         if (added < 0)
-            return keyword_fail_objects(K, scene);
+            return keyword_fail_store(K, rec, scene, added);
         keyword_fail(K, &rec->line, path_tok->column,
                      "the mesh %s has no faces with an area: nothing to draw",
                      lex_quote(q, sizeof q, path_tok));
@@ -445,7 +453,10 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
         free(sm.opened);
         return keyword_fail_memory(K);
     }
-    return scene_add_mesh_record(scene, &sm) != 0 ? keyword_fail_memory(K) : 0;
+    {
+        int rc = scene_add_mesh_record(scene, &sm);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
 }
 
 /* light -> 'light' x y z r g b i */
@@ -467,8 +478,11 @@ static int keyword_light_record(Keyword *K, const Record *rec, Scene *scene)
     light.distant = 1;
     light.intensity = v[6];
     light.to_light = vec3_neg(vec3_direction(light.position));
-    if (scene_add_light(scene, &light) != 0)
-        return keyword_fail_memory(K);
+    {
+        int rc = scene_add_light(scene, &light);
+        if (rc != 0)
+            return keyword_fail_store(K, rec, scene, rc);
+    }
     return 0;
 }
 
@@ -574,13 +588,14 @@ static int keyword_elements(Keyword *K, Scene *scene)
     return rc;
 }
 
-int keyword_parse_text(const char *name, const char *text, size_t len, Scene *scene,
-                       Error *err)
+int keyword_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                       Scene *scene, Error *err)
 {
     Keyword K;
     int rc;
 
     scene_init(scene);
+    scene->memory_limit = memory_limit;
     scene->format = SCENE_KEYWORD;
     lex_init(&K.lex, name, text, len, err);
     K.camera_line = K.ambient_line = K.background_line = 0;

@@ -323,6 +323,18 @@ char *lex_path(Lexer *L, const Token *t)
     return path;
 }
 
+int lex_fail_memory(Lexer *L, const Record *rec, int over, size_t limit)
+{
+    if (over)
+        lex_fail(L, &rec->line, rec->tok[0].column,
+                 "the scene would pass the memory limit of %zu MiB here: raise it with "
+                 "--memory-limit",
+                 limit >> 20);
+    else
+        lex_fail(L, &rec->line, rec->tok[0].column, "out of memory");
+    return -1;
+}
+
 void lex_fail_file(Lexer *L, const Record *rec, const Token *t, const char *what,
                    const Error *inner)
 {

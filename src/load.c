@@ -42,16 +42,17 @@ SceneFormat load_detect(const char *text, size_t len)
 }
 
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
-                    Scene *scene, Error *err)
+                    size_t memory_limit, Scene *scene, Error *err)
 {
     if (format == SCENE_AUTO)
         format = load_detect(text, len);
     if (format == SCENE_KEYWORD)
-        return keyword_parse_text(name, text, len, scene, err);
-    return parse_scene_text(name, text, len, scene, err);
+        return keyword_parse_text(name, text, len, memory_limit, scene, err);
+    return parse_scene_text(name, text, len, memory_limit, scene, err);
 }
 
-int load_scene_file(const char *path, SceneFormat format, Scene *scene, Error *err)
+int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,
+                    Error *err)
 {
     char *text;
     size_t len;
@@ -60,7 +61,7 @@ int load_scene_file(const char *path, SceneFormat format, Scene *scene, Error *e
     scene_init(scene);
     if (file_read_all(path, &text, &len, err) != 0)
         return -1;
-    rc = load_scene_text(file_display_name(path), text, len, format, scene, err);
+    rc = load_scene_text(file_display_name(path), text, len, format, memory_limit, scene, err);
     free(text);
     return rc;
 }

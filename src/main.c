@@ -199,7 +199,8 @@ static int main_check(const Options *opts)
     Scene scene;
     Error err;
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
         main_report(&err);
         return 1;
     }
@@ -222,7 +223,8 @@ static int main_save(const Options *opts)
     Error err;
     int rc;
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
         main_report(&err);
         return 1;
     }
@@ -253,6 +255,29 @@ fail:
 }
 
 /* Renders opts' scene to opts' output; returns the exit status. */
+/* Checks that the image and its writing fit in what the memory limit
+ * leaves after the scene, and sets that much aside from the limit for the
+ * hierarchy still to come; returns 0, or -1 with *err set. */
+static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Options *opts,
+                              Error *err)
+{
+    size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
+    size_t left = scene_memory_left(scene);
+
+    if (scene->memory_limit == 0)
+        return 0;
+    if (need > left) {
+        error_set(err, opts->scene_path,
+                  "a %d x %d image needs %zu MiB to render and write, more than the %zu MiB "
+                  "the memory limit of %zu MiB leaves after the scene (--memory-limit)",
+                  scene->camera.width, scene->camera.height, (need >> 20) + 1, left >> 20,
+                  scene->memory_limit >> 20);
+        return -1;
+    }
+    scene->memory_limit -= need;
+    return 0;
+}
+
 static int main_render(const Options *opts)
 {
     RenderOptions ropts = {opts->max_depth, 1, opts->cutoff, opts->threads, NULL, NULL};
@@ -265,9 +290,10 @@ static int main_render(const Options *opts)
     Image img;
     OutFile out;
     Error err;
-    int threads, tty = isatty(STDERR_FILENO);
+    int threads, rc, tty = isatty(STDERR_FILENO);
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, &scene, &err) != 0) {
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
         main_report(&err);
         return 1;
     }
@@ -282,8 +308,21 @@ static int main_render(const Options *opts)
         goto fail_scene;
     }
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
+    if (main_reserve_image(&scene, &wopts, opts, &err) != 0)
+        goto fail_scene;
     accel_start = main_now();
-    if (!opts->no_accel && scene_build_accel(&scene) != 0)
+    rc = opts->no_accel ? 0 : scene_build_accel(&scene);
+    if (rc == SCENE_OVER_LIMIT) {
+        error_set(&err, opts->scene_path,
+                  "the bounding volume hierarchy of %zu objects needs about %zu MiB, more "
+                  "than the %zu MiB the memory limit leaves (--memory-limit; --no-accel "
+                  "renders without it, slowly)",
+                  scene.sphere_count + scene.triangle_count,
+                  bvh_build_memory(scene.sphere_count + scene.triangle_count) >> 20,
+                  scene_memory_left(&scene) >> 20);
+        goto fail_scene;
+    }
+    if (rc != 0)
         fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
                         "hierarchy: every ray will test every object\n");
     accel_time = main_now() - accel_start;

@@ -18,6 +18,8 @@ typedef struct {
     size_t len;        /* bytes, without the line ending */
     int lineno;        /* 1-based */
     Error *err;
+    size_t max_bytes;  /* the most the mesh's arrays may take; 0: no limit */
+    size_t used;       /* bytes they take now */
 } ObjReader;
 
 /* Records a fault at byte offset `at` of the current line. */
@@ -31,6 +33,12 @@ static int obj_fail(ObjReader *r, size_t at, const char *fmt, ...)
     va_end(ap);
     error_set_at(r->err, r->name, r->lineno, (int)at + 1, r->line, r->len, "%s", msg);
     return -1;
+}
+
+size_t obj_memory(const ObjMesh *mesh)
+{
+    return mesh->v_count * sizeof *mesh->v + mesh->vt_count * sizeof *mesh->vt +
+           mesh->vn_count * sizeof *mesh->vn + mesh->tri_count * sizeof *mesh->tri;
 }
 
 void obj_free(ObjMesh *mesh)
@@ -157,6 +165,27 @@ static int obj_corner(ObjReader *r, const ObjMesh *m, size_t start, size_t end, 
     return 0;
 }
 
+/* Makes room for one more item of size bytes in *items (count of them in
+ * *capacity), within r's byte budget; returns 0, or -1 with the fault
+ * recorded at byte `at` (what: the items, for the message). */
+static int obj_reserve(ObjReader *r, void **items, size_t *capacity, size_t count, size_t size,
+                       size_t at, const char *what)
+{
+    size_t before = *capacity, more;
+
+    if (count < before)
+        return 0;
+    more = grow_next_capacity(before) - before;
+    if (r->max_bytes && (more > SIZE_MAX / size || more * size > r->max_bytes - r->used))
+        return obj_fail(r, at, "the mesh needs more memory than the %zu MiB the memory limit "
+                               "leaves it, after %zu %s",
+                        r->max_bytes >> 20, count, what);
+    if (grow_reserve(items, capacity, count, size) != 0)
+        return obj_fail(r, at, "out of memory after %zu %s", count, what);
+    r->used += (*capacity - before) * size;
+    return 0;
+}
+
 /* f -> corner corner corner corner*: a fan of triangles from the first. */
 static int obj_face(ObjReader *r, ObjMesh *m, size_t i, size_t *tri_cap)
 {
@@ -172,8 +201,9 @@ static int obj_face(ObjReader *r, ObjMesh *m, size_t i, size_t *tri_cap)
         if (n == 0) {
             first = c;
         } else if (n >= 2) {
-            if (grow_reserve((void **)&m->tri, tri_cap, m->tri_count, sizeof *m->tri) != 0)
-                return obj_fail(r, i, "out of memory after %zu triangles", m->tri_count);
+            if (obj_reserve(r, (void **)&m->tri, tri_cap, m->tri_count, sizeof *m->tri, i,
+                            "triangles") != 0)
+                return -1;
             m->tri[m->tri_count][0] = first;
             m->tri[m->tri_count][1] = prev;
             m->tri[m->tri_count][2] = c;
@@ -202,15 +232,17 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
     if (n == 1 && word[0] == 'v') {
         if (obj_numbers(r, &i, "a vertex (x y z)", 3, 3, val) < 0)
             return -1;
-        if (grow_reserve((void **)&m->v, &caps[0], m->v_count, sizeof *m->v) != 0)
-            return obj_fail(r, kw, "out of memory after %zu vertices", m->v_count);
+        if (obj_reserve(r, (void **)&m->v, &caps[0], m->v_count, sizeof *m->v, kw, "vertices") !=
+            0)
+            return -1;
         m->v[m->v_count++] = vec3(val[0], val[1], val[2]);
     } else if (n == 2 && memcmp(word, "vt", 2) == 0) {
         int k = obj_numbers(r, &i, "a texture coordinate (u [v [w]])", 1, 3, val);
         if (k < 0)
             return -1;
-        if (grow_reserve((void **)&m->vt, &caps[1], m->vt_count, sizeof *m->vt) != 0)
-            return obj_fail(r, kw, "out of memory");
+        if (obj_reserve(r, (void **)&m->vt, &caps[1], m->vt_count, sizeof *m->vt, kw,
+                        "texture coordinates") != 0)
+            return -1;
         m->vt[m->vt_count][0] = val[0];
         m->vt[m->vt_count][1] = k > 1 ? val[1] : 0;
         m->vt_count++;
@@ -226,8 +258,9 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
             obj_token(r, &at);
             return obj_fail(r, at, "a normal has 3 numbers (x y z), found more");
         }
-        if (grow_reserve((void **)&m->vn, &caps[2], m->vn_count, sizeof *m->vn) != 0)
-            return obj_fail(r, kw, "out of memory");
+        if (obj_reserve(r, (void **)&m->vn, &caps[2], m->vn_count, sizeof *m->vn, kw,
+                        "normals") != 0)
+            return -1;
         m->vn[m->vn_count++] = vec3(val[0], val[1], val[2]);
     } else if (n == 1 && word[0] == 'f') {
         return obj_face(r, m, i, &caps[3]);
@@ -242,7 +275,7 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
     return 0;
 }
 
-int obj_load(const char *path, ObjMesh *mesh, Error *err)
+int obj_load(const char *path, size_t max_bytes, ObjMesh *mesh, Error *err)
 {
     char *data;
     size_t len;
@@ -251,12 +284,13 @@ int obj_load(const char *path, ObjMesh *mesh, Error *err)
     memset(mesh, 0, sizeof *mesh);
     if (file_read_all(path, &data, &len, err) != 0)
         return -1;
-    rc = obj_parse(file_display_name(path), data, len, mesh, err);
+    rc = obj_parse(file_display_name(path), data, len, max_bytes, mesh, err);
     free(data);
     return rc;
 }
 
-int obj_parse(const char *name, const char *data, size_t len, ObjMesh *mesh, Error *err)
+int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, ObjMesh *mesh,
+              Error *err)
 {
     size_t caps[4] = {0, 0, 0, 0};
     const char *p, *end;
@@ -265,6 +299,8 @@ int obj_parse(const char *name, const char *data, size_t len, ObjMesh *mesh, Err
 
     memset(mesh, 0, sizeof *mesh);
     r.name = name;
+    r.max_bytes = max_bytes;
+    r.used = 0;
     r.err = err;
     r.lineno = 0;
     p = data;

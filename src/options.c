@@ -1,6 +1,7 @@
 /* options.c: command-line parsing (see options.h). */
 #include "options.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -33,6 +34,10 @@ const char *options_help(void)
            "                     less than L levels (0 to 255, default 0.001) to a\n"
            "                     pixel; pixels near a rounding boundary are traced\n"
            "                     again in full, so the bytes never change (0: off)\n"
+           "  --memory-limit M   fail early, before allocating, when the scene, its\n"
+           "                     hierarchy and the image would need more than M\n"
+           "                     bytes (suffix K, M or G: powers of 1024; default\n"
+           "                     4G; 0: no limit)\n"
            "  -j, --threads N    render with N threads, 1 to 1024 (default: one per\n"
            "                     processor; ignored in builds without OpenMP)\n"
            "  --format F         write F: ppm, png or pfm (linear floats, unclamped)\n"
@@ -77,6 +82,34 @@ static int options_int(const char *text, int lo, int hi, int *out)
     if (v < lo)
         return -1;
     *out = (int)v;
+    return 0;
+}
+
+/* Reads a size in bytes, "0" or whole digits with an optional K, M or G
+ * (powers of 1024), into *out; returns 0, or -1 when it is none or too large. */
+static int options_size(const char *text, size_t *out)
+{
+    size_t v = 0, unit = 1;
+    const char *p = text;
+
+    if (*p < '0' || *p > '9')
+        return -1;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (v > (SIZE_MAX - 9) / 10)
+            return -1;
+        v = v * 10 + (size_t)(*p - '0');
+    }
+    if (*p == 'K' || *p == 'k')
+        unit = (size_t)1 << 10;
+    else if (*p == 'M' || *p == 'm')
+        unit = (size_t)1 << 20;
+    else if (*p == 'G' || *p == 'g')
+        unit = (size_t)1 << 30;
+    if (unit > 1)
+        p++;
+    if (*p || v > SIZE_MAX / unit)
+        return -1;
+    *out = v * unit;
     return 0;
 }
 
@@ -133,6 +166,25 @@ static int options_match_real(const char *long_name, double lo, double hi, int a
         return -1;
     }
     *out = v;
+    return 1;
+}
+
+/* If argv[*i] is the option long_name, reads its value, a size (see
+ * options_size()), into *out and returns 1 (or -1 on a bad value, with msg
+ * set); returns 0 when argv[*i] is another argument. */
+static int options_match_size(const char *long_name, int argc, char **argv, int *i, size_t *out,
+                              char *msg, size_t msg_size)
+{
+    const char *value;
+    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
+
+    if (m <= 0)
+        return m;
+    if (options_size(value, out) != 0) {
+        snprintf(msg, msg_size, "option '%s' takes a size in bytes such as 512M or 8G (0: no "
+                                "limit), found '%.40s'", long_name, value);
+        return -1;
+    }
     return 1;
 }
 
@@ -208,6 +260,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->no_accel = 0;
     opts->save_path = NULL;
     opts->cutoff = OPTIONS_DEFAULT_CUTOFF;
+    opts->memory_limit = OPTIONS_DEFAULT_MEMORY_LIMIT;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         int m;
@@ -250,7 +303,9 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
                    (m = options_match_value("--save", NULL, argc, argv, &i, &opts->save_path,
                                             msg, msg_size)) != 0 ||
                    (m = options_match_real("--cutoff", 0, 255, argc, argv, &i, &opts->cutoff,
-                                           msg, msg_size)) != 0) {
+                                           msg, msg_size)) != 0 ||
+                   (m = options_match_size("--memory-limit", argc, argv, &i,
+                                           &opts->memory_limit, msg, msg_size)) != 0) {
             if (m < 0)
                 return OPTIONS_USAGE;
         } else {

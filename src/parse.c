@@ -204,16 +204,20 @@ static int parse_colour(Parser *P, const RecordSpec *spec, Record *rec, Colour *
     return 0;
 }
 
-/* Appends the light of values v (x y z r g b) to the scene. */
-static int parse_add_light(Parser *P, const double *v, Scene *scene)
+/* Records that rec's element could not be stored, scene_add_*() having
+ * returned rc; returns -1. */
+static int parse_fail_memory(Parser *P, const Record *rec, const Scene *scene, long rc)
+{
+    return lex_fail_memory(&P->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
+}
+
+/* Appends the light of values v (x y z r g b), the record rec, to the scene. */
+static int parse_add_light(Parser *P, const Record *rec, const double *v, Scene *scene)
 {
     Light light = light_point(vec3(v[0], v[1], v[2]), colour(v[3], v[4], v[5]));
+    int rc = scene_add_light(scene, &light);
 
-    if (scene_add_light(scene, &light) != 0) {
-        error_set(P->lex.err, P->lex.name, "out of memory after %zu lights", scene->light_count);
-        return -1;
-    }
-    return 0;
+    return rc != 0 ? parse_fail_memory(P, rec, scene, rc) : 0;
 }
 
 /* light -> x y z r g b */
@@ -223,7 +227,7 @@ static int parse_light_record(Parser *P, Record *rec, Scene *scene)
 
     if (parse_header_numbers(P, &parse_light, rec, v) != 0)
         return -1;
-    return parse_add_light(P, v, scene);
+    return parse_add_light(P, rec, v, scene);
 }
 
 /* Checks the screen spanned by the corner records tl, tr and bl. */
@@ -330,26 +334,21 @@ static Material *parse_last_material(Parser *P, Scene *scene)
     }
 }
 
-/* Records that the scene ran out of memory after count objects. */
-static int parse_fail_memory(Parser *P, const Scene *scene)
-{
-    error_set(P->lex.err, P->lex.name, "out of memory after %zu objects", scene_object_count(scene));
-    return -1;
-}
 
 /* sphere -> 'sphere:' cx cy cz radius r g b reflection [transparency index] */
 static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[10];
-    int n = lex_numbers(&P->lex, rec, 1, &parse_sphere, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_sphere, v), rc;
     Sphere s;
 
     if (n < 0 || parse_material(P, rec, &parse_sphere, 1, 4, v, n, &s.material) != 0)
         return -1;
     s.centre = vec3(v[0], v[1], v[2]);
     s.radius = v[3];
-    if (scene_add_sphere(scene, &s) != 0)
-        return parse_fail_memory(P, scene);
+    rc = scene_add_sphere(scene, &s);
+    if (rc != 0)
+        return parse_fail_memory(P, rec, scene, rc);
     parse_note_object(P, PARSE_SHAPE_SPHERE, scene->sphere_count - 1);
     return 0;
 }
@@ -358,7 +357,7 @@ static int parse_sphere_record(Parser *P, const Record *rec, Scene *scene)
 static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[12];
-    int n = lex_numbers(&P->lex, rec, 1, &parse_plane, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_plane, v), rc;
     Material m;
     Plane pl;
 
@@ -370,8 +369,9 @@ static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
         return -1;
     }
     pl = plane_make(vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m);
-    if (scene_add_plane(scene, &pl) != 0)
-        return parse_fail_memory(P, scene);
+    rc = scene_add_plane(scene, &pl);
+    if (rc != 0)
+        return parse_fail_memory(P, rec, scene, rc);
     parse_note_object(P, PARSE_SHAPE_PLANE, scene->plane_count - 1);
     return 0;
 }
@@ -381,7 +381,7 @@ static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
 static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
 {
     double v[15];
-    int n = lex_numbers(&P->lex, rec, 1, &parse_triangle, v);
+    int n = lex_numbers(&P->lex, rec, 1, &parse_triangle, v), rc;
     Material m;
     Triangle tri;
 
@@ -393,8 +393,9 @@ static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
                    "the triangle's three vertices lie on one line: it has no area");
         return -1;
     }
-    if (scene_add_triangle(scene, &tri) != 0)
-        return parse_fail_memory(P, scene);
+    rc = scene_add_triangle(scene, &tri);
+    if (rc != 0)
+        return parse_fail_memory(P, rec, scene, rc);
     parse_note_object(P, PARSE_SHAPE_TRIANGLE, scene->triangle_count - 1);
     return 0;
 }
@@ -406,7 +407,7 @@ static int parse_extra_light_record(Parser *P, const Record *rec, Scene *scene)
 
     if (lex_numbers(&P->lex, rec, 1, &parse_light, v) < 0)
         return -1;
-    return parse_add_light(P, v, scene);
+    return parse_add_light(P, rec, v, scene);
 }
 
 /* Checks that the record keyword of rec, which may appear once, has not
@@ -492,8 +493,8 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
     free(path);
     index = scene_add_texture(scene, &tex);
     if (index < 0)
-        error_set(P->lex.err, P->lex.name, "out of memory after %zu textures", scene->texture_count);
-    return index;
+        parse_fail_memory(P, rec, scene, index);
+    return index < 0 ? -1 : index;
 }
 
 /* mesh -> 'mesh:' path r g b reflection [transparency index] */
@@ -520,7 +521,7 @@ static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
     path = lex_path(&P->lex, &rec->tok[1]);
     if (!path)
         return -1;
-    if (obj_load(path, &mesh, &inner) != 0) {
+    if (obj_load(path, scene_obj_budget(scene), &mesh, &inner) != 0) {
         lex_fail_file(&P->lex, rec, &rec->tok[1], "mesh", &inner);
         free(path);
         return -1;
@@ -529,7 +530,7 @@ static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
     added = scene_add_mesh(scene, &mesh, &mat);
     obj_free(&mesh);
     if (added < 0)
-        return parse_fail_memory(P, scene);
+        return parse_fail_memory(P, rec, scene, added);
     if (added == 0) {
         parse_fail(P, &rec->line, rec->tok[1].column,
                    "the mesh %s has no faces with an area: nothing to draw",
@@ -686,11 +687,13 @@ static int parse_objects(Parser *P, Scene *scene)
     return rc;
 }
 
-int parse_scene_text(const char *name, const char *text, size_t len, Scene *scene, Error *err)
+int parse_scene_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                     Scene *scene, Error *err)
 {
     Parser P;
 
     scene_init(scene);
+    scene->memory_limit = memory_limit;
     lex_init(&P.lex, name, text, len, err);
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;

@@ -301,6 +301,7 @@ int png_parse(const char *name, const unsigned char *data, size_t n, PngImage *i
         error_set(err, name, "image too large: %d x %d", img->width, img->height);
         goto done;
     }
+    raw.max = (stride + 1) * (size_t)img->height;
     if (inflate_zlib(&raw, z.data, z.len, msg, sizeof msg) != 0) {
         error_set(err, name, "the image data is corrupt: %s", msg);
         goto done;

@@ -47,12 +47,72 @@ void scene_free(Scene *scene)
     scene_init(scene);
 }
 
+/* Adds b to *a, saturating at SIZE_MAX. */
+static void scene_sum(size_t *a, size_t b)
+{
+    *a = b > SIZE_MAX - *a ? SIZE_MAX : *a + b;
+}
+
+size_t scene_memory(const Scene *scene)
+{
+    size_t m = 0;
+
+    scene_sum(&m, scene->light_capacity * sizeof *scene->lights);
+    scene_sum(&m, scene->sphere_capacity * sizeof *scene->spheres);
+    scene_sum(&m, scene->plane_capacity * sizeof *scene->planes);
+    scene_sum(&m, scene->triangle_capacity * sizeof *scene->triangles);
+    scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
+    scene_sum(&m, scene->phong_capacity * sizeof *scene->phong);
+    scene_sum(&m, scene->mesh_capacity * sizeof *scene->meshes);
+    for (size_t i = 0; i < scene->texture_count; i++) {
+        const PpmImage *im = &scene->textures[i].image;
+        scene_sum(&m, 3 * (size_t)im->width * (size_t)im->height * sizeof *im->samples);
+    }
+    if (scene->accel)
+        scene_sum(&m, bvh_memory(scene->accel));
+    return m;
+}
+
+size_t scene_memory_left(const Scene *scene)
+{
+    size_t used = scene_memory(scene);
+
+    if (scene->memory_limit == 0)
+        return SIZE_MAX;
+    return used >= scene->memory_limit ? 0 : scene->memory_limit - used;
+}
+
+size_t scene_obj_budget(const Scene *scene)
+{
+    size_t left = scene_memory_left(scene);
+
+    return scene->memory_limit == 0 ? 0 : left ? left : 1;
+}
+
+/* grow_reserve() under the memory limit: returns 0, -1 when memory runs
+ * out, or SCENE_OVER_LIMIT when the grown array would pass the limit. */
+static int scene_reserve(const Scene *scene, void **items, size_t *capacity, size_t count,
+                         size_t size)
+{
+    size_t next = grow_next_capacity(*capacity);
+
+    if (count < *capacity)
+        return 0;
+    if (scene->memory_limit && (next > SIZE_MAX / size ||
+                                (next - *capacity) * size > scene_memory_left(scene)))
+        return SCENE_OVER_LIMIT;
+    return grow_reserve(items, capacity, count, size);
+}
+
 int scene_build_accel(Scene *scene)
 {
     Bvh *bvh;
+    size_t n = scene->sphere_count + scene->triangle_count;
 
-    if (scene->accel || scene->sphere_count + scene->triangle_count < BVH_MIN_PRIMITIVES)
+    if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
+    if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
+        return SCENE_OVER_LIMIT;
     bvh = malloc(sizeof *bvh);
     if (!bvh || bvh_build(bvh, scene) != 0) {
         free(bvh);
@@ -69,18 +129,22 @@ size_t scene_object_count(const Scene *scene)
 
 int scene_add_light(Scene *scene, const Light *light)
 {
-    if (grow_reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count,
-                      sizeof *light) != 0)
-        return -1;
+    int rc = scene_reserve(scene, (void **)&scene->lights, &scene->light_capacity, scene->light_count,
+                      sizeof *light);
+
+    if (rc != 0)
+        return rc;
     scene->lights[scene->light_count++] = *light;
     return 0;
 }
 
 int scene_add_sphere(Scene *scene, const Sphere *s)
 {
-    if (grow_reserve((void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
-                      sizeof *s) != 0)
-        return -1;
+    int rc = scene_reserve(scene, (void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
+                      sizeof *s);
+
+    if (rc != 0)
+        return rc;
     scene->spheres[scene->sphere_count] = *s;
     scene->spheres[scene->sphere_count].order = (unsigned)scene_object_count(scene);
     scene->sphere_count++;
@@ -90,9 +154,11 @@ int scene_add_sphere(Scene *scene, const Sphere *s)
 
 int scene_add_plane(Scene *scene, const Plane *p)
 {
-    if (grow_reserve((void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
-                      sizeof *p) != 0)
-        return -1;
+    int rc = scene_reserve(scene, (void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
+                      sizeof *p);
+
+    if (rc != 0)
+        return rc;
     scene->planes[scene->plane_count] = *p;
     scene->planes[scene->plane_count].order = (unsigned)scene_object_count(scene);
     scene->plane_count++;
@@ -102,9 +168,11 @@ int scene_add_plane(Scene *scene, const Plane *p)
 
 int scene_add_triangle(Scene *scene, const Triangle *t)
 {
-    if (grow_reserve((void **)&scene->triangles, &scene->triangle_capacity,
-                      scene->triangle_count, sizeof *t) != 0)
-        return -1;
+    int rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
+                      scene->triangle_count, sizeof *t);
+
+    if (rc != 0)
+        return rc;
     scene->triangles[scene->triangle_count] = *t;
     scene->triangles[scene->triangle_count].order = (unsigned)scene_object_count(scene);
     scene->triangle_count++;
@@ -115,7 +183,12 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
 long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 {
     long added = 0;
+    size_t left = scene_memory_left(scene), held = obj_memory(m);
 
+    /* The mesh's triangles must fit beside the mesh itself. */
+    if (scene->memory_limit &&
+        (held > left || m->tri_count > (left - held) / sizeof *scene->triangles))
+        return SCENE_OVER_LIMIT;
     for (size_t i = 0; i < m->tri_count; i++) {
         const ObjCorner *c = m->tri[i];
         Triangle tri;
@@ -139,8 +212,9 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
                 tri.uv[k][0] = m->vt[c[k].vt][0];
                 tri.uv[k][1] = m->vt[c[k].vt][1];
             }
-        if (scene_add_triangle(scene, &tri) != 0)
-            return -1;
+        int rc = scene_add_triangle(scene, &tri);
+        if (rc != 0)
+            return rc;
         added++;
     }
     return added;
@@ -148,10 +222,12 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 
 int scene_add_texture(Scene *scene, Texture *tex)
 {
-    if (grow_reserve((void **)&scene->textures, &scene->texture_capacity,
-                      scene->texture_count, sizeof *tex) != 0) {
+    int rc = scene_reserve(scene, (void **)&scene->textures, &scene->texture_capacity,
+                      scene->texture_count, sizeof *tex);
+
+    if (rc != 0) {
         texture_free(tex);
-        return -1;
+        return rc;
     }
     scene->textures[scene->texture_count] = *tex;
     return (int)scene->texture_count++;
@@ -159,10 +235,12 @@ int scene_add_texture(Scene *scene, Texture *tex)
 
 int scene_add_phong(Scene *scene, PhongMaterial *m)
 {
-    if (grow_reserve((void **)&scene->phong, &scene->phong_capacity, scene->phong_count,
-                      sizeof *m) != 0) {
+    int rc = scene_reserve(scene, (void **)&scene->phong, &scene->phong_capacity, scene->phong_count,
+                      sizeof *m);
+
+    if (rc != 0) {
         free(m->name);
-        return -1;
+        return rc;
     }
     scene->phong[scene->phong_count] = *m;
     return (int)scene->phong_count++;
@@ -170,11 +248,13 @@ int scene_add_phong(Scene *scene, PhongMaterial *m)
 
 int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)
 {
-    if (grow_reserve((void **)&scene->meshes, &scene->mesh_capacity, scene->mesh_count,
-                      sizeof *mesh) != 0) {
+    int rc = scene_reserve(scene, (void **)&scene->meshes, &scene->mesh_capacity, scene->mesh_count,
+                      sizeof *mesh);
+
+    if (rc != 0) {
         free(mesh->path);
         free(mesh->opened);
-        return -1;
+        return rc;
     }
     scene->meshes[scene->mesh_count++] = *mesh;
     return 0;

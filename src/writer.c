@@ -31,6 +31,20 @@ ImageFormat writer_format_for(const char *path)
     return writer_format_named(ext) >= 0 ? (ImageFormat)writer_format_named(ext) : FORMAT_PPM;
 }
 
+size_t writer_memory(const WriterOptions *opts, int width, int height)
+{
+    size_t n = image_size(width, height), rows = n + (size_t)height;
+
+    switch (opts->format) {
+    case FORMAT_PNG:
+        return n + 2 * rows + ((size_t)1 << 20);
+    case FORMAT_PFM:
+        return n + n * sizeof(float);
+    default:
+        return n;
+    }
+}
+
 int writer_write(FILE *f, const Image *img, const WriterOptions *opts)
 {
     switch (opts->format) {

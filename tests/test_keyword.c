@@ -23,7 +23,7 @@
 /* Reads text as a keyword scene named t.txt; returns what the reader does. */
 static int kw(const char *text, Scene *sc, Error *err)
 {
-    return keyword_parse_text("t.txt", text, strlen(text), sc, err);
+    return keyword_parse_text("t.txt", text, strlen(text), 0, sc, err);
 }
 
 static void keyword_reads_the_seed_scene(void)
@@ -616,7 +616,7 @@ static void keyword_save_refuses_a_course_scene(void)
     FILE *fp = tmpfile();
 
     CHECK(fp != NULL);
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     if (fp) {
         CHECK_INT(-1, save_keyword(fp, &sc, "scenes/course.txt", "out.txt", &err));
         CHECK_CONTAINS(err.message, "cannot express a course-format scene");

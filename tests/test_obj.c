@@ -17,7 +17,7 @@ static int load(const char *text, size_t len, ObjMesh *m, Error *err)
         return -2;
     fwrite(text, 1, len, f);
     fclose(f);
-    return obj_load("build/t.obj", m, err);
+    return obj_load("build/t.obj", 0, m, err);
 }
 
 static void obj_reads_every_face_form(void)
@@ -126,7 +126,7 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fwrite(obj, 1, sizeof obj - 1, f);
     fclose(f);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), &sc, &err));
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(2, (long long)sc.triangle_count);
     if (sc.triangle_count == 2) {
         CHECK_NEAR(0.25, sc.triangles[1].material.transparency, 0);
@@ -143,7 +143,7 @@ static void mesh_record_adds_the_triangles(void)
     fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\nvn 0 0 -2\nvn 1 0 -1\nvn 0 0 0\n"
           "f 1//1 2//2 3//1\nf 1//1 2//3 3//1\n", f);
     fclose(f);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), &sc, &err));
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(2, (long long)sc.triangle_count);
     if (sc.triangle_count == 2) {
         CHECK_INT(1, sc.triangles[0].smooth);
@@ -160,7 +160,7 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fputs("v 0 0 5\nf 1 2 3\n", f);
     fclose(f);
-    CHECK_INT(-1, parse_scene_text("build/t.txt", text, strlen(text), &sc, &err));
+    CHECK_INT(-1, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(8, err.line);
     CHECK_INT(7, err.column);
     CHECK_CONTAINS(err.message, "cannot use the mesh 't.obj': build/t.obj:2:5: vertex 2 does not exist");

@@ -16,7 +16,7 @@
 
 static int parse(const char *text, Scene *scene, Error *err)
 {
-    return parse_scene_text("t.txt", text, strlen(text), scene, err);
+    return parse_scene_text("t.txt", text, strlen(text), 0, scene, err);
 }
 
 static void parse_accepts_the_example(void)
@@ -86,7 +86,7 @@ static void parse_accepts_many_spheres(void)
 
     for (size_t i = 0; i < n; i++)
         len += (size_t)sprintf(text + len, "sphere: %zu 0 9 0.5 1 2 3 0\n", i);
-    CHECK_INT(0, parse_scene_text("t.txt", text, len, &sc, &err));
+    CHECK_INT(0, parse_scene_text("t.txt", text, len, 0, &sc, &err));
     CHECK_INT((long long)n, (long long)sc.sphere_count);
     CHECK_NEAR(4999, sc.spheres[4999].centre.x, 0);
     scene_free(&sc);
@@ -310,7 +310,7 @@ static void parse_rejects_bad_scenes_with_position(void)
 
         if (strstr(b->message, "NUL byte"))
             len += 1 + strlen(b->text + len + 1);
-        rc = parse_scene_text("t.txt", b->text, len, &sc, &err);
+        rc = parse_scene_text("t.txt", b->text, len, 0, &sc, &err);
         CHECK_INT(-1, rc);
         if (rc != -1) {
             scene_free(&sc);
@@ -437,7 +437,7 @@ static void parse_error_excerpt_and_caret(void)
         char text[2000];
         memset(text, ' ', sizeof text);
         memcpy(text + 1500, "0 0 x\n", 6);
-        CHECK_INT(-1, parse_scene_text("t.txt", text, 1506, &sc, &err));
+        CHECK_INT(-1, parse_scene_text("t.txt", text, 1506, 0, &sc, &err));
         CHECK_INT(1505, err.column);
         CHECK(strlen(err.excerpt) < 180);
         CHECK_INT('x', err.excerpt[err.caret]);
@@ -449,13 +449,13 @@ static void parse_file_errors(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_CONTAINS(err.file, "tests/no-such-file.txt");
     CHECK_CONTAINS(err.message, "cannot open");
     CHECK_INT(0, err.line);
-    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, 0, &sc, &err));
     CHECK_CONTAINS(err.message, "cannot read");
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(3, (long long)sc.sphere_count);
     CHECK_INT(400, sc.camera.height);
     scene_free(&sc);

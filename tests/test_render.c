@@ -66,7 +66,7 @@ static void render_bytes_do_not_depend_on_threads(void)
     RenderOptions one = {10, 1, 0, 1, NULL, NULL}, two = {10, 1, 0, 2, NULL, NULL},
                   many = {10, 1, 0, 7, NULL, NULL};
 
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
     CHECK_INT(0, image_init(&b, sc.camera.width, sc.camera.height));
     render(&sc, &one, &a, NULL);
@@ -214,7 +214,7 @@ static int render_text(const char *text, Image *img)
     Error err;
     int e;
 
-    if (parse_scene_text("t.txt", text, strlen(text), &sc, &err) != 0) {
+    if (parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         img->rgb = NULL;
         return -99999;
@@ -263,7 +263,7 @@ static int render_text_with(const char *text, int samples, int threads, Image *i
 
     img->rgb = NULL;
     img->linear = NULL;
-    if (parse_scene_text("t.txt", text, strlen(text), &sc, &err) != 0) {
+    if (parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
     }
@@ -436,7 +436,7 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
         Scene sc;
         Error err;
 
-        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, &sc, &err));
+        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, 0, &sc, &err));
         for (int i = 0; i < 4000; i++) {
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
@@ -469,7 +469,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Image img;
     RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL};
 
-    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
     render(&sc, &opts, &img, counts);
     scene_free(&sc);

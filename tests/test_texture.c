@@ -94,7 +94,7 @@ static void sphere_uv_at_known_points(void)
 /* Parses text as build/t.txt; returns its status. */
 static int parse_in_build(const char *text, Scene *sc, Error *err)
 {
-    return parse_scene_text("build/t.txt", text, strlen(text), sc, err);
+    return parse_scene_text("build/t.txt", text, strlen(text), 0, sc, err);
 }
 
 static void texture_records_attach_to_the_object_before(void)

@@ -12,7 +12,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ObjMesh mesh;
     Error err;
 
-    if (obj_parse("fuzz.obj", (const char *)data, size, &mesh, &err) != 0)
+    if (obj_parse("fuzz.obj", (const char *)data, size, 0, &mesh, &err) != 0)
         return 0;
     for (size_t i = 0; i < mesh.tri_count; i++)
         for (int k = 0; k < 3; k++) {

@@ -19,7 +19,7 @@ static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)
     RenderOptions opts = {4, 1, 0.001, 1, NULL, NULL};
 
     scene_init(&scene);
-    if (load_scene_text("fuzz", (const char *)data, size, format, &scene, &err) == 0 &&
+    if (load_scene_text("fuzz", (const char *)data, size, format, 0, &scene, &err) == 0 &&
         (long)scene.camera.width * scene.camera.height <= 32 * 32 &&
         (scene.samples == 0 || scene.samples <= 4)) {
         opts.samples = scene.samples ? scene.samples : 1;
