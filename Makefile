@@ -100,6 +100,7 @@ test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
 	RT_FLOAT=$(BUILD)/raytrace-float sh tests/cli.sh ./raytrace ./raytrace-diff
+	sh tests/hostile.sh ./raytrace
 	sh tests/install.sh
 
 install: $(PROGRAMS)

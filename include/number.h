@@ -42,4 +42,9 @@ enum { NUMBER_FORMAT_MAX = 32 }; /* room number_format() needs */
  * number_parse() accepts. Returns buf. */
 char *number_format(char *buf, double x);
 
+/* Writes the size of `bytes` for people into buf (NUMBER_FORMAT_MAX bytes):
+ * "812 bytes", "200 KiB", "1.5 MiB", "9.002 GiB" (4 digits at most); returns
+ * buf. */
+char *number_bytes(char *buf, size_t bytes);
+
 #endif

@@ -65,7 +65,13 @@ static int lex_next_line(Lexer *L, Line *line)
         line->len--;
     for (size_t i = 0; i < line->len; i++) {
         if (line->text[i] == '\0') {
-            lex_fail(L, line, (int)i + 1, "NUL byte in the scene file: a scene is a text file");
+            int utf16 = L->end - L->start >= 2 && (memcmp(L->start, "\xFF\xFE", 2) == 0 ||
+                                                   memcmp(L->start, "\xFE\xFF", 2) == 0);
+            lex_fail(L, line, (int)i + 1, utf16 ? "NUL byte: the file is UTF-16 (it starts "
+                                                  "with a UTF-16 byte order mark); save the "
+                                                  "scene as UTF-8 or ASCII"
+                                                : "NUL byte in the scene file: a scene is a "
+                                                  "text file");
             return -1;
         }
         if (line->text[i] == '\r') {
@@ -325,11 +331,13 @@ char *lex_path(Lexer *L, const Token *t)
 
 int lex_fail_memory(Lexer *L, const Record *rec, int over, size_t limit)
 {
+    char size[NUMBER_FORMAT_MAX];
+
     if (over)
         lex_fail(L, &rec->line, rec->tok[0].column,
-                 "the scene would pass the memory limit of %zu MiB here: raise it with "
+                 "the scene would pass the memory limit of %s here: raise it with "
                  "--memory-limit",
-                 limit >> 20);
+                 number_bytes(size, limit));
     else
         lex_fail(L, &rec->line, rec->tok[0].column, "out of memory");
     return -1;

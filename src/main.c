@@ -16,6 +16,7 @@
 
 #include "bvh.h"
 #include "error.h"
+#include "number.h"
 #include "file.h"
 #include "image.h"
 #include "options.h"
@@ -263,15 +264,16 @@ static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Op
 {
     size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
     size_t left = scene_memory_left(scene);
+    char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
 
     if (scene->memory_limit == 0)
         return 0;
     if (need > left) {
         error_set(err, opts->scene_path,
-                  "a %d x %d image needs %zu MiB to render and write, more than the %zu MiB "
-                  "the memory limit of %zu MiB leaves after the scene (--memory-limit)",
-                  scene->camera.width, scene->camera.height, (need >> 20) + 1, left >> 20,
-                  scene->memory_limit >> 20);
+                  "a %d x %d image needs %s to render and write: with the scene's %s, "
+                  "more than the memory limit of %s (raise it with --memory-limit)",
+                  scene->camera.width, scene->camera.height, number_bytes(a, need),
+                  number_bytes(b, scene_memory(scene)), number_bytes(c, scene->memory_limit));
         return -1;
     }
     scene->memory_limit -= need;
@@ -313,13 +315,14 @@ static int main_render(const Options *opts)
     accel_start = main_now();
     rc = opts->no_accel ? 0 : scene_build_accel(&scene);
     if (rc == SCENE_OVER_LIMIT) {
+        char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX];
         error_set(&err, opts->scene_path,
-                  "the bounding volume hierarchy of %zu objects needs about %zu MiB, more "
-                  "than the %zu MiB the memory limit leaves (--memory-limit; --no-accel "
-                  "renders without it, slowly)",
+                  "the bounding volume hierarchy of %zu objects needs up to %s, more than "
+                  "the %s the memory limit leaves (--memory-limit; --no-accel renders "
+                  "without it, slowly)",
                   scene.sphere_count + scene.triangle_count,
-                  bvh_build_memory(scene.sphere_count + scene.triangle_count) >> 20,
-                  scene_memory_left(&scene) >> 20);
+                  number_bytes(a, bvh_build_memory(scene.sphere_count + scene.triangle_count)),
+                  number_bytes(b, scene_memory_left(&scene)));
         goto fail_scene;
     }
     if (rc != 0)

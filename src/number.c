@@ -107,3 +107,21 @@ char *number_format(char *buf, double x)
     }
     return buf;
 }
+
+char *number_bytes(char *buf, size_t bytes)
+{
+    static const char *const units[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+    double v = (double)bytes;
+    int u = -1;
+
+    if (bytes < 1024) {
+        snprintf(buf, NUMBER_FORMAT_MAX, "%zu byte%s", bytes, bytes == 1 ? "" : "s");
+        return buf;
+    }
+    while (v >= 1024 && u < 5) {
+        v /= 1024;
+        u++;
+    }
+    snprintf(buf, NUMBER_FORMAT_MAX, "%.4g %s", v, units[u]);
+    return buf;
+}

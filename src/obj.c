@@ -176,10 +176,12 @@ static int obj_reserve(ObjReader *r, void **items, size_t *capacity, size_t coun
     if (count < before)
         return 0;
     more = grow_next_capacity(before) - before;
-    if (r->max_bytes && (more > SIZE_MAX / size || more * size > r->max_bytes - r->used))
-        return obj_fail(r, at, "the mesh needs more memory than the %zu MiB the memory limit "
+    if (r->max_bytes && (more > SIZE_MAX / size || more * size > r->max_bytes - r->used)) {
+        char left[NUMBER_FORMAT_MAX];
+        return obj_fail(r, at, "the mesh needs more memory than the %s the memory limit "
                                "leaves it, after %zu %s",
-                        r->max_bytes >> 20, count, what);
+                        number_bytes(left, r->max_bytes), count, what);
+    }
     if (grow_reserve(items, capacity, count, size) != 0)
         return obj_fail(r, at, "out of memory after %zu %s", count, what);
     r->used += (*capacity - before) * size;
