@@ -1,0 +1,172 @@
+/* test_limits.c: the memory limit and the refusals that keep a render from
+ * running out of memory (scene.h, obj.h, deflate.h, file.h, writer.h). */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bvh.h"
+#include "deflate.h"
+#include "file.h"
+#include "number.h"
+#include "obj.h"
+#include "parse.h"
+#include "scene.h"
+#include "test.h"
+#include "writer.h"
+
+static void limits_sizes_read_for_people(void)
+{
+    char buf[NUMBER_FORMAT_MAX];
+
+    CHECK(strcmp(number_bytes(buf, 0), "0 bytes") == 0);
+    CHECK(strcmp(number_bytes(buf, 1), "1 byte") == 0);
+    CHECK(strcmp(number_bytes(buf, 1023), "1023 bytes") == 0);
+    CHECK(strcmp(number_bytes(buf, 1024), "1 KiB") == 0);
+    CHECK(strcmp(number_bytes(buf, 1536), "1.5 KiB") == 0);
+    CHECK(strcmp(number_bytes(buf, (size_t)4 << 30), "4 GiB") == 0);
+    CHECK(strcmp(number_bytes(buf, SIZE_MAX), "16 EiB") == 0);
+}
+
+/* A course scene of n spheres, one a line after the 7-line header. */
+static char *limits_spheres(int n)
+{
+    static const char head[] = "0 0 -5\n-1 1 0\n1 1 0\n-1 -1 0\n8\n0 0 0\n5 5 -5 255 255 255\n";
+    size_t cap = sizeof head + 40 * (size_t)n, len;
+    char *text = malloc(cap);
+
+    if (!text)
+        return NULL;
+    strcpy(text, head);
+    len = strlen(text);
+    for (int i = 0; i < n; i++)
+        len += (size_t)snprintf(text + len, cap - len, "sphere: %d 0 3 1 200 100 50 0\n", i);
+    return text;
+}
+
+static void limits_scene_stops_at_the_element_that_passes(void)
+{
+    char *text = limits_spheres(1000);
+    Scene sc;
+    Error err;
+    size_t limit = 64 * 1024;
+
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    /* No limit: every sphere is read. */
+    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(1000, (long long)sc.sphere_count);
+    CHECK(scene_memory(&sc) >= 1000 * sizeof(Sphere));
+    CHECK(scene_memory_left(&sc) == SIZE_MAX);
+    scene_free(&sc);
+    /* 64 KiB: the array doubles to 512 spheres, not to 1024; the error
+     * points at the 513th sphere's line (8 + 512). */
+    CHECK_INT(-1, parse_scene_text("t.txt", text, strlen(text), limit, &sc, &err));
+    CHECK_INT(520, err.line);
+    CHECK_INT(1, err.column);
+    CHECK_CONTAINS(err.message, "would pass the memory limit of 64 KiB");
+    free(text);
+}
+
+static void limits_hierarchy_is_estimated_before_it_is_built(void)
+{
+    char *text = limits_spheres(1000);
+    Scene sc;
+    Error err;
+
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    sc.memory_limit = scene_memory(&sc) + bvh_build_memory(1000) - 1;
+    CHECK_INT(SCENE_OVER_LIMIT, scene_build_accel(&sc));
+    CHECK(sc.accel == NULL);
+    sc.memory_limit += 1;
+    CHECK_INT(0, scene_build_accel(&sc));
+    CHECK(sc.accel != NULL);
+    /* What was built is within the estimate. */
+    CHECK(scene_memory(&sc) <= sc.memory_limit);
+    scene_free(&sc);
+    free(text);
+}
+
+static void limits_mesh_reading_keeps_to_its_budget(void)
+{
+    char text[4096];
+    size_t len = (size_t)snprintf(text, sizeof text, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf");
+    ObjMesh m;
+    Error err;
+
+    for (int i = 0; i < 300; i++)
+        len += (size_t)snprintf(text + len, sizeof text - len, " %d", 1 + i % 3);
+    text[len++] = '\n';
+    CHECK_INT(0, obj_parse("fan.obj", text, len, 0, &m, &err));
+    CHECK_INT(298, (long long)m.tri_count);
+    CHECK(obj_memory(&m) >= 298 * sizeof *m.tri);
+    obj_free(&m);
+    CHECK_INT(-1, obj_parse("fan.obj", text, len, 2000, &m, &err));
+    CHECK_INT(4, err.line);
+    CHECK_CONTAINS(err.message, "the mesh needs more memory than the 1.953 KiB the memory limit "
+                                "leaves it");
+}
+
+static void limits_inflating_stops_at_the_size_promised(void)
+{
+    size_t n = 1 << 20;
+    unsigned char *zeros = calloc(n, 1);
+    ByteBuf z = {0}, out = {0};
+    char msg[200];
+
+    CHECK(zeros != NULL);
+    if (!zeros)
+        return;
+    CHECK_INT(0, deflate_zlib(&z, zeros, n, DEFLATE_FIXED));
+    CHECK(z.len < n / 50); /* a bomb in miniature */
+    out.max = 1000;
+    CHECK_INT(-1, inflate_zlib(&out, z.data, z.len, msg, sizeof msg));
+    CHECK(strcmp(msg, "more data than the image needs") == 0);
+    CHECK(out.len <= 1000);
+    bytebuf_free(&out);
+    out.max = n;
+    CHECK_INT(0, inflate_zlib(&out, z.data, z.len, msg, sizeof msg));
+    CHECK(out.len == n);
+    bytebuf_free(&out);
+    bytebuf_free(&z);
+    free(zeros);
+}
+
+static void limits_image_needs_are_known_per_format(void)
+{
+    WriterOptions ppm = {FORMAT_PPM, 0, DEFLATE_FIXED}, pfm = {FORMAT_PFM, 0, DEFLATE_FIXED},
+                  png = {FORMAT_PNG, 0, DEFLATE_FIXED};
+    size_t n = 3 * (size_t)32768 * 32768;
+
+    CHECK(writer_memory(&ppm, 32768, 32768) == n);
+    CHECK(writer_memory(&pfm, 32768, 32768) == 5 * n);
+    CHECK(writer_memory(&png, 32768, 32768) >= 3 * n);
+}
+
+static void limits_inputs_that_are_not_files_are_refused(void)
+{
+    char *data;
+    size_t len;
+    Error err;
+
+    CHECK_INT(-1, file_read_all("/dev/zero", &data, &len, &err));
+    CHECK_CONTAINS(err.message, "not a regular file");
+    CHECK_INT(-1, file_read_all("tests", &data, &len, &err));
+    CHECK_CONTAINS(err.message, "it is a directory");
+}
+
+const TestCase limits_tests[] = {
+    {"limits_sizes_read_for_people", limits_sizes_read_for_people},
+    {"limits_scene_stops_at_the_element_that_passes", limits_scene_stops_at_the_element_that_passes},
+    {"limits_hierarchy_is_estimated_before_it_is_built",
+     limits_hierarchy_is_estimated_before_it_is_built},
+    {"limits_mesh_reading_keeps_to_its_budget", limits_mesh_reading_keeps_to_its_budget},
+    {"limits_inflating_stops_at_the_size_promised", limits_inflating_stops_at_the_size_promised},
+    {"limits_image_needs_are_known_per_format", limits_image_needs_are_known_per_format},
+    {"limits_inputs_that_are_not_files_are_refused", limits_inputs_that_are_not_files_are_refused},
+    {NULL, NULL},
+};
