@@ -15,6 +15,7 @@
 #                   writes docs/trade.md and docs/trade-*.svg
 # make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
 #                   each (default 60); tests/fuzz/fuzz.sh says more
+# make memcheck     renders and comparisons under Valgrind's memcheck
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 
@@ -72,7 +73,7 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
 
-.PHONY: all test check clean install uninstall gallery bench trade fuzz
+.PHONY: all test check clean install uninstall gallery bench trade fuzz memcheck
 
 all: raytrace raytrace-diff
 
@@ -165,6 +166,9 @@ $(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene
 
 fuzz: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 	sh tests/fuzz/fuzz.sh $(BUILD) $(FUZZ_TARGETS)
+
+memcheck: raytrace raytrace-diff
+	sh tests/memcheck.sh ./raytrace ./raytrace-diff
 
 check: test
 

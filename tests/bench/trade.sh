@@ -195,6 +195,14 @@ for s in course-1 course-tiny course-huge course-far course-far-tiny field mirro
         "$(echo "$tf / 1000" | bc -l)" "$(echo "$td / $tf" | bc -l)" "$1" "$2" "$3" >>"$DIR/real.rows"
 done
 fi
+# The plot: each scene a point, float's time over double's against its RMSE.
+if [ -s "$DIR/real.rows" ]; then
+    awk -F' *[|] *' '{ sub(/ s$/, "", $3); sub(/ s$/, "", $4); print $2, $4 / $3, $8, $2 }' \
+        "$DIR/real.rows" >"$DIR/real.plot"
+    awk -v title="Float against double: time and error, per scene" \
+        -v xlabel="float's time / double's" -v ylabel="RMSE against double, levels" -v logy=1 \
+        -f "$PLOT" "$DIR/real.plot" >"$DOCS/trade-precision.svg"
+fi
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -1)
 {
@@ -254,6 +262,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "scaled by 10^-4 and 10^6, moved 10^7 away on each axis, and both shrunk"
     echo "to 10^-6 and moved 1 away, all at 1200 × 1200; \`field\` is the"
     echo "benchmark's 1,000-sphere field at 960 × 540."
+    echo
+    echo "![precision](trade-precision.svg)"
     echo
     echo "| scene | double | float | speed-up | channels that differ | largest difference | RMSE (linear) |"
     echo "|-------|--------|-------|----------|----------------------|--------------------|---------------|"

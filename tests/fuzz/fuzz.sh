@@ -19,7 +19,7 @@ TARGETS=${*:-course keyword obj ppm picture}
 for t in $TARGETS; do
     mkdir -p "$BUILD/fuzz/corpus/$t" "tests/fuzz/regress/$t"
     echo "fuzz: $t for ${TIME} s"
-    (cd scenes && "$TOP/$BUILD/fuzz/fuzz_$t" -max_total_time="$TIME" -timeout=10 \
+    (cd scenes && "$TOP/$BUILD/fuzz/fuzz_$t" -max_total_time="$TIME" -timeout=60 \
         -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$TOP/$BUILD/fuzz/crash-$t-" "$TOP/$BUILD/fuzz/corpus/$t" \
         "$TOP/tests/fuzz/corpus/$t" "$TOP/tests/fuzz/regress/$t") \

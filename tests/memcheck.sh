@@ -1,0 +1,59 @@
+#!/bin/sh
+# memcheck.sh: a few renders and comparisons under Valgrind's memcheck
+# (`make memcheck`, and CI): no invalid read or write, no use of an
+# uninitialised value, no leak, on the success paths and the failure ones.
+#
+# Usage: sh tests/memcheck.sh RAYTRACE RAYTRACE-DIFF   (from the repository root)
+
+RT=$1
+DIFF=$2
+T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-memcheck.XXXXXX") || exit 2
+passed=0
+failed=0
+
+# run NAME CODE COMMAND...: COMMAND under memcheck must exit CODE with no
+# Valgrind error (Valgrind's own exit code would be 99).
+run() {
+    name=$1 code=$2
+    shift 2
+    valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
+        --show-leak-kinds=definite,indirect --track-origins=yes "$@" >"$T/out" 2>"$T/err"
+    got=$?
+    if [ "$got" = "$code" ]; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAIL $name: exit $got, expected $code" >&2
+        sed 's/^/    /' "$T/err" | head -40 >&2
+    fi
+}
+
+# small SCENE WIDTH: the example scene at WIDTH pixels wide (memcheck runs
+# some 50 times slower), kept in scenes/ for its textures and meshes.
+small() {
+    case $(basename "$1") in
+    keyword.txt | seed002.txt)
+        awk -v w="$2" '$1 == "camera" { $10 = int($10 * w / $9); $9 = w } { print }' "$1" ;;
+    *)
+        awk -v w="$2" '{ line = $0; sub(/#.*/, "", line) }
+            line ~ /[^ \t]/ { if (++n == 5) { print w; next } } { print }' "$1" ;;
+    esac >"scenes/.memcheck-$(basename "$1")"
+}
+trap 'rm -rf "$T" scenes/.memcheck-*' EXIT
+
+command -v valgrind >/dev/null || { echo "memcheck: valgrind is not installed" >&2; exit 1; }
+for s in course keyword textures glass; do small "scenes/$s.txt" 48; done
+run "course scene" 0 "$RT" -q -j 2 scenes/course.txt "$T/course.ppm"
+run "keyword scene, mesh and hierarchy" 0 "$RT" -q -j 2 scenes/.memcheck-keyword.txt "$T/keyword.png"
+run "textures, samples, PFM" 0 "$RT" -q -j 1 --spp 2 scenes/.memcheck-textures.txt "$T/textures.pfm"
+run "glass, depth 30, cut-off" 0 "$RT" -q -j 1 -d 30 --cutoff 0.5 scenes/.memcheck-glass.txt "$T/glass.ppm"
+run "save a keyword scene" 0 "$RT" --save "$T/saved.txt" scenes/keyword.txt
+run "a scene fault" 1 "$RT" -q tests/hostile/mesh-bad-index.txt "$T/bad.ppm"
+run "a memory limit" 1 "$RT" -q --memory-limit 1K scenes/mirrors.txt "$T/bad.ppm"
+run "an unwritable output" 1 "$RT" -q scenes/course.txt "$T/no/dir/out.ppm"
+run "raytrace-diff, PNG against PPM" 0 "$DIFF" -q "$T/course.ppm" "$T/course.ppm"
+"$RT" -q -d 1 scenes/.memcheck-glass.txt "$T/glass-2.ppm"
+run "raytrace-diff, images that differ" 1 "$DIFF" -q --diff "$T/d.png" "$T/glass.ppm" "$T/glass-2.ppm"
+run "raytrace-diff, sizes that differ" 2 "$DIFF" -q "$T/keyword.png" "$T/course.ppm"
+echo "memcheck: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
