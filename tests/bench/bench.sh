@@ -105,6 +105,44 @@ if [ "${BENCH_SCALING:-1}" = 1 ]; then
     done
 fi
 
+# Features a scene does not use: the course scene rendered by the
+# course-only renderer (the commit before planes, triangles, glass, several
+# lights, samples, textures, the keyword format and the hierarchy existed)
+# and by this one, run for run alternately, with the same bytes.
+BASE=${BENCH_BASELINE:-194c48f}
+: >"$DIR/unused"
+if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/dev/null 2>&1; then
+    scene course
+    if [ ! -x "$DIR/baseline/raytrace" ]; then
+        rm -rf "$DIR/baseline"
+        mkdir -p "$DIR/baseline"
+        git archive "$BASE" | tar -x -C "$DIR/baseline" && make -s -C "$DIR/baseline" raytrace ||
+            { echo "bench: cannot build $BASE" >&2; exit 1; }
+    fi
+    for j in 1 "$ALL"; do
+        : >"$DIR/t-base"
+        : >"$DIR/t-now"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            for b in base now; do
+                [ $b = base ] && bin=$DIR/baseline/raytrace || bin=$RT
+                start=$(now)
+                "$bin" -q -j "$j" "$DIR/course.txt" "$DIR/course-$b.ppm" || exit 1
+                end=$(now)
+                echo $(((end - start) / 1000000)) >>"$DIR/t-$b"
+            done
+            i=$((i + 1))
+        done
+        cmp -s "$DIR/course-base.ppm" "$DIR/course-now.ppm" && same=yes || same=NO
+        tb=$(median <"$DIR/t-base")
+        tn=$(median <"$DIR/t-now")
+        printf '| course 3840 x 3840 | %s | %.2f s | %.2f s | %+.1f%% | %s |\n' "$j" \
+            "$(echo "$tb / 1000" | bc -l)" "$(echo "$tn / 1000" | bc -l)" \
+            "$(echo "($tn - $tb) * 100 / $tb" | bc -l)" "$same" >>"$DIR/unused"
+        echo "bench: unused features, $j thread(s): course-only $tb ms, now $tn ms" >&2
+    done
+fi
+
 # POV-Ray on the sphere fields, alternating with raytrace run for run.
 : >"$DIR/pov"
 if command -v povray >/dev/null 2>&1; then
@@ -174,6 +212,20 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
         echo "| varies | spheres | pixels | read | build | render |"
         echo "|--------|---------|--------|------|-------|--------|"
         cat "$DIR/scale"
+    fi
+    if [ -s "$DIR/unused" ]; then
+        echo
+        echo "## What unused features cost"
+        echo
+        echo "The course scene (spheres, one light, reflection, one sample per pixel)"
+        echo "rendered by the course-only renderer (commit $BASE, before planes,"
+        echo "triangles, glass, several lights, samples, lenses, textures, the keyword"
+        echo "format, Blinn-Phong, the hierarchy and the cut-off existed) and by this"
+        echo "one, run for run alternately; medians of $RUNS runs of the whole command."
+        echo
+        echo "| scene | threads | course-only | now | difference | same bytes |"
+        echo "|-------|---------|-------------|-----|------------|------------|"
+        cat "$DIR/unused"
     fi
     if [ -s "$DIR/pov" ]; then
         echo
