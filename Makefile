@@ -63,6 +63,7 @@ LIB_SRC := src/angle.c src/bvh.c src/camera.c src/colour.c src/compare.c src/def
 	src/triangle.c src/writer.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
+FUZZ_TARGETS := course keyword obj ppm picture
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
 PREFIX ?= /usr/local
@@ -145,7 +146,6 @@ trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 # Fuzzing: each parser's target (tests/fuzz/fuzz_*.c), built with clang's
 # libFuzzer and sanitizers in $(BUILD)/fuzz; the same targets replay their
 # inputs without libFuzzer in `make test` ($(BUILD)/replay).
-FUZZ_TARGETS := course keyword obj ppm picture
 FUZZ_CC ?= clang
 FUZZ_CFLAGS := -std=c11 -g -O1 -ffp-contract=off -fsanitize=address,undefined \
 	-fno-sanitize-recover=undefined -Iinclude -Itests/fuzz
