@@ -112,7 +112,8 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, real pad, BuildPrim *
         }
     } else {
         const Sphere *s = &scene->spheres[ref];
-        real c[3] = {s->centre.x, s->centre.y, s->centre.z}, r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
+        real c[3] = {s->centre.x, s->centre.y, s->centre.z};
+        real r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
         for (int a = 0; a < 3; a++) {
             p->box.lo[a] = c[a] - r;
             p->box.hi[a] = c[a] + r;

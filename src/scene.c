@@ -129,8 +129,8 @@ size_t scene_object_count(const Scene *scene)
 
 int scene_add_light(Scene *scene, const Light *light)
 {
-    int rc = scene_reserve(scene, (void **)&scene->lights, &scene->light_capacity, scene->light_count,
-                      sizeof *light);
+    int rc = scene_reserve(scene, (void **)&scene->lights, &scene->light_capacity,
+                           scene->light_count, sizeof *light);
 
     if (rc != 0)
         return rc;
@@ -140,8 +140,8 @@ int scene_add_light(Scene *scene, const Light *light)
 
 int scene_add_sphere(Scene *scene, const Sphere *s)
 {
-    int rc = scene_reserve(scene, (void **)&scene->spheres, &scene->sphere_capacity, scene->sphere_count,
-                      sizeof *s);
+    int rc = scene_reserve(scene, (void **)&scene->spheres, &scene->sphere_capacity,
+                           scene->sphere_count, sizeof *s);
 
     if (rc != 0)
         return rc;
@@ -154,8 +154,8 @@ int scene_add_sphere(Scene *scene, const Sphere *s)
 
 int scene_add_plane(Scene *scene, const Plane *p)
 {
-    int rc = scene_reserve(scene, (void **)&scene->planes, &scene->plane_capacity, scene->plane_count,
-                      sizeof *p);
+    int rc = scene_reserve(scene, (void **)&scene->planes, &scene->plane_capacity,
+                           scene->plane_count, sizeof *p);
 
     if (rc != 0)
         return rc;
@@ -169,7 +169,7 @@ int scene_add_plane(Scene *scene, const Plane *p)
 int scene_add_triangle(Scene *scene, const Triangle *t)
 {
     int rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
-                      scene->triangle_count, sizeof *t);
+                           scene->triangle_count, sizeof *t);
 
     if (rc != 0)
         return rc;
@@ -223,7 +223,7 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 int scene_add_texture(Scene *scene, Texture *tex)
 {
     int rc = scene_reserve(scene, (void **)&scene->textures, &scene->texture_capacity,
-                      scene->texture_count, sizeof *tex);
+                           scene->texture_count, sizeof *tex);
 
     if (rc != 0) {
         texture_free(tex);
@@ -235,8 +235,8 @@ int scene_add_texture(Scene *scene, Texture *tex)
 
 int scene_add_phong(Scene *scene, PhongMaterial *m)
 {
-    int rc = scene_reserve(scene, (void **)&scene->phong, &scene->phong_capacity, scene->phong_count,
-                      sizeof *m);
+    int rc = scene_reserve(scene, (void **)&scene->phong, &scene->phong_capacity,
+                           scene->phong_count, sizeof *m);
 
     if (rc != 0) {
         free(m->name);
@@ -248,8 +248,8 @@ int scene_add_phong(Scene *scene, PhongMaterial *m)
 
 int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)
 {
-    int rc = scene_reserve(scene, (void **)&scene->meshes, &scene->mesh_capacity, scene->mesh_count,
-                      sizeof *mesh);
+    int rc = scene_reserve(scene, (void **)&scene->meshes, &scene->mesh_capacity,
+                           scene->mesh_count, sizeof *mesh);
 
     if (rc != 0) {
         free(mesh->path);

@@ -161,7 +161,8 @@ static void limits_inputs_that_are_not_files_are_refused(void)
 
 const TestCase limits_tests[] = {
     {"limits_sizes_read_for_people", limits_sizes_read_for_people},
-    {"limits_scene_stops_at_the_element_that_passes", limits_scene_stops_at_the_element_that_passes},
+    {"limits_scene_stops_at_the_element_that_passes",
+     limits_scene_stops_at_the_element_that_passes},
     {"limits_hierarchy_is_estimated_before_it_is_built",
      limits_hierarchy_is_estimated_before_it_is_built},
     {"limits_mesh_reading_keeps_to_its_budget", limits_mesh_reading_keeps_to_its_budget},
