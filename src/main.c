@@ -16,12 +16,12 @@
 
 #include "bvh.h"
 #include "error.h"
-#include "number.h"
 #include "file.h"
 #include "image.h"
 #include "options.h"
 #include "outfile.h"
 #include "load.h"
+#include "number.h"
 #include "render.h"
 #include "save.h"
 #include "scene.h"
@@ -255,7 +255,6 @@ fail:
     return 1;
 }
 
-/* Renders opts' scene to opts' output; returns the exit status. */
 /* Checks that the image and its writing fit in what the memory limit
  * leaves after the scene, and sets that much aside from the limit for the
  * hierarchy still to come; returns 0, or -1 with *err set. */
@@ -280,6 +279,7 @@ static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Op
     return 0;
 }
 
+/* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
     RenderOptions ropts = {opts->max_depth, 1, opts->cutoff, opts->threads, NULL, NULL};

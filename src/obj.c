@@ -234,8 +234,8 @@ static int obj_record(ObjReader *r, ObjMesh *m, size_t caps[4])
     if (n == 1 && word[0] == 'v') {
         if (obj_numbers(r, &i, "a vertex (x y z)", 3, 3, val) < 0)
             return -1;
-        if (obj_reserve(r, (void **)&m->v, &caps[0], m->v_count, sizeof *m->v, kw, "vertices") !=
-            0)
+        if (obj_reserve(r, (void **)&m->v, &caps[0], m->v_count, sizeof *m->v, kw,
+                        "vertices") != 0)
             return -1;
         m->v[m->v_count++] = vec3(val[0], val[1], val[2]);
     } else if (n == 2 && memcmp(word, "vt", 2) == 0) {
