@@ -28,17 +28,11 @@ run() {
     fi
 }
 
+. tests/lib.sh
+
 # small SCENE WIDTH: the example scene at WIDTH pixels wide (memcheck runs
 # some 50 times slower), kept in scenes/ for its textures and meshes.
-small() {
-    case $(basename "$1") in
-    keyword.txt | seed002.txt)
-        awk -v w="$2" '$1 == "camera" { $10 = int($10 * w / $9); $9 = w } { print }' "$1" ;;
-    *)
-        awk -v w="$2" '{ line = $0; sub(/#.*/, "", line) }
-            line ~ /[^ \t]/ { if (++n == 5) { print w; next } } { print }' "$1" ;;
-    esac >"scenes/.memcheck-$(basename "$1")"
-}
+small() { resize "$1" "$2" >"scenes/.memcheck-$(basename "$1")"; }
 trap 'rm -rf "$T" scenes/.memcheck-*' EXIT
 
 command -v valgrind >/dev/null || { echo "memcheck: valgrind is not installed" >&2; exit 1; }

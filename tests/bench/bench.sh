@@ -22,11 +22,7 @@ DIR=build/bench
 ALL=$(nproc 2>/dev/null || echo 1)
 mkdir -p "$DIR" || exit 2
 
-# now: nanoseconds since the epoch.
-now() { date +%s%N; }
-
-# median: the median of the numbers on standard input, one a line.
-median() { sort -n | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+. tests/lib.sh
 
 # scene NAME: generates build/bench/NAME.txt once.
 scene() {
@@ -97,7 +93,7 @@ if [ "${BENCH_SCALING:-1}" = 1 ]; then
     scene spheres-1000
     for w in 480 960 1920 3840; do
         f="$DIR/scale-w$w.txt"
-        sed "6s/^1920\$/$w/" "$DIR/spheres-1000.txt" >"$f"
+        resize "$DIR/spheres-1000.txt" "$w" >"$f"
         render_time "$f"
         size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
         printf '| image size | 1000 | %s | | | %s s |\n' "$size" "$render" >>"$DIR/scale"

@@ -27,15 +27,7 @@ PLOT=tests/bench/plot.awk
 DOCS=$(dirname "$OUT")
 mkdir -p "$DIR" || exit 2
 
-now() { date +%s%N; }
-median() { sort -n | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-
-# resize SCENE WIDTH: the course scene with its resolution (the fifth
-# record) set to WIDTH; the scene's directory is kept for its textures.
-resize() {
-    awk -v w="$2" '{ line = $0; sub(/#.*/, "", line) }
-        line ~ /[^ \t]/ { if (++n == 5) { print w; next } } { print }' "$1"
-}
+. tests/lib.sh
 
 # timed NAME OPTIONS...: renders to $DIR/NAME.ppm RUNS times and prints the
 # median wall time in seconds; also renders $DIR/NAME.pfm once unless
