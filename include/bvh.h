@@ -2,12 +2,14 @@
  * bvh.h: a bounding volume hierarchy over a scene's spheres and triangles,
  * built with the surface area heuristic on binned centroids.
  *
- * Planes are unbounded and stay outside it. Each node is an axis-aligned
- * box, padded so that every ray the exact primitive tests accept also
- * enters the boxes around the primitive; a query visits the boxes the ray
- * crosses, nearest first, and applies the same primitive tests and the same
- * tie rule as a loop over every object, so renders are the same to the byte
- * with or without it.
+ * Planes are unbounded and stay outside it. The binary tree the heuristic
+ * builds is then collapsed into nodes of BVH_WIDTH children, whose boxes a
+ * ray is tested against together (GNU C vector extensions: gcc and clang
+ * turn them into SIMD instructions). Each box is padded so that every ray
+ * the exact primitive tests accept also enters the boxes around the
+ * primitive; a query visits the boxes the ray crosses, nearest first, and
+ * applies the same primitive tests and the same tie rule as a loop over
+ * every object, so renders are the same to the byte with or without it.
  */
 #ifndef RAYTRACE_BVH_H
 #define RAYTRACE_BVH_H
@@ -20,6 +22,7 @@
 struct Scene;
 
 enum {
+    BVH_WIDTH = 4,           /* children of a node */
     BVH_LEAF_MAX = 4,        /* most primitives in a leaf */
     BVH_MIN_PRIMITIVES = 16  /* scenes with fewer are not worth a hierarchy */
 };
@@ -27,16 +30,21 @@ enum {
 /* A primitive reference: BVH_TRIANGLE set for a triangle, the index below. */
 #define BVH_TRIANGLE 0x80000000u
 
+/* A node: up to BVH_WIDTH children, each a node or a leaf (a run of
+ * primitive references), their boxes laid out by coordinate so that one
+ * vector holds a coordinate of every child's box. An unused child has the
+ * box lo = +inf, hi = -inf, which no ray meets. */
 typedef struct {
-    real box[6];       /* the box: lo x y z, then hi x y z */
-    uint32_t index;      /* interior: the right child (the left is the next
-                            node); leaf: the first of its primitives */
-    uint16_t count;      /* primitives in a leaf; 0 for an interior node */
-    uint16_t axis;       /* interior: the axis it was split on */
+    real box[6][BVH_WIDTH];      /* box[c][k]: child k's lo x y z (c < 3),
+                                    then hi x y z */
+    uint32_t child[BVH_WIDTH];   /* a node's index, or a leaf's first
+                                    primitive reference */
+    uint8_t count[BVH_WIDTH];    /* a leaf's primitives; 0: a node (or an
+                                    unused child) */
 } BvhNode;
 
 typedef struct Bvh {
-    BvhNode *nodes;      /* depth-first, the root first */
+    BvhNode *nodes;      /* the root first */
     size_t node_count;
     uint32_t *prims;     /* primitive references, grouped by leaf */
     size_t prim_count;

@@ -8,10 +8,18 @@
 
 #include "scene.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 enum {
     BVH_BINS = 16,        /* centroid bins per split */
     BVH_SAH_DEPTH = 48,   /* below this depth, splits halve the count */
-    BVH_STACK = 128,      /* traversal stack: BVH_SAH_DEPTH + 32 + margin */
+    BVH_DEPTH_MAX = BVH_SAH_DEPTH + 32, /* deepest binary node: below
+                                            BVH_SAH_DEPTH splits halve < 2^32 */
+    /* Traversal stack: a node visit pops one entry and pushes at most
+     * BVH_WIDTH, and nodes are at most BVH_DEPTH_MAX deep. */
+    BVH_STACK = (BVH_WIDTH - 1) * BVH_DEPTH_MAX + BVH_WIDTH,
     BVH_ALL_AXES = 4096   /* at most this many primitives: SAH on every axis */
 };
 
@@ -58,6 +66,14 @@ typedef struct {
     Box box;         /* padded bounds */
     uint32_t ref;    /* primitive reference */
 } BuildPrim;
+
+/* A node of the binary tree the build makes first. */
+typedef struct {
+    Box box;
+    uint32_t index;  /* interior: the right child (the left is the next
+                        node); leaf: the first of its primitives */
+    uint32_t count;  /* primitives in a leaf; 0 for an interior node */
+} BuildNode;
 
 /* Returns coordinate axis of the centre of p's box, its centroid. */
 static real bvh_centroid(const BuildPrim *p, int axis)
@@ -279,24 +295,125 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     return mid;
 }
 
+/* Builds the binary tree of prims[0..n) (n > 0) into nodes (room for
+ * 2n - 1, the root first, each left child right after its parent),
+ * reordering prims by leaf; stack has room for 2 (BVH_DEPTH_MAX + 1)
+ * tasks. Returns the node count. */
+static size_t bvh_build_binary(BuildPrim *prims, size_t n, BuildNode *nodes, BuildTask *stack)
+{
+    size_t top = 0, count = 0;
+
+    stack[top++] = (BuildTask){0, n, 0, 0, 0};
+    while (top > 0) {
+        BuildTask task = stack[--top];
+        size_t id = count++, split;
+        BuildNode *node = &nodes[id];
+        int axis = 0;
+
+        if (task.is_right)
+            nodes[task.parent].index = (uint32_t)id;
+        box_empty(&node->box);
+        for (size_t i = task.start; i < task.end; i++)
+            box_grow(&node->box, &prims[i].box);
+        split = task.end - task.start <= 1
+                    ? task.start
+                    : bvh_split(prims, task.start, task.end, &node->box, task.depth, &axis);
+        if (split == task.start) {
+            node->index = (uint32_t)task.start;
+            node->count = (uint32_t)(task.end - task.start);
+            continue;
+        }
+        node->count = 0;
+        /* The left subtree comes next; the right one patches our index. */
+        stack[top++] = (BuildTask){split, task.end, task.depth + 1, 1, id};
+        stack[top++] = (BuildTask){task.start, split, task.depth + 1, 0, 0};
+    }
+    return count;
+}
+
+/* Gathers in members the binary nodes that become the children of the
+ * node made from binary node id: from id alone, the interior member with
+ * the largest box gives way to its two children until there are BVH_WIDTH
+ * members or only leaves. Returns how many. */
+static int bvh_members(const BuildNode *nodes, uint32_t id, uint32_t members[BVH_WIDTH])
+{
+    int m = 1;
+
+    members[0] = id;
+    while (m < BVH_WIDTH) {
+        int best = -1;
+        real area = -1;
+        for (int k = 0; k < m; k++) {
+            const BuildNode *b = &nodes[members[k]];
+            if (b->count == 0 && box_half_area(&b->box) > area) {
+                best = k;
+                area = box_half_area(&b->box);
+            }
+        }
+        if (best < 0)
+            break;
+        members[m++] = nodes[members[best]].index;
+        members[best] = members[best] + 1;
+    }
+    return m;
+}
+
+/* Returns how many nodes collapsing binary node id's subtree makes. */
+static size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
+{
+    uint32_t members[BVH_WIDTH];
+    int m = bvh_members(nodes, id, members);
+    size_t count = 1;
+
+    for (int k = 0; k < m; k++)
+        if (nodes[members[k]].count == 0)
+            count += bvh_collapsed_count(nodes, members[k]);
+    return count;
+}
+
+/* Writes the node made from binary node id, at depth, and then its
+ * subtree's, into bvh's nodes from bvh->node_count on; returns its index. */
+static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, Bvh *bvh)
+{
+    uint32_t members[BVH_WIDTH], self = (uint32_t)bvh->node_count++;
+    int m = bvh_members(nodes, id, members);
+    BvhNode *w = &bvh->nodes[self];
+
+    if (depth > bvh->depth)
+        bvh->depth = depth;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        const BuildNode *b = &nodes[members[k < m ? k : 0]];
+        for (int a = 0; a < 3; a++) {
+            w->box[a][k] = k < m ? b->box.lo[a] : INFINITY;
+            w->box[3 + a][k] = k < m ? b->box.hi[a] : -INFINITY;
+        }
+        w->count[k] = k < m ? (uint8_t)b->count : 0;
+        w->child[k] = 0;
+        if (k < m)
+            w->child[k] = b->count > 0 ? b->index : bvh_collapse(nodes, members[k], depth + 1, bvh);
+    }
+    return self;
+}
+
 int bvh_build(Bvh *bvh, const Scene *scene)
 {
-    size_t n = scene->sphere_count + scene->triangle_count, top = 0, cap_nodes;
+    size_t n = scene->sphere_count + scene->triangle_count;
     BuildPrim *prims;
     BuildTask *stack;
+    BuildNode *nodes;
     real pad = bvh_padding(scene);
 
     memset(bvh, 0, sizeof *bvh);
     if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0)
         return -1;
-    cap_nodes = 2 * n;
     prims = malloc(n * sizeof *prims);
-    stack = malloc((BVH_SAH_DEPTH + 70) * 2 * sizeof *stack);
-    bvh->nodes = malloc(cap_nodes * sizeof *bvh->nodes);
+    stack = malloc((BVH_DEPTH_MAX + 1) * 2 * sizeof *stack);
+    nodes = malloc((2 * n - 1) * sizeof *nodes);
     bvh->prims = malloc(n * sizeof *bvh->prims);
-    if (!prims || !stack || !bvh->nodes || !bvh->prims) {
+    if (!prims || !stack || !nodes || !bvh->prims) {
         free(prims);
         free(stack);
+        free(nodes);
         bvh_free(bvh);
         return -1;
     }
@@ -304,57 +421,39 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
     for (size_t i = 0; i < scene->triangle_count; i++)
         bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
-    stack[top++] = (BuildTask){0, n, 0, 0, 0};
-    while (top > 0) {
-        BuildTask task = stack[--top];
-        size_t id = bvh->node_count++, split;
-        BvhNode *node = &bvh->nodes[id];
-        Box bounds;
-        int axis = 0;
-
-        if (task.is_right)
-            bvh->nodes[task.parent].index = (uint32_t)id;
-        box_empty(&bounds);
-        for (size_t i = task.start; i < task.end; i++)
-            box_grow(&bounds, &prims[i].box);
-        memcpy(node->box, bounds.lo, sizeof bounds.lo);
-        memcpy(node->box + 3, bounds.hi, sizeof bounds.hi);
-        if (task.depth > bvh->depth)
-            bvh->depth = task.depth;
-        split = task.end - task.start <= 1
-                    ? task.start
-                    : bvh_split(prims, task.start, task.end, &bounds, task.depth, &axis);
-        if (split == task.start) {
-            node->index = (uint32_t)task.start;
-            node->count = (uint16_t)(task.end - task.start);
-            node->axis = 0;
-            continue;
-        }
-        node->count = 0;
-        node->axis = (uint16_t)axis;
-        /* The left subtree comes next; the right one patches our index. */
-        stack[top++] = (BuildTask){split, task.end, task.depth + 1, 1, id};
-        stack[top++] = (BuildTask){task.start, split, task.depth + 1, 0, 0};
-    }
+    bvh_build_binary(prims, n, nodes, stack);
     for (size_t i = 0; i < n; i++)
         bvh->prims[i] = prims[i].ref;
     bvh->prim_count = n;
-    /* Give back the room of the nodes that were not needed. */
-    {
-        BvhNode *fit = realloc(bvh->nodes, bvh->node_count * sizeof *fit);
-        if (fit)
-            bvh->nodes = fit;
-    }
     free(prims);
     free(stack);
+    bvh->nodes = malloc(bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
+    if (!bvh->nodes) {
+        free(nodes);
+        bvh_free(bvh);
+        return -1;
+    }
+    bvh_collapse(nodes, 0, 0, bvh);
+    free(nodes);
     return 0;
 }
 
 size_t bvh_build_memory(size_t n)
 {
-    size_t each = sizeof(BuildPrim) + 2 * sizeof(BvhNode) + sizeof(uint32_t);
+    /* Building: the primitives' boxes, the binary tree and the references.
+     * Collapsing: the tree, the references and the nodes, at most 2n / 3 + 1
+     * of them: a node of BVH_WIDTH = 4 children takes up 3 of the tree's
+     * interior nodes, one of fewer has only leaves (at least 2 of the n
+     * leaves), and with W4 and Ws of each, 3 W4 + Ws <= n - 1 and Ws <= n / 2
+     * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. */
+    size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
+    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 
-    return n > (SIZE_MAX - 4096) / each ? SIZE_MAX : n * each + 4096;
+    if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
+        return SIZE_MAX;
+    collapse = n * collapse + (2 * n / 3 + 1) * sizeof(BvhNode);
+    build *= n;
+    return (build > collapse ? build : collapse) + 4096;
 }
 
 size_t bvh_memory(const Bvh *bvh)
@@ -369,27 +468,44 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
+/* A vector of 16 bytes (SSE2 on x86-64, NEON on AArch64: every 64-bit
+ * processor has them) of one coordinate of BVH_LANES children's boxes, and
+ * a lane mask: a row of a node's boxes is BVH_VECTORS of them. */
+#ifdef RAYTRACE_REAL_FLOAT
+typedef int32_t bvh_lane_bits;
+#else
+typedef int64_t bvh_lane_bits;
+#endif
+typedef real BvhLanes __attribute__((vector_size(16)));
+typedef bvh_lane_bits BvhMask __attribute__((vector_size(16)));
+enum {
+    BVH_LANES = 16 / sizeof(real),
+    BVH_VECTORS = BVH_WIDTH / BVH_LANES
+};
 
-/* The ray, prepared for box tests: reciprocal directions (+-inf for a zero
- * component, by the sign of that zero), and for each axis which end of a
- * node's box (an offset into BvhNode.box: lo or hi) the ray meets first. */
+/* The ray, prepared for box tests: origin and reciprocal direction (+-inf
+ * for a zero component, by the sign of that zero) in every lane, and for
+ * each axis which row of a node's boxes (lo: a, or hi: 3 + a) the ray
+ * meets first. */
 typedef struct {
-    real o[3], inv[3];
-    int near[3], far[3]; /* offsets into a node's {lo[3], hi[3]}: a, or 3 + a */
+    BvhLanes o[3], inv[3];
+    int near[3], far[3];
 } BvhRay;
 
 static BvhRay bvh_ray(const Ray *r)
 {
     BvhRay b;
+    real o[3] = {r->origin.x, r->origin.y, r->origin.z};
     real d[3] = {r->dir.x, r->dir.y, r->dir.z};
 
-    b.o[0] = r->origin.x;
-    b.o[1] = r->origin.y;
-    b.o[2] = r->origin.z;
     for (int a = 0; a < 3; a++) {
-        b.inv[a] = 1 / d[a];
-        b.near[a] = b.inv[a] < 0 ? 3 + a : a;
-        b.far[a] = b.inv[a] < 0 ? a : 3 + a;
+        real inv = 1 / d[a];
+        for (int k = 0; k < BVH_LANES; k++) {
+            b.o[a][k] = o[a];
+            b.inv[a][k] = inv;
+        }
+        b.near[a] = inv < 0 ? 3 + a : a;
+        b.far[a] = inv < 0 ? a : 3 + a;
     }
     return b;
 }
@@ -399,39 +515,74 @@ static BvhRay bvh_ray(const Ray *r)
  * 1 + 8 ulps > 1 + 2 gamma_3 never loses a crossing (pbrt-v3, 3.9.2). */
 #define BVH_WIDEN (1 + 4 * REAL_EPSILON)
 
-/* Says whether the ray meets node's box at some t in [0, tmax]; if so,
- * stores in *enter where it enters (to within rounding, never later than
- * the true entry by more than BVH_WIDEN allows). The reciprocal directions
- * are +-inf for a zero component: the products then are +-inf (outside the
- * slab or inside it) or NaN (on its plane), which the comparisons ignore. */
-static inline int bvh_box_enter(const BvhNode *node, const BvhRay *r, real tmax,
-                                real *enter)
+/* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
+ * what SSE's max and min instructions do. */
+#if defined(__SSE2__)
+#ifdef RAYTRACE_REAL_FLOAT
+#define bvh_max(a, b) ((BvhLanes)_mm_max_ps((a), (b)))
+#define bvh_min(a, b) ((BvhLanes)_mm_min_ps((a), (b)))
+#define bvh_mask_bits(m) ((unsigned)_mm_movemask_ps((__m128)(m)))
+#else
+#define bvh_max(a, b) ((BvhLanes)_mm_max_pd((a), (b)))
+#define bvh_min(a, b) ((BvhLanes)_mm_min_pd((a), (b)))
+#define bvh_mask_bits(m) ((unsigned)_mm_movemask_pd((__m128d)(m)))
+#endif
+#else
+static inline BvhLanes bvh_pick(BvhMask m, BvhLanes a, BvhLanes b)
 {
-    const real *b = node->box;
-    real t0 = 0, t1 = tmax * BVH_WIDEN;
-    real nx = (b[r->near[0]] - r->o[0]) * r->inv[0], fx = (b[r->far[0]] - r->o[0]) * r->inv[0];
-    real ny = (b[r->near[1]] - r->o[1]) * r->inv[1], fy = (b[r->far[1]] - r->o[1]) * r->inv[1];
-    real nz = (b[r->near[2]] - r->o[2]) * r->inv[2], fz = (b[r->far[2]] - r->o[2]) * r->inv[2];
+    return (BvhLanes)((m & (BvhMask)a) | (~m & (BvhMask)b));
+}
+#define bvh_max(a, b) bvh_pick((a) > (b), (a), (b))
+#define bvh_min(a, b) bvh_pick((a) < (b), (a), (b))
+static inline unsigned bvh_mask_bits(BvhMask m)
+{
+    unsigned bits = 0;
 
-    fx *= BVH_WIDEN;
-    fy *= BVH_WIDEN;
-    fz *= BVH_WIDEN;
-    t0 = nx > t0 ? nx : t0;
-    t0 = ny > t0 ? ny : t0;
-    t0 = nz > t0 ? nz : t0;
-    t1 = fx < t1 ? fx : t1;
-    t1 = fy < t1 ? fy : t1;
-    t1 = fz < t1 ? fz : t1;
-    *enter = t0;
-    return t0 <= t1;
+    for (int k = 0; k < BVH_LANES; k++)
+        bits |= (unsigned)(m[k] & 1) << k;
+    return bits;
+}
+#endif
+
+/* Returns lanes v * BVH_LANES.. of row row of node's boxes. */
+static inline BvhLanes bvh_row(const BvhNode *node, int row, int v)
+{
+    BvhLanes x;
+
+    memcpy(&x, &node->box[row][v * BVH_LANES], sizeof x);
+    return x;
 }
 
-/* bvh_box_enter() when the entry point is not needed. */
-static inline int bvh_box_hit(const BvhNode *node, const BvhRay *r, real tmax)
+/* Says which of node's children's boxes the ray meets at some t in
+ * [0, tmax]: bit k for child k; stores in enter[k] where the ray enters
+ * child k's box (to within rounding, never later than the true entry by
+ * more than BVH_WIDEN allows). The reciprocal directions are +-inf for a
+ * zero component: the products then are +-inf (outside the slab or inside
+ * it) or NaN (on its plane), which the comparisons ignore. */
+static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, real tmax,
+                                          real enter[BVH_WIDTH])
 {
-    real enter;
+    unsigned bits = 0;
 
-    return bvh_box_enter(node, r, tmax, &enter);
+    /* Unrolled: the loops are short and the body is a few instructions. */
+#pragma GCC unroll 4
+    for (int v = 0; v < BVH_VECTORS; v++) {
+        BvhLanes t0 = {0}, t1 = {0}, n, f;
+        BvhMask in;
+
+        t1 += tmax * BVH_WIDEN;
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            n = (bvh_row(node, r->near[a], v) - r->o[a]) * r->inv[a];
+            f = (bvh_row(node, r->far[a], v) - r->o[a]) * r->inv[a] * BVH_WIDEN;
+            t0 = bvh_max(n, t0);
+            t1 = bvh_min(f, t1);
+        }
+        in = t0 <= t1;
+        memcpy(&enter[v * BVH_LANES], &t0, sizeof t0);
+        bits |= bvh_mask_bits(in) << (v * BVH_LANES);
+    }
+    return bits;
 }
 
 /* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
@@ -449,24 +600,58 @@ static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
                               : scene->spheres[ref].order;
 }
 
+/* A child still to visit: a node (count 0) or a leaf. */
+typedef struct {
+    uint32_t child, count; /* as in BvhNode */
+    real enter;            /* where the ray enters its box */
+} BvhEntry;
+
 int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
 {
     BvhRay r = bvh_ray(ray);
-    struct {
-        uint32_t id;  /* a node still to visit */
-        real enter; /* where the ray enters its box */
-    } stack[BVH_STACK];
+    BvhEntry stack[BVH_STACK];
     int top = 0, found = 0;
     uint32_t id = 0;
-    real enter, bound = tmax; /* primitives are tested below bound */
+    real bound = tmax; /* primitives are tested below bound */
 
-    if (!bvh_box_enter(&bvh->nodes[0], &r, tmax, &enter))
-        return 0;
     for (;;) {
+        /* The children the ray enters before the best hit so far go on the
+         * stack, the nearest on top. A box entered exactly at the best t
+         * may still hold an earlier-listed object at that t: the limit
+         * keeps it. */
         const BvhNode *node = &bvh->nodes[id];
+        real enter[BVH_WIDTH];
+        unsigned bits = bvh_children_enter(node, &r, found ? hit->t : tmax, enter);
+        int base = top;
 
-        if (node->count > 0) {
-            for (uint32_t k = node->index; k < node->index + node->count; k++) {
+        /* One node alone: straight in. */
+        if (bits != 0 && (bits & (bits - 1)) == 0 && node->count[__builtin_ctz(bits)] == 0) {
+            id = node->child[__builtin_ctz(bits)];
+            continue;
+        }
+        for (unsigned m = bits; m != 0; m &= m - 1) {
+            int k = __builtin_ctz(m), j = top++;
+            BvhEntry e = {node->child[k], node->count[k], enter[k]};
+            while (j > base && stack[j - 1].enter < e.enter) {
+                stack[j] = stack[j - 1];
+                j--;
+            }
+            stack[j] = e;
+        }
+        /* The next stacked child the ray can still reach before its hit:
+         * leaves are tested on the way, a node is visited. */
+        for (;;) {
+            BvhEntry e;
+            if (top == 0)
+                return found;
+            e = stack[--top];
+            if (found && e.enter > hit->t * BVH_WIDEN)
+                continue;
+            if (e.count == 0) {
+                id = e.child;
+                break;
+            }
+            for (uint32_t k = e.child; k < e.child + e.count; k++) {
                 uint32_t ref = bvh->prims[k];
                 real t;
                 unsigned order;
@@ -483,88 +668,65 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
                     bound = real_next(t, 1);
                 }
             }
-        } else {
-            /* Both children's boxes; the nearer first, the other later
-             * unless a hit before its entry is found meanwhile. A box
-             * entered exactly at the best t may still hold an
-             * earlier-listed object at that t: the limit keeps it. */
-            uint32_t a = id + 1, b = node->index;
-            real ta, tb, limit = found ? hit->t : tmax;
-            int ha = bvh_box_enter(&bvh->nodes[a], &r, limit, &ta);
-            int hb = bvh_box_enter(&bvh->nodes[b], &r, limit, &tb);
-
-            if (ha && hb) {
-                if (tb < ta) {
-                    uint32_t tmp = a;
-                    real tt = ta;
-                    a = b;
-                    b = tmp;
-                    ta = tb;
-                    tb = tt;
-                }
-                stack[top].id = b;
-                stack[top].enter = tb;
-                top++;
-                id = a;
-                continue;
-            }
-            if (ha || hb) {
-                id = ha ? a : b;
-                continue;
-            }
         }
-        /* The next stacked node the ray can still reach before its hit. */
-        for (;;) {
-            if (top == 0)
-                return found;
-            top--;
-            if (!found || stack[top].enter <= hit->t * BVH_WIDEN)
-                break;
-        }
-        id = stack[top].id;
     }
 }
 
-/* A walk over the leaves whose boxes a ray meets, in no particular order. */
+/* A walk over the leaves whose boxes a ray meets, in no particular order:
+ * the children still to visit. */
 typedef struct {
-    uint32_t stack[BVH_STACK]; /* nodes still to visit */
-    int top;                   /* how many */
+    struct {
+        uint32_t child, count; /* as in BvhNode */
+    } stack[BVH_STACK];
+    int top;
 } BvhWalk;
-
-/* Returns the next leaf whose box the ray r meets at some t in [0, tmax],
- * or NULL when there are no more; start w with bvh_walk_start(). */
-static const BvhNode *bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w)
-{
-    while (w->top > 0) {
-        uint32_t id = w->stack[--w->top];
-        const BvhNode *node = &bvh->nodes[id];
-
-        if (!bvh_box_hit(node, r, tmax))
-            continue;
-        if (node->count > 0)
-            return node;
-        w->stack[w->top++] = node->index;
-        w->stack[w->top++] = id + 1;
-    }
-    return NULL;
-}
 
 static void bvh_walk_start(BvhWalk *w)
 {
-    w->stack[0] = 0;
+    w->stack[0].child = 0; /* the root */
+    w->stack[0].count = 0;
     w->top = 1;
+}
+
+/* Finds the next leaf whose box the ray r meets at some t in [0, tmax]:
+ * returns 1 with its primitives at *first, *count, or 0 when there are no
+ * more; start w with bvh_walk_start(). */
+static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w, uint32_t *first,
+                         uint32_t *count)
+{
+    while (w->top > 0) {
+        const BvhNode *node;
+        real enter[BVH_WIDTH];
+        unsigned bits;
+
+        w->top--;
+        if (w->stack[w->top].count > 0) {
+            *first = w->stack[w->top].child;
+            *count = w->stack[w->top].count;
+            return 1;
+        }
+        node = &bvh->nodes[w->stack[w->top].child];
+        bits = bvh_children_enter(node, r, tmax, enter);
+        for (; bits != 0; bits &= bits - 1) {
+            int k = __builtin_ctz(bits);
+            w->stack[w->top].child = node->child[k];
+            w->stack[w->top].count = node->count[k];
+            w->top++;
+        }
+    }
+    return 0;
 }
 
 int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
 {
     BvhRay r = bvh_ray(ray);
     BvhWalk w;
-    const BvhNode *leaf;
+    uint32_t first, count;
     real t;
 
     bvh_walk_start(&w);
-    while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL)
-        for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++)
+    while (bvh_next_leaf(bvh, &r, tmax, &w, &first, &count))
+        for (uint32_t k = first; k < first + count; k++)
             if (bvh_prim_hit(scene, bvh->prims[k], ray, 0, tmax, &t))
                 return 1;
     return 0;
@@ -581,13 +743,13 @@ int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
 {
     BvhRay r = bvh_ray(ray);
     BvhWalk w;
-    const BvhNode *leaf;
+    uint32_t first, count;
     int n = 0;
     real t;
 
     bvh_walk_start(&w);
-    while ((leaf = bvh_next_leaf(bvh, &r, tmax, &w)) != NULL) {
-        for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++) {
+    while (bvh_next_leaf(bvh, &r, tmax, &w, &first, &count)) {
+        for (uint32_t k = first; k < first + count; k++) {
             uint32_t ref = bvh->prims[k];
             const Material *m;
             int c;
