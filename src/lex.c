@@ -143,31 +143,31 @@ int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int i
     char q[64];
     double v = 0;
 
-    lex_quote(q, sizeof q, t);
     switch (number_parse(t->text, t->len, &v)) {
     case NUMBER_OK:
         break;
     case NUMBER_SYNTAX:
         lex_fail(L, &rec->line, t->column, "expected a number for %s's %s, found %s", what,
-                 name, q);
+                 name, lex_quote(q, sizeof q, t));
         return -1;
     case NUMBER_NONFINITE:
         lex_fail(L, &rec->line, t->column, "%s's %s must be a finite number, found %s", what,
-                 name, q);
+                 name, lex_quote(q, sizeof q, t));
         return -1;
     case NUMBER_HEX:
         lex_fail(L, &rec->line, t->column,
                  "%s's %s must be a decimal number, found %s (hexadecimal is not accepted)",
-                 what, name, q);
+                 what, name, lex_quote(q, sizeof q, t));
         return -1;
     case NUMBER_TOO_LARGE:
         lex_fail(L, &rec->line, t->column,
-                 "%s's %s is out of range: %s exceeds 1e15 in magnitude", what, name, q);
+                 "%s's %s is out of range: %s exceeds 1e15 in magnitude", what, name,
+                 lex_quote(q, sizeof q, t));
         return -1;
     case NUMBER_UNDERFLOW:
         lex_fail(L, &rec->line, t->column,
                  "%s's %s is out of range: %s is too small for a double (write 0 for zero)",
-                 what, name, q);
+                 what, name, lex_quote(q, sizeof q, t));
         return -1;
     case NUMBER_NO_MEMORY:
         error_set(L->err, L->name, "out of memory");
@@ -179,28 +179,28 @@ int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int i
     case FIELD_COLOUR:
         if (!(v >= 0 && v <= 255)) {
             lex_fail(L, &rec->line, t->column, "%s's %s must be in [0, 255], found %s", what,
-                     name, q);
+                     name, lex_quote(q, sizeof q, t));
             return -1;
         }
         break;
     case FIELD_POSITIVE:
         if (!(v > 0)) {
             lex_fail(L, &rec->line, t->column, "%s's %s must be greater than 0, found %s", what,
-                     name, q);
+                     name, lex_quote(q, sizeof q, t));
             return -1;
         }
         break;
     case FIELD_NONNEGATIVE:
         if (!(v >= 0)) {
             lex_fail(L, &rec->line, t->column, "%s's %s must be at least 0, found %s", what,
-                     name, q);
+                     name, lex_quote(q, sizeof q, t));
             return -1;
         }
         break;
     case FIELD_FRACTION:
         if (!(v >= 0 && v <= 1)) {
             lex_fail(L, &rec->line, t->column, "%s's %s must be in [0, 1], found %s", what,
-                     name, q);
+                     name, lex_quote(q, sizeof q, t));
             return -1;
         }
         break;

@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +34,73 @@ static NumberStatus number_non_decimal(const char *s, size_t len)
     if (len > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X'))
         return NUMBER_HEX;
     return NUMBER_SYNTAX;
+}
+
+/* Clinger's fast path: converts the decimal number at s (already checked
+ * to have number_parse()'s form) to *out and returns 1 when its digits,
+ * leading zeros aside, are at most 15 (their integer m is then exact in a
+ * double) and its decimal exponent e is at most 22 in magnitude (10^22 is
+ * the largest power of ten a double holds exactly): m * 10^e or m / 10^-e is
+ * then one correctly rounded operation on exact operands, so *out is the
+ * correctly rounded value, as strtod() gives. Returns 0 otherwise (and
+ * where doubles are evaluated in wider precision, which would round twice). */
+static int number_fast(const char *s, size_t len, double *out)
+{
+#if FLT_EVAL_METHOD == 0
+    static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    size_t i = 0;
+    int negative = 0, significant = 0, fraction = 0;
+    long e = 0, exponent = 0;
+    uint64_t m = 0;
+    double v;
+
+    if (s[i] == '+' || s[i] == '-')
+        negative = s[i++] == '-';
+    for (; i < len && s[i] != '.' && s[i] != 'e' && s[i] != 'E'; i++) {
+        if (m == 0 && s[i] == '0')
+            continue;
+        if (++significant > 15)
+            return 0;
+        m = m * 10 + (uint64_t)(s[i] - '0');
+    }
+    if (i < len && s[i] == '.')
+        for (i++; i < len && s[i] != 'e' && s[i] != 'E'; i++) {
+            if (++fraction > 22 + 15)
+                return 0;
+            if (m == 0 && s[i] == '0')
+                continue;
+            if (++significant > 15)
+                return 0;
+            m = m * 10 + (uint64_t)(s[i] - '0');
+        }
+    if (i < len) { /* the exponent */
+        int minus = 0;
+        i++;
+        if (s[i] == '+' || s[i] == '-')
+            minus = s[i++] == '-';
+        for (; i < len; i++)
+            if (exponent < 1000)
+                exponent = exponent * 10 + (s[i] - '0');
+        if (minus)
+            exponent = -exponent;
+    }
+    e = exponent - fraction;
+    if (m == 0)
+        v = 0;
+    else if (e < -22 || e > 22)
+        return 0;
+    else
+        v = e < 0 ? (double)m / powers[-e] : (double)m * powers[e];
+    *out = negative ? -v : v;
+    return 1;
+#else
+    (void)s;
+    (void)len;
+    (void)out;
+    return 0;
+#endif
 }
 
 /*
@@ -70,14 +138,16 @@ NumberStatus number_parse(const char *s, size_t len, double *out)
     if (i != len)
         return number_non_decimal(s, len);
 
-    buf = len < sizeof small ? small : malloc(len + 1);
-    if (!buf)
-        return NUMBER_NO_MEMORY;
-    memcpy(buf, s, len);
-    buf[len] = '\0';
-    v = strtod(buf, NULL);
-    if (buf != small)
-        free(buf);
+    if (!number_fast(s, len, &v)) {
+        buf = len < sizeof small ? small : malloc(len + 1);
+        if (!buf)
+            return NUMBER_NO_MEMORY;
+        memcpy(buf, s, len);
+        buf[len] = '\0';
+        v = strtod(buf, NULL);
+        if (buf != small)
+            free(buf);
+    }
     if (!(fabs(v) <= NUMBER_MAX_MAGNITUDE))
         return NUMBER_TOO_LARGE;
     if ((v == 0 && nonzero) || (v != 0 && fabs(v) < DBL_MIN))

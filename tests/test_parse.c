@@ -5,7 +5,9 @@
 #include <string.h>
 
 #include "load.h"
+#include "number.h"
 #include "parse.h"
+#include "rng.h"
 #include "test.h"
 
 /* A valid header: the screen is 2 x 2 at z = 1, so 4 x 4 pixels. */
@@ -74,6 +76,46 @@ static void parse_accepts_number_forms(void)
     CHECK_NEAR(0, sc.lights[0].position.z, 0);
     CHECK_NEAR(0.1, strtod("0.1", NULL), 0); /* correctly rounded, as strtod */
     scene_free(&sc);
+}
+
+/* number_parse() gives strtod()'s bits on 200,000 random spellings: 1 to
+ * 20 digits with the point anywhere or nowhere, leading and trailing zeros,
+ * signs and exponents, around the fast path's limits (15 digits, 10^±22). */
+static void parse_numbers_round_as_strtod(void)
+{
+    int differ = 0, parsed = 0;
+
+    for (int i = 0; i < 200000; i++) {
+        char buf[64];
+        size_t n = 0;
+        int digits = 1 + (int)(rng_uniform() * 20), point = (int)(rng_uniform() * (digits + 2));
+        double a, b;
+
+        if (rng_uniform() < 0.3)
+            buf[n++] = rng_uniform() < 0.5 ? '-' : '+';
+        for (int k = 0; k < digits; k++) {
+            if (k == point)
+                buf[n++] = '.';
+            buf[n++] = (char)('0' + (rng_uniform() < 0.2 ? 0 : (int)(rng_uniform() * 10)));
+        }
+        if (point == digits && rng_uniform() < 0.5)
+            buf[n++] = '.';
+        if (rng_uniform() < 0.4)
+            n += (size_t)sprintf(buf + n, "e%d", (int)(rng_uniform() * 60) - 30);
+        buf[n] = '\0';
+        if (buf[n - 1] == '.' && (n == 1 || buf[n - 2] < '0' || buf[n - 2] > '9'))
+            continue; /* "." or "-.": not numbers */
+        if (number_parse(buf, n, &a) != NUMBER_OK)
+            continue; /* out of range: the checks below cover those */
+        b = strtod(buf, NULL);
+        parsed++;
+        if (memcmp(&a, &b, sizeof a) != 0) {
+            if (differ++ < 5)
+                printf("    %s: %.17g, strtod %.17g\n", buf, a, b);
+        }
+    }
+    CHECK(parsed > 150000);
+    CHECK_INT(0, differ);
 }
 
 static void parse_accepts_many_spheres(void)
@@ -465,6 +507,7 @@ const TestCase parse_tests[] = {
     {"parse_accepts_the_example", parse_accepts_the_example},
     {"parse_accepts_comments_blanks_crlf_tabs_bom", parse_accepts_comments_blanks_crlf_tabs_bom},
     {"parse_accepts_number_forms", parse_accepts_number_forms},
+    {"parse_numbers_round_as_strtod", parse_numbers_round_as_strtod},
     {"parse_accepts_many_spheres", parse_accepts_many_spheres},
     {"parse_height_follows_the_screen", parse_height_follows_the_screen},
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
