@@ -47,14 +47,18 @@ typedef struct Bvh {
     BvhNode *nodes;      /* the root first */
     size_t node_count;
     uint32_t *prims;     /* primitive references, grouped by leaf */
+    real (*balls)[4];    /* balls[k]: when prims[k] is a sphere, its centre
+                            x y z and radius, copied so that queries read
+                            them in leaf order; NULL without spheres */
     size_t prim_count;
     int depth;           /* deepest node, the root at 0 */
 } Bvh;
 
 /* Builds the hierarchy of scene's spheres and triangles into *bvh in
- * O(n log n); returns 0, or -1 (nothing allocated) when memory runs out or
- * the scene holds 2^31 objects of a kind. */
-int bvh_build(Bvh *bvh, const struct Scene *scene);
+ * O(n log n), with up to threads threads (in OpenMP builds; the hierarchy
+ * is the same whatever their number); returns 0, or -1 (nothing allocated)
+ * when memory runs out or the scene holds 2^31 objects of a kind. */
+int bvh_build(Bvh *bvh, const struct Scene *scene, int threads);
 
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);

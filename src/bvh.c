@@ -28,8 +28,10 @@ typedef struct {
     real lo[3], hi[3];
 } Box;
 
+/* The box helpers' loops are unrolled: they run per primitive and bin. */
 static void box_empty(Box *b)
 {
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         b->lo[a] = INFINITY;
         b->hi[a] = -INFINITY;
@@ -40,6 +42,7 @@ static void box_empty(Box *b)
  * comparisons do what fmin() and fmax() would, without a call. */
 static inline void box_grow(Box *b, const Box *c)
 {
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         b->lo[a] = c->lo[a] < b->lo[a] ? c->lo[a] : b->lo[a];
         b->hi[a] = c->hi[a] > b->hi[a] ? c->hi[a] : b->hi[a];
@@ -48,6 +51,7 @@ static inline void box_grow(Box *b, const Box *c)
 
 static inline void box_grow_point(Box *b, const real p[3])
 {
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         b->lo[a] = p[a] < b->lo[a] ? p[a] : b->lo[a];
         b->hi[a] = p[a] > b->hi[a] ? p[a] : b->hi[a];
@@ -164,13 +168,14 @@ static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axi
     }
 }
 
-/* A piece of work: build the subtree of prims[start..end) at depth; a
- * right subtree writes its root's index into its parent's node. */
+/* A piece of work: build the subtree of prims[start..end) at depth, its
+ * root at node. A subtree of m primitives takes nodes node .. node + 2m - 2
+ * (fewer when leaves hold several): its left child is node + 1, its right
+ * node + 2 m_left, so the tree is the same whichever thread builds what. */
 typedef struct {
     size_t start, end;
     int depth;
-    int is_right;     /* 1: a right child, whose parent waits for its index */
-    size_t parent;    /* that parent */
+    size_t node;
 } BuildTask;
 
 /* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
@@ -189,8 +194,8 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
                            int axis, real lo, real scale, int *split)
 {
     size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
-    Box bin[BVH_BINS], left[BVH_BINS], acc;
-    real best = INFINITY;
+    Box bin[BVH_BINS], acc;
+    real left_area[BVH_BINS], best = INFINITY, per_area = 1 / box_half_area(bounds);
 
     *split = -1;
     for (int b = 0; b < BVH_BINS; b++)
@@ -204,7 +209,7 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
     for (int b = 0, total = 0; b < BVH_BINS; b++) {
         box_grow(&acc, &bin[b]);
         total += (int)count[b];
-        left[b] = acc;
+        left_area[b] = box_half_area(&acc);
         left_n[b] = (size_t)total;
     }
     box_empty(&acc);
@@ -213,9 +218,9 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
         box_grow(&acc, &bin[b]);
         if (left_n[b - 1] == 0 || left_n[b - 1] == n)
             continue;
-        cost = 1 + (box_half_area(&left[b - 1]) * (real)left_n[b - 1] +
-                    box_half_area(&acc) * (real)(n - left_n[b - 1])) /
-                       box_half_area(bounds);
+        cost = 1 + (left_area[b - 1] * (real)left_n[b - 1] +
+                    box_half_area(&acc) * (real)(n - left_n[b - 1])) *
+                       per_area;
         if (cost < best) {
             best = cost;
             *split = b;
@@ -224,25 +229,19 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
     return best;
 }
 
-/* Chooses how to split prims[start..end) (count > BVH_LEAF_MAX or SAH says
- * so); returns the index of the first primitive of the right part, or
- * start when it is better left a leaf. Sets *axis. */
-static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *bounds, int depth,
-                        int *axis)
+/* Chooses how to split prims[start..end), of box bounds and centroids'
+ * box cb (count > BVH_LEAF_MAX or SAH says so); returns the index of the
+ * first primitive of the right part, or start when it is better left a
+ * leaf. Sets *axis. */
+static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *bounds,
+                        const Box *cb, int depth, int *axis)
 {
     size_t n = end - start, mid;
-    Box cb;
     real extent[3], scale[3], best = INFINITY;
     int best_split = -1;
 
-    box_empty(&cb);
-    for (size_t i = start; i < end; i++) {
-        real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
-                       bvh_centroid(&prims[i], 2)};
-        box_grow_point(&cb, c);
-    }
     for (int a = 0; a < 3; a++) {
-        extent[a] = cb.hi[a] - cb.lo[a];
+        extent[a] = cb->hi[a] - cb->lo[a];
         scale[a] = BVH_BINS / extent[a];
     }
     *axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
@@ -265,7 +264,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         real cost;
         if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != *axis))
             continue;
-        cost = bvh_sah_axis(prims, start, end, bounds, a, cb.lo[a], scale[a], &split);
+        cost = bvh_sah_axis(prims, start, end, bounds, a, cb->lo[a], scale[a], &split);
         if (split >= 0 && cost < best) {
             best = cost;
             best_split = split;
@@ -278,7 +277,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     {
         size_t i = start, j = end;
         while (i < j) {
-            if (bvh_bin(&prims[i], *axis, cb.lo[*axis], scale[*axis]) < best_split) {
+            if (bvh_bin(&prims[i], *axis, cb->lo[*axis], scale[*axis]) < best_split) {
                 i++;
             } else {
                 BuildPrim tmp = prims[i];
@@ -295,40 +294,57 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     return mid;
 }
 
-/* Builds the binary tree of prims[0..n) (n > 0) into nodes (room for
- * 2n - 1, the root first, each left child right after its parent),
- * reordering prims by leaf; stack has room for 2 (BVH_DEPTH_MAX + 1)
- * tasks. Returns the node count. */
-static size_t bvh_build_binary(BuildPrim *prims, size_t n, BuildNode *nodes, BuildTask *stack)
+enum {
+    BVH_TASK_MIN = 16384 /* fewer primitives: built by the thread at hand */
+};
+
+/* Builds the binary subtree of task into nodes (see BuildTask), reordering
+ * prims[task.start..task.end) by leaf; in an OpenMP parallel region, right
+ * subtrees of BVH_TASK_MIN primitives or more become tasks. */
+static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root)
 {
-    size_t top = 0, count = 0;
+    /* Each step pops one task and pushes at most two, one of them deeper. */
+    BuildTask stack[2 * (BVH_DEPTH_MAX + 1)];
+    int top = 0;
 
-    stack[top++] = (BuildTask){0, n, 0, 0, 0};
+    stack[top++] = root;
     while (top > 0) {
-        BuildTask task = stack[--top];
-        size_t id = count++, split;
-        BuildNode *node = &nodes[id];
+        BuildTask task = stack[--top], left, right;
+        BuildNode *node = &nodes[task.node];
+        size_t split;
         int axis = 0;
+        Box cb; /* the centroids' box */
 
-        if (task.is_right)
-            nodes[task.parent].index = (uint32_t)id;
         box_empty(&node->box);
-        for (size_t i = task.start; i < task.end; i++)
+        box_empty(&cb);
+        for (size_t i = task.start; i < task.end; i++) {
+            real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+                         bvh_centroid(&prims[i], 2)};
             box_grow(&node->box, &prims[i].box);
+            box_grow_point(&cb, c);
+        }
         split = task.end - task.start <= 1
                     ? task.start
-                    : bvh_split(prims, task.start, task.end, &node->box, task.depth, &axis);
+                    : bvh_split(prims, task.start, task.end, &node->box, &cb, task.depth, &axis);
         if (split == task.start) {
             node->index = (uint32_t)task.start;
             node->count = (uint32_t)(task.end - task.start);
             continue;
         }
+        left = (BuildTask){task.start, split, task.depth + 1, task.node + 1};
+        right = (BuildTask){split, task.end, task.depth + 1, task.node + 2 * (split - task.start)};
         node->count = 0;
-        /* The left subtree comes next; the right one patches our index. */
-        stack[top++] = (BuildTask){split, task.end, task.depth + 1, 1, id};
-        stack[top++] = (BuildTask){task.start, split, task.depth + 1, 0, 0};
+        node->index = (uint32_t)right.node;
+        if (task.end - split >= BVH_TASK_MIN) {
+#ifdef _OPENMP
+#pragma omp task firstprivate(right)
+#endif
+            bvh_build_subtree(prims, nodes, right);
+        } else {
+            stack[top++] = right;
+        }
+        stack[top++] = left;
     }
-    return count;
 }
 
 /* Gathers in members the binary nodes that become the children of the
@@ -379,6 +395,7 @@ static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, Bvh
     int m = bvh_members(nodes, id, members);
     BvhNode *w = &bvh->nodes[self];
 
+    memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
     if (depth > bvh->depth)
         bvh->depth = depth;
     for (int k = 0; k < BVH_WIDTH; k++) {
@@ -395,11 +412,10 @@ static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, Bvh
     return self;
 }
 
-int bvh_build(Bvh *bvh, const Scene *scene)
+int bvh_build(Bvh *bvh, const Scene *scene, int threads)
 {
     size_t n = scene->sphere_count + scene->triangle_count;
     BuildPrim *prims;
-    BuildTask *stack;
     BuildNode *nodes;
     real pad = bvh_padding(scene);
 
@@ -407,12 +423,10 @@ int bvh_build(Bvh *bvh, const Scene *scene)
     if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0)
         return -1;
     prims = malloc(n * sizeof *prims);
-    stack = malloc((BVH_DEPTH_MAX + 1) * 2 * sizeof *stack);
     nodes = malloc((2 * n - 1) * sizeof *nodes);
     bvh->prims = malloc(n * sizeof *bvh->prims);
-    if (!prims || !stack || !nodes || !bvh->prims) {
+    if (!prims || !nodes || !bvh->prims) {
         free(prims);
-        free(stack);
         free(nodes);
         bvh_free(bvh);
         return -1;
@@ -421,12 +435,29 @@ int bvh_build(Bvh *bvh, const Scene *scene)
         bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
     for (size_t i = 0; i < scene->triangle_count; i++)
         bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
-    bvh_build_binary(prims, n, nodes, stack);
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
+#pragma omp single
+#endif
+    bvh_build_subtree(prims, nodes, (BuildTask){0, n, 0, 0});
+    (void)threads;
     for (size_t i = 0; i < n; i++)
         bvh->prims[i] = prims[i].ref;
     bvh->prim_count = n;
     free(prims);
-    free(stack);
+    if (scene->sphere_count > 0 && !(bvh->balls = malloc(n * sizeof *bvh->balls))) {
+        free(nodes);
+        bvh_free(bvh);
+        return -1;
+    }
+    for (size_t i = 0; i < n && bvh->balls; i++) {
+        const Sphere *s = &scene->spheres[bvh->prims[i] & ~BVH_TRIANGLE];
+        int is_sphere = !(bvh->prims[i] & BVH_TRIANGLE);
+        bvh->balls[i][0] = is_sphere ? s->centre.x : 0;
+        bvh->balls[i][1] = is_sphere ? s->centre.y : 0;
+        bvh->balls[i][2] = is_sphere ? s->centre.z : 0;
+        bvh->balls[i][3] = is_sphere ? s->radius : 0;
+    }
     bvh->nodes = malloc(bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
@@ -441,13 +472,14 @@ int bvh_build(Bvh *bvh, const Scene *scene)
 size_t bvh_build_memory(size_t n)
 {
     /* Building: the primitives' boxes, the binary tree and the references.
-     * Collapsing: the tree, the references and the nodes, at most 2n / 3 + 1
+     * Collapsing: the tree, the references, the spheres' copies (counted
+     * for every primitive) and the nodes, at most 2n / 3 + 1
      * of them: a node of BVH_WIDTH = 4 children takes up 3 of the tree's
      * interior nodes, one of fewer has only leaves (at least 2 of the n
      * leaves), and with W4 and Ws of each, 3 W4 + Ws <= n - 1 and Ws <= n / 2
      * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
-    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
+    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t) + 4 * sizeof(real);
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
         return SIZE_MAX;
@@ -458,13 +490,15 @@ size_t bvh_build_memory(size_t n)
 
 size_t bvh_memory(const Bvh *bvh)
 {
-    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims;
+    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims +
+           (bvh->balls ? bvh->prim_count * sizeof *bvh->balls : 0);
 }
 
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->prims);
+    free(bvh->balls);
     memset(bvh, 0, sizeof *bvh);
 }
 
@@ -585,13 +619,17 @@ static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, 
     return bits;
 }
 
-/* Tests primitive ref for a crossing at tmin < t < tmax; returns 1 with *t. */
-static int bvh_prim_hit(const Scene *scene, uint32_t ref, const Ray *ray, real tmin, real tmax,
-                        real *t)
+/* Tests the primitive bvh->prims[k] for a crossing at tmin < t < tmax;
+ * returns 1 with *t. */
+static inline int bvh_prim_hit(const Bvh *bvh, const Scene *scene, uint32_t k, const Ray *ray,
+                               real tmin, real tmax, real *t)
 {
+    uint32_t ref = bvh->prims[k];
+    const real *b = bvh->balls ? bvh->balls[k] : NULL;
+
     if (ref & BVH_TRIANGLE)
         return triangle_intersect(&scene->triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
-    return sphere_intersect(&scene->spheres[ref], ray, tmin, tmax, t);
+    return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
 }
 
 static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
@@ -655,7 +693,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
                 uint32_t ref = bvh->prims[k];
                 real t;
                 unsigned order;
-                if (!bvh_prim_hit(scene, ref, ray, 0, bound, &t))
+                if (!bvh_prim_hit(bvh, scene, k, ray, 0, bound, &t))
                     continue;
                 order = bvh_prim_order(scene, ref);
                 if (!found || t < hit->t || order < hit->order) {
@@ -727,7 +765,7 @@ int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, tmax, &w, &first, &count))
         for (uint32_t k = first; k < first + count; k++)
-            if (bvh_prim_hit(scene, bvh->prims[k], ray, 0, tmax, &t))
+            if (bvh_prim_hit(bvh, scene, k, ray, 0, tmax, &t))
                 return 1;
     return 0;
 }

@@ -313,7 +313,7 @@ static int main_render(const Options *opts)
     if (main_reserve_image(&scene, &wopts, opts, &err) != 0)
         goto fail_scene;
     accel_start = main_now();
-    rc = opts->no_accel ? 0 : scene_build_accel(&scene);
+    rc = opts->no_accel ? 0 : scene_build_accel(&scene, opts->threads);
     if (rc == SCENE_OVER_LIMIT) {
         char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX];
         error_set(&err, opts->scene_path,

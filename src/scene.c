@@ -104,7 +104,7 @@ static int scene_reserve(const Scene *scene, void **items, size_t *capacity, siz
     return grow_reserve(items, capacity, count, size);
 }
 
-int scene_build_accel(Scene *scene)
+int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene->sphere_count + scene->triangle_count;
@@ -114,7 +114,7 @@ int scene_build_accel(Scene *scene)
     if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
         return SCENE_OVER_LIMIT;
     bvh = malloc(sizeof *bvh);
-    if (!bvh || bvh_build(bvh, scene) != 0) {
+    if (!bvh || bvh_build(bvh, scene, threads) != 0) {
         free(bvh);
         return -1;
     }

@@ -123,7 +123,7 @@ static void bvh_holds_every_primitive_once_in_nested_boxes(void)
 
     random_scene(&sc, 3000, 10);
     n = sc.sphere_count + sc.triangle_count;
-    CHECK_INT(0, bvh_build(&bvh, &sc));
+    CHECK_INT(0, bvh_build(&bvh, &sc, 1));
     seen = calloc(n, 1);
     check_subtree(&bvh, &sc, 0, 0, seen, &bad);
     CHECK_INT(0, bad);
@@ -153,9 +153,27 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
         CHECK_INT(0, scene_add_sphere(&sc, &a));
         CHECK_INT(0, scene_add_sphere(&sc, &b));
     }
-    CHECK_INT(0, bvh_build(&bvh, &sc));
+    CHECK_INT(0, bvh_build(&bvh, &sc, 1));
     CHECK(bvh.depth <= 48 + 32);
     bvh_free(&bvh);
+    scene_free(&sc);
+}
+
+static void bvh_is_the_same_built_by_one_thread_or_two(void)
+{
+    /* 40,000 spheres and their triangles: enough for the build's tasks. */
+    Scene sc;
+    Bvh one, two;
+
+    random_scene(&sc, 20000, 10);
+    CHECK_INT(0, bvh_build(&one, &sc, 1));
+    CHECK_INT(0, bvh_build(&two, &sc, 2));
+    CHECK(one.node_count > 1000);
+    CHECK_INT((long long)one.node_count, (long long)two.node_count);
+    CHECK(memcmp(one.nodes, two.nodes, one.node_count * sizeof *one.nodes) == 0);
+    CHECK(memcmp(one.prims, two.prims, one.prim_count * sizeof *one.prims) == 0);
+    bvh_free(&one);
+    bvh_free(&two);
     scene_free(&sc);
 }
 
@@ -174,7 +192,7 @@ static void bvh_queries_equal_the_loops(void)
         struct Bvh *accel;
 
         random_scene(&sc, 400, s);
-        CHECK_INT(0, scene_build_accel(&sc));
+        CHECK_INT(0, scene_build_accel(&sc, 1));
         accel = sc.accel;
         CHECK(accel != NULL);
         for (int i = 0; i < 3000 && accel; i++) {
@@ -213,6 +231,7 @@ const TestCase bvh_tests[] = {
     {"bvh_holds_every_primitive_once_in_nested_boxes",
      bvh_holds_every_primitive_once_in_nested_boxes},
     {"bvh_stays_shallow_on_degenerate_scenes", bvh_stays_shallow_on_degenerate_scenes},
+    {"bvh_is_the_same_built_by_one_thread_or_two", bvh_is_the_same_built_by_one_thread_or_two},
     {"bvh_queries_equal_the_loops", bvh_queries_equal_the_loops},
     {NULL, NULL},
 };

@@ -80,10 +80,10 @@ static void limits_hierarchy_is_estimated_before_it_is_built(void)
         return;
     CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
     sc.memory_limit = scene_memory(&sc) + bvh_build_memory(1000) - 1;
-    CHECK_INT(SCENE_OVER_LIMIT, scene_build_accel(&sc));
+    CHECK_INT(SCENE_OVER_LIMIT, scene_build_accel(&sc, 1));
     CHECK(sc.accel == NULL);
     sc.memory_limit += 1;
-    CHECK_INT(0, scene_build_accel(&sc));
+    CHECK_INT(0, scene_build_accel(&sc, 1));
     CHECK(sc.accel != NULL);
     /* What was built is within the estimate. */
     CHECK(scene_memory(&sc) <= sc.memory_limit);

@@ -23,7 +23,7 @@ static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)
         (long)scene.camera.width * scene.camera.height <= 32 * 32 &&
         (scene.samples == 0 || scene.samples <= 4)) {
         opts.samples = scene.samples ? scene.samples : 1;
-        scene_build_accel(&scene);
+        scene_build_accel(&scene, 1);
         if (image_init(&img, scene.camera.width, scene.camera.height) == 0) {
             render(&scene, &opts, &img, &counts);
             image_free(&img);
