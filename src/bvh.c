@@ -9,7 +9,7 @@
 #include "scene.h"
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
 enum {
@@ -502,25 +502,31 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* A vector of 16 bytes (SSE2 on x86-64, NEON on AArch64: every 64-bit
- * processor has them) of one coordinate of BVH_LANES children's boxes, and
- * a lane mask: a row of a node's boxes is BVH_VECTORS of them. */
+/* A vector of one coordinate of BVH_LANES children's boxes, and a lane
+ * mask: a row of a node's boxes is BVH_VECTORS of them. 16 bytes (SSE2 on
+ * x86-64, NEON on AArch64: every 64-bit processor has them), or 32 when the
+ * compiler may use AVX (-mavx, -march=native) and they hold 4 doubles. */
 #ifdef RAYTRACE_REAL_FLOAT
 typedef int32_t bvh_lane_bits;
 #else
 typedef int64_t bvh_lane_bits;
 #endif
-typedef real BvhLanes __attribute__((vector_size(16)));
-typedef bvh_lane_bits BvhMask __attribute__((vector_size(16)));
+#if defined(__AVX__) && !defined(RAYTRACE_REAL_FLOAT)
+#define BVH_VECTOR_BYTES 32
+#else
+#define BVH_VECTOR_BYTES 16
+#endif
+typedef real BvhLanes __attribute__((vector_size(BVH_VECTOR_BYTES)));
+typedef bvh_lane_bits BvhMask __attribute__((vector_size(BVH_VECTOR_BYTES)));
 enum {
-    BVH_LANES = 16 / sizeof(real),
+    BVH_LANES = BVH_VECTOR_BYTES / sizeof(real),
     BVH_VECTORS = BVH_WIDTH / BVH_LANES
 };
 
 /* The ray, prepared for box tests: origin and reciprocal direction (+-inf
  * for a zero component, by the sign of that zero) in every lane, and for
- * each axis which row of a node's boxes (lo: a, or hi: 3 + a) the ray
- * meets first. */
+ * each axis where the row of a node's boxes the ray meets first (lo: a, or
+ * hi: 3 + a) and the other start, in reals from box[0][0]. */
 typedef struct {
     BvhLanes o[3], inv[3];
     int near[3], far[3];
@@ -538,8 +544,8 @@ static BvhRay bvh_ray(const Ray *r)
             b.o[a][k] = o[a];
             b.inv[a][k] = inv;
         }
-        b.near[a] = inv < 0 ? 3 + a : a;
-        b.far[a] = inv < 0 ? a : 3 + a;
+        b.near[a] = (inv < 0 ? 3 + a : a) * BVH_WIDTH;
+        b.far[a] = (inv < 0 ? a : 3 + a) * BVH_WIDTH;
     }
     return b;
 }
@@ -550,8 +556,12 @@ static BvhRay bvh_ray(const Ray *r)
 #define BVH_WIDEN (1 + 4 * REAL_EPSILON)
 
 /* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
- * what SSE's max and min instructions do. */
-#if defined(__SSE2__)
+ * what SSE's and AVX's max and min instructions do. */
+#if BVH_VECTOR_BYTES == 32
+#define bvh_max(a, b) ((BvhLanes)_mm256_max_pd((a), (b)))
+#define bvh_min(a, b) ((BvhLanes)_mm256_min_pd((a), (b)))
+#define bvh_mask_bits(m) ((unsigned)_mm256_movemask_pd((__m256d)(m)))
+#elif defined(__SSE2__)
 #ifdef RAYTRACE_REAL_FLOAT
 #define bvh_max(a, b) ((BvhLanes)_mm_max_ps((a), (b)))
 #define bvh_min(a, b) ((BvhLanes)_mm_min_ps((a), (b)))
@@ -578,12 +588,12 @@ static inline unsigned bvh_mask_bits(BvhMask m)
 }
 #endif
 
-/* Returns lanes v * BVH_LANES.. of row row of node's boxes. */
-static inline BvhLanes bvh_row(const BvhNode *node, int row, int v)
+/* Returns the BVH_LANES reals of node's boxes from offset on. */
+static inline BvhLanes bvh_row(const BvhNode *node, int offset)
 {
     BvhLanes x;
 
-    memcpy(&x, &node->box[row][v * BVH_LANES], sizeof x);
+    memcpy(&x, &node->box[0][0] + offset, sizeof x);
     return x;
 }
 
@@ -604,14 +614,17 @@ static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, 
         BvhLanes t0 = {0}, t1 = {0}, n, f;
         BvhMask in;
 
-        t1 += tmax * BVH_WIDEN;
+        t1 += tmax;
 #pragma GCC unroll 3
         for (int a = 0; a < 3; a++) {
-            n = (bvh_row(node, r->near[a], v) - r->o[a]) * r->inv[a];
-            f = (bvh_row(node, r->far[a], v) - r->o[a]) * r->inv[a] * BVH_WIDEN;
+            n = (bvh_row(node, r->near[a] + v * BVH_LANES) - r->o[a]) * r->inv[a];
+            f = (bvh_row(node, r->far[a] + v * BVH_LANES) - r->o[a]) * r->inv[a];
             t0 = bvh_max(n, t0);
             t1 = bvh_min(f, t1);
         }
+        /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
+         * least of the widened ends is the least end widened. */
+        t1 *= BVH_WIDEN;
         in = t0 <= t1;
         memcpy(&enter[v * BVH_LANES], &t0, sizeof t0);
         bits |= bvh_mask_bits(in) << (v * BVH_LANES);
