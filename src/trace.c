@@ -85,8 +85,11 @@ static inline int trace_find(const Scene *scene, const Ray *ray, real tmax, Hit 
         return trace_find_accel(scene, ray, tmax, hit);
     for (size_t k = 0; k < scene->sphere_count; k++) {
         real t;
-        /* The interval is open at tmax, so an exact tie keeps the earlier sphere. */
-        if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t)) {
+        const Sphere *s = &scene->spheres[k];
+        /* The interval is open at tmax, so an exact tie keeps the earlier
+         * sphere. sphere_hit() is inline: this loop is the course scene's
+         * hottest. */
+        if (sphere_hit(s->centre, s->radius, ray, 0, tmax, &t)) {
             tmax = t;
             best = k;
             found = 1;
@@ -116,7 +119,7 @@ int trace_occluded(const Scene *scene, const Ray *ray, real tmax)
     if (scene->accel)
         return bvh_occluded(scene->accel, scene, ray, tmax);
     for (size_t k = 0; k < scene->sphere_count; k++)
-        if (sphere_intersect(&scene->spheres[k], ray, 0, tmax, &t))
+        if (sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, &t))
             return 1;
     for (size_t k = 0; k < scene->triangle_count; k++)
         if (triangle_intersect(&scene->triangles[k], ray, 0, tmax, &t))

@@ -106,13 +106,16 @@ fi
 # lights, samples, textures, the keyword format and the hierarchy existed)
 # and by this one, run for run alternately, with the same bytes.
 BASE=${BENCH_BASELINE:-194c48f}
+BASE_CFLAGS=${BENCH_BASELINE_CFLAGS:--O3 -g} # today's default, for a fair race
 : >"$DIR/unused"
 if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/dev/null 2>&1; then
     scene course
-    if [ ! -x "$DIR/baseline/raytrace" ]; then
+    if [ ! -x "$DIR/baseline/raytrace" ] || [ "$(cat "$DIR/baseline/.cflags" 2>/dev/null)" != "$BASE_CFLAGS" ]; then
         rm -rf "$DIR/baseline"
         mkdir -p "$DIR/baseline"
-        git archive "$BASE" | tar -x -C "$DIR/baseline" && make -s -C "$DIR/baseline" raytrace ||
+        git archive "$BASE" | tar -x -C "$DIR/baseline" &&
+            make -s -C "$DIR/baseline" CFLAGS="$BASE_CFLAGS" raytrace &&
+            echo "$BASE_CFLAGS" >"$DIR/baseline/.cflags" ||
             { echo "bench: cannot build $BASE" >&2; exit 1; }
     fi
     for j in 1 "$ALL"; do
@@ -217,7 +220,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
         echo "rendered by the course-only renderer (commit $BASE, before planes,"
         echo "triangles, glass, several lights, samples, lenses, textures, the keyword"
         echo "format, Blinn-Phong, the hierarchy and the cut-off existed) and by this"
-        echo "one, run for run alternately; medians of $RUNS runs of the whole command."
+        echo "one, both built with CFLAGS=\"$BASE_CFLAGS\", run for run alternately;"
+        echo "medians of $RUNS runs of the whole command."
         echo
         echo "| scene | threads | course-only | now | difference | same bytes |"
         echo "|-------|---------|-------------|-----|------------|------------|"
