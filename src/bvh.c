@@ -445,19 +445,6 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         bvh->prims[i] = prims[i].ref;
     bvh->prim_count = n;
     free(prims);
-    if (scene->sphere_count > 0 && !(bvh->balls = malloc(n * sizeof *bvh->balls))) {
-        free(nodes);
-        bvh_free(bvh);
-        return -1;
-    }
-    for (size_t i = 0; i < n && bvh->balls; i++) {
-        const Sphere *s = &scene->spheres[bvh->prims[i] & ~BVH_TRIANGLE];
-        int is_sphere = !(bvh->prims[i] & BVH_TRIANGLE);
-        bvh->balls[i][0] = is_sphere ? s->centre.x : 0;
-        bvh->balls[i][1] = is_sphere ? s->centre.y : 0;
-        bvh->balls[i][2] = is_sphere ? s->centre.z : 0;
-        bvh->balls[i][3] = is_sphere ? s->radius : 0;
-    }
     bvh->nodes = malloc(bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
@@ -466,20 +453,35 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     }
     bvh_collapse(nodes, 0, 0, bvh);
     free(nodes);
+    /* The spheres' copies come last, once the binary tree is gone. */
+    if (scene->sphere_count > 0 && !(bvh->balls = calloc(n, sizeof *bvh->balls))) {
+        bvh_free(bvh);
+        return -1;
+    }
+    for (size_t i = 0; i < n && bvh->balls; i++) {
+        if (!(bvh->prims[i] & BVH_TRIANGLE)) {
+            const Sphere *s = &scene->spheres[bvh->prims[i]];
+            bvh->balls[i][0] = s->centre.x;
+            bvh->balls[i][1] = s->centre.y;
+            bvh->balls[i][2] = s->centre.z;
+            bvh->balls[i][3] = s->radius;
+        }
+    }
     return 0;
 }
 
 size_t bvh_build_memory(size_t n)
 {
     /* Building: the primitives' boxes, the binary tree and the references.
-     * Collapsing: the tree, the references, the spheres' copies (counted
-     * for every primitive) and the nodes, at most 2n / 3 + 1
+     * Collapsing: the tree, the references and the nodes, at most 2n / 3 + 1
      * of them: a node of BVH_WIDTH = 4 children takes up 3 of the tree's
      * interior nodes, one of fewer has only leaves (at least 2 of the n
      * leaves), and with W4 and Ws of each, 3 W4 + Ws <= n - 1 and Ws <= n / 2
-     * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. */
+     * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. After: the nodes, the
+     * references and the spheres' copies (4 reals a primitive), less than
+     * the binary tree's two nodes a primitive. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
-    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t) + 4 * sizeof(real);
+    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
         return SIZE_MAX;
