@@ -57,7 +57,8 @@ typedef struct Bvh {
 /* Builds the hierarchy of scene's spheres and triangles into *bvh in
  * O(n log n), with up to threads threads (in OpenMP builds; the hierarchy
  * is the same whatever their number); returns 0, or -1 (nothing allocated)
- * when memory runs out or the scene holds 2^31 objects of a kind. */
+ * when memory runs out or the scene holds 2^31 objects of a kind or of
+ * both. */
 int bvh_build(Bvh *bvh, const struct Scene *scene, int threads);
 
 /* Releases what *bvh owns. */

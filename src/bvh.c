@@ -420,7 +420,9 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     real pad = bvh_padding(scene);
 
     memset(bvh, 0, sizeof *bvh);
-    if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0)
+    /* Binary nodes are numbered below 2n in 32 bits. */
+    if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0 ||
+        n > UINT32_MAX / 2)
         return -1;
     prims = malloc(n * sizeof *prims);
     nodes = malloc((2 * n - 1) * sizeof *nodes);
