@@ -71,12 +71,13 @@ typedef struct {
     uint32_t ref;    /* primitive reference */
 } BuildPrim;
 
-/* A node of the binary tree the build makes first. */
+/* A node of the binary tree the build makes first. Its box is not kept:
+ * the four-wide nodes' boxes are gathered again from the leaves up. */
 typedef struct {
-    Box box;
     uint32_t index;  /* interior: the right child (the left is the next
                         node); leaf: the first of its primitives */
     uint32_t count;  /* primitives in a leaf; 0 for an interior node */
+    uint32_t size;   /* primitives in its subtree */
 } BuildNode;
 
 /* Returns coordinate axis of the centre of p's box, its centroid. */
@@ -313,19 +314,20 @@ static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root
         BuildNode *node = &nodes[task.node];
         size_t split;
         int axis = 0;
-        Box cb; /* the centroids' box */
+        Box bounds, cb; /* the primitives' box and their centroids' */
 
-        box_empty(&node->box);
+        box_empty(&bounds);
         box_empty(&cb);
         for (size_t i = task.start; i < task.end; i++) {
             real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
                          bvh_centroid(&prims[i], 2)};
-            box_grow(&node->box, &prims[i].box);
+            box_grow(&bounds, &prims[i].box);
             box_grow_point(&cb, c);
         }
+        node->size = (uint32_t)(task.end - task.start);
         split = task.end - task.start <= 1
                     ? task.start
-                    : bvh_split(prims, task.start, task.end, &node->box, &cb, task.depth, &axis);
+                    : bvh_split(prims, task.start, task.end, &bounds, &cb, task.depth, &axis);
         if (split == task.start) {
             node->index = (uint32_t)task.start;
             node->count = (uint32_t)(task.end - task.start);
@@ -347,10 +349,43 @@ static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root
     }
 }
 
+/* Moves the binary tree's nodes to the front of nodes in depth-first order
+ * (each left child still right after its parent), closing the gaps the
+ * fixed offsets leave; returns how many there are. In place: the walk meets
+ * the nodes in increasing order, so a node only moves down, onto a slot
+ * already moved or never used. */
+static size_t bvh_compact(BuildNode *nodes)
+{
+    struct {
+        size_t node;   /* where it is */
+        size_t parent; /* where its parent went, or SIZE_MAX for a left child
+                          or the root */
+    } stack[2 * (BVH_DEPTH_MAX + 1)];
+    int top = 0;
+    size_t count = 0;
+
+    stack[top].node = 0;
+    stack[top++].parent = SIZE_MAX;
+    while (top > 0) {
+        size_t old = stack[--top].node, parent = stack[top].parent, at = count++;
+
+        nodes[at] = nodes[old];
+        if (parent != SIZE_MAX)
+            nodes[parent].index = (uint32_t)at;
+        if (nodes[at].count == 0) {
+            stack[top].node = nodes[at].index;
+            stack[top++].parent = at;
+            stack[top].node = old + 1;
+            stack[top++].parent = SIZE_MAX;
+        }
+    }
+    return count;
+}
+
 /* Gathers in members the binary nodes that become the children of the
  * node made from binary node id: from id alone, the interior member with
- * the largest box gives way to its two children until there are BVH_WIDTH
- * members or only leaves. Returns how many. */
+ * the most primitives gives way to its two children until there are
+ * BVH_WIDTH members or only leaves. Returns how many. */
 static int bvh_members(const BuildNode *nodes, uint32_t id, uint32_t members[BVH_WIDTH])
 {
     int m = 1;
@@ -358,13 +393,10 @@ static int bvh_members(const BuildNode *nodes, uint32_t id, uint32_t members[BVH
     members[0] = id;
     while (m < BVH_WIDTH) {
         int best = -1;
-        real area = -1;
         for (int k = 0; k < m; k++) {
             const BuildNode *b = &nodes[members[k]];
-            if (b->count == 0 && box_half_area(&b->box) > area) {
+            if (b->count == 0 && (best < 0 || b->size > nodes[members[best]].size))
                 best = k;
-                area = box_half_area(&b->box);
-            }
         }
         if (best < 0)
             break;
@@ -388,8 +420,12 @@ static size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
 }
 
 /* Writes the node made from binary node id, at depth, and then its
- * subtree's, into bvh's nodes from bvh->node_count on; returns its index. */
-static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, Bvh *bvh)
+ * subtree's, into bvh's nodes from bvh->node_count on; stores the box of
+ * its children's boxes in *bounds and returns its index. A leaf's box is
+ * that of its primitives' padded boxes (bvh_prim_box() with pad), as the
+ * build had it. */
+static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, const Scene *scene,
+                             real pad, Bvh *bvh, Box *bounds)
 {
     uint32_t members[BVH_WIDTH], self = (uint32_t)bvh->node_count++;
     int m = bvh_members(nodes, id, members);
@@ -398,16 +434,28 @@ static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, Bvh
     memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
     if (depth > bvh->depth)
         bvh->depth = depth;
+    box_empty(bounds);
     for (int k = 0; k < BVH_WIDTH; k++) {
         const BuildNode *b = &nodes[members[k < m ? k : 0]];
-        for (int a = 0; a < 3; a++) {
-            w->box[a][k] = k < m ? b->box.lo[a] : INFINITY;
-            w->box[3 + a][k] = k < m ? b->box.hi[a] : -INFINITY;
+        Box box;
+
+        box_empty(&box);
+        if (k < m && b->count > 0) {
+            for (uint32_t i = b->index; i < b->index + b->count; i++) {
+                BuildPrim p;
+                bvh_prim_box(scene, bvh->prims[i], pad, &p);
+                box_grow(&box, &p.box);
+            }
+            w->child[k] = b->index;
+            w->count[k] = (uint8_t)b->count;
+        } else if (k < m) {
+            w->child[k] = bvh_collapse(nodes, members[k], depth + 1, scene, pad, bvh, &box);
         }
-        w->count[k] = k < m ? (uint8_t)b->count : 0;
-        w->child[k] = 0;
-        if (k < m)
-            w->child[k] = b->count > 0 ? b->index : bvh_collapse(nodes, members[k], depth + 1, bvh);
+        for (int a = 0; a < 3; a++) {
+            w->box[a][k] = box.lo[a];
+            w->box[3 + a][k] = box.hi[a];
+        }
+        box_grow(bounds, &box);
     }
     return self;
 }
@@ -447,13 +495,23 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         bvh->prims[i] = prims[i].ref;
     bvh->prim_count = n;
     free(prims);
+    /* Give back the slots the fixed offsets left unused: the binary tree
+     * and the nodes made from it are held together next. */
+    {
+        BuildNode *fit = realloc(nodes, bvh_compact(nodes) * sizeof *nodes);
+        if (fit)
+            nodes = fit;
+    }
     bvh->nodes = malloc(bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
         bvh_free(bvh);
         return -1;
     }
-    bvh_collapse(nodes, 0, 0, bvh);
+    {
+        Box all;
+        bvh_collapse(nodes, 0, 0, scene, pad, bvh, &all);
+    }
     free(nodes);
     /* The spheres' copies come last, once the binary tree is gone. */
     if (scene->sphere_count > 0 && !(bvh->balls = calloc(n, sizeof *bvh->balls))) {
@@ -480,10 +538,12 @@ size_t bvh_build_memory(size_t n)
      * interior nodes, one of fewer has only leaves (at least 2 of the n
      * leaves), and with W4 and Ws of each, 3 W4 + Ws <= n - 1 and Ws <= n / 2
      * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. After: the nodes, the
-     * references and the spheres' copies (4 reals a primitive), less than
-     * the binary tree's two nodes a primitive. */
+     * references and the spheres' copies, 4 reals a primitive in place of
+     * the binary tree's two nodes: the larger of the two is counted. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
-    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
+    size_t tree = 2 * sizeof(BuildNode) > 4 * sizeof(real) ? 2 * sizeof(BuildNode)
+                                                            : 4 * sizeof(real);
+    size_t collapse = tree + sizeof(uint32_t);
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
         return SIZE_MAX;
