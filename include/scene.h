@@ -137,10 +137,9 @@ int scene_add_texture(Scene *scene, Texture *tex);
 
 /* Builds the acceleration structure (bvh.h) when the scene has enough
  * spheres and triangles to gain from one, with up to threads threads;
- * returns 0, SCENE_OVER_LIMIT
- * (nothing allocated) when its estimated size would pass the memory limit,
- * or -1 when memory runs out (the scene is then left without one, and still
- * renders). */
+ * returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
+ * would pass the memory limit, or -1 when memory runs out (the scene is
+ * then left without one, and still renders). */
 int scene_build_accel(Scene *scene, int threads);
 
 /* Returns the bytes the scene holds: its arrays at their capacity, its

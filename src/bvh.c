@@ -15,8 +15,9 @@
 enum {
     BVH_BINS = 16,        /* centroid bins per split */
     BVH_SAH_DEPTH = 48,   /* below this depth, splits halve the count */
-    BVH_DEPTH_MAX = BVH_SAH_DEPTH + 32, /* deepest binary node: below
-                                            BVH_SAH_DEPTH splits halve < 2^32 */
+    BVH_DEPTH_MAX = BVH_SAH_DEPTH + 32, /* deepest binary node: from
+                                            BVH_SAH_DEPTH on, splits halve
+                                            fewer than 2^32 primitives */
     /* Traversal stack: a node visit pops one entry and pushes at most
      * BVH_WIDTH, and nodes are at most BVH_DEPTH_MAX deep. */
     BVH_STACK = (BVH_WIDTH - 1) * BVH_DEPTH_MAX + BVH_WIDTH,
@@ -233,20 +234,20 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
 /* Chooses how to split prims[start..end), of box bounds and centroids'
  * box cb (count > BVH_LEAF_MAX or SAH says so); returns the index of the
  * first primitive of the right part, or start when it is better left a
- * leaf. Sets *axis. */
+ * leaf. */
 static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *bounds,
-                        const Box *cb, int depth, int *axis)
+                        const Box *cb, int depth)
 {
     size_t n = end - start, mid;
     real extent[3], scale[3], best = INFINITY;
-    int best_split = -1;
+    int best_split = -1, axis;
 
     for (int a = 0; a < 3; a++) {
         extent[a] = cb->hi[a] - cb->lo[a];
         scale[a] = BVH_BINS / extent[a];
     }
-    *axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
-    if (!(extent[*axis] > 0)) {
+    axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
+    if (!(extent[axis] > 0)) {
         /* All centroids at one point: split by count if the leaf is too big. */
         if (n <= BVH_LEAF_MAX)
             return start;
@@ -254,7 +255,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     }
     if (depth >= BVH_SAH_DEPTH) {
         mid = start + n / 2;
-        bvh_select(prims, start, end, mid, *axis);
+        bvh_select(prims, start, end, mid, axis);
         return mid;
     }
     /* Every axis with some extent: the cheapest split wins. Above
@@ -263,13 +264,13 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     for (int a = 0; a < 3; a++) {
         int split;
         real cost;
-        if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != *axis))
+        if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != axis))
             continue;
         cost = bvh_sah_axis(prims, start, end, bounds, a, cb->lo[a], scale[a], &split);
         if (split >= 0 && cost < best) {
             best = cost;
             best_split = split;
-            *axis = a;
+            axis = a;
         }
     }
     if (best_split < 0 || (best >= (real)n && n <= BVH_LEAF_MAX))
@@ -278,7 +279,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     {
         size_t i = start, j = end;
         while (i < j) {
-            if (bvh_bin(&prims[i], *axis, cb->lo[*axis], scale[*axis]) < best_split) {
+            if (bvh_bin(&prims[i], axis, cb->lo[axis], scale[axis]) < best_split) {
                 i++;
             } else {
                 BuildPrim tmp = prims[i];
@@ -290,7 +291,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
     }
     if (mid == start || mid == end) { /* cannot happen, but never loop */
         mid = start + n / 2;
-        bvh_select(prims, start, end, mid, *axis);
+        bvh_select(prims, start, end, mid, axis);
     }
     return mid;
 }
@@ -313,7 +314,6 @@ static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root
         BuildTask task = stack[--top], left, right;
         BuildNode *node = &nodes[task.node];
         size_t split;
-        int axis = 0;
         Box bounds, cb; /* the primitives' box and their centroids' */
 
         box_empty(&bounds);
@@ -327,7 +327,7 @@ static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root
         node->size = (uint32_t)(task.end - task.start);
         split = task.end - task.start <= 1
                     ? task.start
-                    : bvh_split(prims, task.start, task.end, &bounds, &cb, task.depth, &axis);
+                    : bvh_split(prims, task.start, task.end, &bounds, &cb, task.depth);
         if (split == task.start) {
             node->index = (uint32_t)task.start;
             node->count = (uint32_t)(task.end - task.start);
@@ -436,18 +436,18 @@ static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, con
         bvh->depth = depth;
     box_empty(bounds);
     for (int k = 0; k < BVH_WIDTH; k++) {
-        const BuildNode *b = &nodes[members[k < m ? k : 0]];
-        Box box;
+        Box box; /* stays empty for an unused child */
 
         box_empty(&box);
-        if (k < m && b->count > 0) {
-            for (uint32_t i = b->index; i < b->index + b->count; i++) {
+        if (k < m && nodes[members[k]].count > 0) {
+            const BuildNode *leaf = &nodes[members[k]];
+            for (uint32_t i = leaf->index; i < leaf->index + leaf->count; i++) {
                 BuildPrim p;
                 bvh_prim_box(scene, bvh->prims[i], pad, &p);
                 box_grow(&box, &p.box);
             }
-            w->child[k] = b->index;
-            w->count[k] = (uint8_t)b->count;
+            w->child[k] = leaf->index;
+            w->count[k] = (uint8_t)leaf->count;
         } else if (k < m) {
             w->child[k] = bvh_collapse(nodes, members[k], depth + 1, scene, pad, bvh, &box);
         }
@@ -702,10 +702,11 @@ static inline int bvh_prim_hit(const Bvh *bvh, const Scene *scene, uint32_t k, c
                                real tmin, real tmax, real *t)
 {
     uint32_t ref = bvh->prims[k];
-    const real *b = bvh->balls ? bvh->balls[k] : NULL;
+    const real *b;
 
     if (ref & BVH_TRIANGLE)
         return triangle_intersect(&scene->triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
+    b = bvh->balls[k]; /* there when there are spheres */
     return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
 }
 
