@@ -36,71 +36,9 @@ static NumberStatus number_non_decimal(const char *s, size_t len)
     return NUMBER_SYNTAX;
 }
 
-/* Clinger's fast path: converts the decimal number at s (already checked
- * to have number_parse()'s form) to *out and returns 1 when its digits,
- * leading zeros aside, are at most 15 (their integer m is then exact in a
- * double) and its decimal exponent e is at most 22 in magnitude (10^22 is
- * the largest power of ten a double holds exactly): m * 10^e or m / 10^-e is
- * then one correctly rounded operation on exact operands, so *out is the
- * correctly rounded value, as strtod() gives. Returns 0 otherwise (and
- * where doubles are evaluated in wider precision, which would round twice). */
-static int number_fast(const char *s, size_t len, double *out)
+static int number_digit(char c)
 {
-#if FLT_EVAL_METHOD == 0
-    static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-    size_t i = 0;
-    int negative = 0, significant = 0, fraction = 0;
-    long e = 0, exponent = 0;
-    uint64_t m = 0;
-    double v;
-
-    if (s[i] == '+' || s[i] == '-')
-        negative = s[i++] == '-';
-    for (; i < len && s[i] != '.' && s[i] != 'e' && s[i] != 'E'; i++) {
-        if (m == 0 && s[i] == '0')
-            continue;
-        if (++significant > 15)
-            return 0;
-        m = m * 10 + (uint64_t)(s[i] - '0');
-    }
-    if (i < len && s[i] == '.')
-        for (i++; i < len && s[i] != 'e' && s[i] != 'E'; i++) {
-            if (++fraction > 22 + 15)
-                return 0;
-            if (m == 0 && s[i] == '0')
-                continue;
-            if (++significant > 15)
-                return 0;
-            m = m * 10 + (uint64_t)(s[i] - '0');
-        }
-    if (i < len) { /* the exponent */
-        int minus = 0;
-        i++;
-        if (s[i] == '+' || s[i] == '-')
-            minus = s[i++] == '-';
-        for (; i < len; i++)
-            if (exponent < 1000)
-                exponent = exponent * 10 + (s[i] - '0');
-        if (minus)
-            exponent = -exponent;
-    }
-    e = exponent - fraction;
-    if (m == 0)
-        v = 0;
-    else if (e < -22 || e > 22)
-        return 0;
-    else
-        v = e < 0 ? (double)m / powers[-e] : (double)m * powers[e];
-    *out = negative ? -v : v;
-    return 1;
-#else
-    (void)s;
-    (void)len;
-    (void)out;
-    return 0;
-#endif
+    return c >= '0' && c <= '9';
 }
 
 /*
@@ -108,37 +46,74 @@ static int number_fast(const char *s, size_t len, double *out)
  * Converts the len bytes at s to *out, correctly rounded, when they spell a
  * number of this form whose value is finite, at most NUMBER_MAX_MAGNITUDE in
  * magnitude, and zero or a normal double.
+ *
+ * One pass checks the form and gathers the digits. Clinger's fast path:
+ * when the digits, leading zeros aside, are at most 15 (their integer m is
+ * then exact in a double) and the decimal exponent e is at most 22 in
+ * magnitude (10^22 is the largest power of ten a double holds exactly),
+ * m * 10^e or m / 10^-e is one correctly rounded operation on exact
+ * operands: the correctly rounded value, as strtod() gives. Other numbers
+ * (and every number where doubles are evaluated in wider precision, which
+ * would round twice) go to strtod().
  */
 NumberStatus number_parse(const char *s, size_t len, double *out)
 {
+    static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     size_t i = 0, digits = 0;
-    int nonzero = 0;
+    int negative = 0, nonzero = 0, significant = 0, fast = FLT_EVAL_METHOD == 0;
+    long fraction = 0, exponent = 0, e;
+    uint64_t m = 0;
     char small[64], *buf;
     double v;
 
     if (i < len && (s[i] == '+' || s[i] == '-'))
-        i++;
-    for (; i < len && isdigit((unsigned char)s[i]); i++, digits++)
-        nonzero |= s[i] != '0';
-    if (i < len && s[i] == '.')
-        for (i++; i < len && isdigit((unsigned char)s[i]); i++, digits++)
-            nonzero |= s[i] != '0';
+        negative = s[i++] == '-';
+    for (int point = 0;; i++) {
+        if (i < len && s[i] == '.' && !point) {
+            point = 1;
+            continue;
+        }
+        if (i == len || !number_digit(s[i]))
+            break;
+        digits++;
+        fraction += point;
+        if (m == 0 && s[i] == '0')
+            continue;
+        nonzero = 1;
+        if (++significant > 15)
+            fast = 0;
+        else
+            m = m * 10 + (uint64_t)(s[i] - '0');
+    }
     if (digits == 0)
         return number_non_decimal(s, len);
     if (i < len && (s[i] == 'e' || s[i] == 'E')) {
         size_t exp_digits = 0;
+        int minus = 0;
         i++;
         if (i < len && (s[i] == '+' || s[i] == '-'))
-            i++;
-        for (; i < len && isdigit((unsigned char)s[i]); i++)
-            exp_digits++;
+            minus = s[i++] == '-';
+        for (; i < len && number_digit(s[i]); i++, exp_digits++)
+            if (exponent < 1000)
+                exponent = exponent * 10 + (s[i] - '0');
         if (exp_digits == 0)
             return NUMBER_SYNTAX;
+        if (exponent >= 1000) /* clamped, so unknown: strtod() reads it */
+            fast = 0;
+        if (minus)
+            exponent = -exponent;
     }
     if (i != len)
         return number_non_decimal(s, len);
 
-    if (!number_fast(s, len, &v)) {
+    e = exponent - fraction;
+    if (fast && m == 0) {
+        v = 0;
+    } else if (fast && e >= -22 && e <= 22) {
+        v = e < 0 ? (double)m / powers[-e] : (double)m * powers[e];
+    } else {
         buf = len < sizeof small ? small : malloc(len + 1);
         if (!buf)
             return NUMBER_NO_MEMORY;
@@ -147,7 +122,10 @@ NumberStatus number_parse(const char *s, size_t len, double *out)
         v = strtod(buf, NULL);
         if (buf != small)
             free(buf);
+        negative = 0; /* strtod() kept the sign */
     }
+    if (negative)
+        v = -v;
     if (!(fabs(v) <= NUMBER_MAX_MAGNITUDE))
         return NUMBER_TOO_LARGE;
     if ((v == 0 && nonzero) || (v != 0 && fabs(v) < DBL_MIN))
@@ -155,7 +133,6 @@ NumberStatus number_parse(const char *s, size_t len, double *out)
     *out = v;
     return NUMBER_OK;
 }
-
 
 char *number_format(char *buf, double x)
 {

@@ -297,7 +297,7 @@ int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, 
     size_t caps[4] = {0, 0, 0, 0};
     const char *p, *end;
     ObjReader r;
-    int rc = 0;
+    int rc = 0, odd;
 
     memset(mesh, 0, sizeof *mesh);
     r.name = name;
@@ -309,6 +309,9 @@ int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, 
     end = data + len;
     if (len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
         p += 3;
+    /* Lines are searched for NUL bytes and carriage returns only when the
+     * file holds some. */
+    odd = memchr(p, '\0', (size_t)(end - p)) || memchr(p, '\r', (size_t)(end - p));
     while (p < end && rc == 0) {
         const char *eol = memchr(p, '\n', (size_t)(end - p)), *hash;
         r.line = p;
@@ -317,7 +320,7 @@ int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, 
         p = eol ? eol + 1 : end;
         if (r.len > 0 && r.line[r.len - 1] == '\r')
             r.len--;
-        for (size_t i = 0; i < r.len; i++) {
+        for (size_t i = 0; odd && i < r.len; i++) {
             if (r.line[i] == '\0' || r.line[i] == '\r') {
                 rc = obj_fail(&r, i, r.line[i] ? "carriage return inside a line"
                                                : "NUL byte: an OBJ file is 8-bit text (is it "

@@ -118,6 +118,28 @@ static void parse_numbers_round_as_strtod(void)
     CHECK_INT(0, differ);
 }
 
+/* Long runs of zeros move the decimal exponent far from the one written:
+ * 0.(999 zeros)1e1000 is 1, and with e100000 it is far out of range (the
+ * written exponent is clamped while it is read). */
+static void parse_numbers_with_long_zero_runs(void)
+{
+    char buf[1100];
+    double v = 0;
+    int n;
+
+    n = sprintf(buf, "0.%0999d1e1000", 0);
+    CHECK_INT(NUMBER_OK, number_parse(buf, (size_t)n, &v));
+    CHECK_NEAR(1, v, 0);
+    n = sprintf(buf, "0.%0999d1e100000", 0);
+    CHECK_INT(NUMBER_TOO_LARGE, number_parse(buf, (size_t)n, &v));
+    n = sprintf(buf, "1%040de-40", 0);
+    CHECK_INT(NUMBER_OK, number_parse(buf, (size_t)n, &v));
+    CHECK_NEAR(1, v, 0);
+    n = sprintf(buf, "0.%040d1e1", 0); /* 10^-40: strtod()'s bits */
+    CHECK_INT(NUMBER_OK, number_parse(buf, (size_t)n, &v));
+    CHECK(v == strtod(buf, NULL));
+}
+
 static void parse_accepts_many_spheres(void)
 {
     size_t n = 5000, cap = sizeof HEADER + n * 40;
@@ -508,6 +530,7 @@ const TestCase parse_tests[] = {
     {"parse_accepts_comments_blanks_crlf_tabs_bom", parse_accepts_comments_blanks_crlf_tabs_bom},
     {"parse_accepts_number_forms", parse_accepts_number_forms},
     {"parse_numbers_round_as_strtod", parse_numbers_round_as_strtod},
+    {"parse_numbers_with_long_zero_runs", parse_numbers_with_long_zero_runs},
     {"parse_accepts_many_spheres", parse_accepts_many_spheres},
     {"parse_height_follows_the_screen", parse_height_follows_the_screen},
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
