@@ -36,8 +36,4 @@ typedef struct {
  * be NULL). Returns the number of threads used. */
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts);
 
-/* Returns the number of threads render() can use by default: the number of
- * processors when built with OpenMP, else 1. */
-int render_default_threads(void);
-
 #endif

@@ -23,6 +23,7 @@
 #include "load.h"
 #include "number.h"
 #include "render.h"
+#include "threads.h"
 #include "save.h"
 #include "scene.h"
 #include "writer.h"
@@ -396,7 +397,12 @@ int main(int argc, char **argv)
     Options opts;
     char msg[256];
 
-    switch (options_parse(&opts, argc, argv, render_default_threads(), msg, sizeof msg)) {
+    OptionsAction action = options_parse(&opts, argc, argv, threads_processors(), msg,
+                                         sizeof msg);
+
+    if (action != OPTIONS_USAGE)
+        threads_use(opts.threads); /* -j: reading, building and rendering */
+    switch (action) {
     case OPTIONS_HELP:
         fputs(options_help(), stdout);
         return 0;

@@ -10,6 +10,7 @@
 #include "file.h"
 #include "grow.h"
 #include "number.h"
+#include "threads.h"
 
 /* Where the reader is: the file and the line being read. */
 typedef struct {
@@ -20,6 +21,8 @@ typedef struct {
     Error *err;
     size_t max_bytes;  /* the most the mesh's arrays may take; 0: no limit */
     size_t used;       /* bytes they take now */
+    int fixed;         /* 1: the arrays were sized beforehand and do not grow
+                          (a part of a reading shared by threads) */
 } ObjReader;
 
 /* Records a fault at byte offset `at` of the current line. */
@@ -175,6 +178,8 @@ static int obj_reserve(ObjReader *r, void **items, size_t *capacity, size_t coun
 
     if (count < before)
         return 0;
+    if (r->fixed)
+        return -1; /* the lines were counted wrong: the caller reads again */
     more = grow_next_capacity(before) - before;
     if (r->max_bytes && (more > SIZE_MAX / size || more * size > r->max_bytes - r->used)) {
         char left[NUMBER_FORMAT_MAX];
@@ -291,51 +296,200 @@ int obj_load(const char *path, size_t max_bytes, ObjMesh *mesh, Error *err)
     return rc;
 }
 
-int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, ObjMesh *mesh,
-              Error *err)
+/* Reads the lines from p to end into m (caps: its arrays' capacities);
+ * lines are searched for NUL bytes and carriage returns when odd. Returns
+ * 0, or -1 with the fault recorded. */
+static int obj_parse_lines(ObjReader *r, ObjMesh *m, size_t caps[4], const char *p,
+                           const char *end, int odd)
 {
-    size_t caps[4] = {0, 0, 0, 0};
-    const char *p, *end;
-    ObjReader r;
-    int rc = 0, odd;
+    int rc = 0;
 
-    memset(mesh, 0, sizeof *mesh);
-    r.name = name;
-    r.max_bytes = max_bytes;
-    r.used = 0;
-    r.err = err;
-    r.lineno = 0;
-    p = data;
-    end = data + len;
-    if (len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
-        p += 3;
-    /* Lines are searched for NUL bytes and carriage returns only when the
-     * file holds some. */
-    odd = memchr(p, '\0', (size_t)(end - p)) || memchr(p, '\r', (size_t)(end - p));
     while (p < end && rc == 0) {
         const char *eol = memchr(p, '\n', (size_t)(end - p)), *hash;
-        r.line = p;
-        r.len = (size_t)((eol ? eol : end) - p);
-        r.lineno++;
+        r->line = p;
+        r->len = (size_t)((eol ? eol : end) - p);
+        r->lineno++;
         p = eol ? eol + 1 : end;
-        if (r.len > 0 && r.line[r.len - 1] == '\r')
-            r.len--;
-        for (size_t i = 0; odd && i < r.len; i++) {
-            if (r.line[i] == '\0' || r.line[i] == '\r') {
-                rc = obj_fail(&r, i, r.line[i] ? "carriage return inside a line"
-                                               : "NUL byte: an OBJ file is 8-bit text (is it "
-                                                 "UTF-16?)");
+        if (r->len > 0 && r->line[r->len - 1] == '\r')
+            r->len--;
+        for (size_t i = 0; odd && i < r->len; i++) {
+            if (r->line[i] == '\0' || r->line[i] == '\r') {
+                rc = obj_fail(r, i, r->line[i] ? "carriage return inside a line"
+                                                : "NUL byte: an OBJ file is 8-bit text (is it "
+                                                  "UTF-16?)");
                 break;
             }
         }
         if (rc != 0)
             break;
+        hash = memchr(r->line, '#', r->len);
+        if (hash)
+            r->len = (size_t)(hash - r->line);
+        rc = obj_record(r, m, caps);
+    }
+    return rc;
+}
+
+/* What a part of the file holds, counted before it is read. */
+typedef struct {
+    const char *start, *end; /* its lines */
+    size_t lines;            /* line endings */
+    size_t count[4];         /* v, vt, vn records and triangles */
+} ObjPart;
+
+/* Counts the lines of part and the records they hold, as obj_record()
+ * would read them if they are right (a wrong one is found when read). */
+static void obj_count(ObjPart *part)
+{
+    const char *p = part->start, *end = part->end;
+
+    memset(part->count, 0, sizeof part->count);
+    part->lines = 0;
+    while (p < end) {
+        const char *eol = memchr(p, '\n', (size_t)(end - p)), *hash;
+        ObjReader r = {0};
+        size_t i = 0, e, n;
+
+        r.line = p;
+        r.len = (size_t)((eol ? eol : end) - p);
+        p = eol ? eol + 1 : end;
+        part->lines += eol != NULL;
         hash = memchr(r.line, '#', r.len);
         if (hash)
             r.len = (size_t)(hash - r.line);
-        rc = obj_record(&r, mesh, caps);
+        e = obj_token(&r, &i);
+        n = e - i;
+        if (n == 1 && r.line[i] == 'v') {
+            part->count[0]++;
+        } else if (n == 2 && r.line[i] == 'v') {
+            part->count[1] += r.line[i + 1] == 't';
+            part->count[2] += r.line[i + 1] == 'n';
+        } else if (n == 1 && r.line[i] == 'f') {
+            size_t corners = 0;
+            for (i = e; (e = obj_token(&r, &i)) > i; i = e)
+                corners++;
+            part->count[3] += corners > 2 ? corners - 2 : 0;
+        }
     }
-    if (rc != 0)
+}
+
+/* Returns the capacity a growing array reaches for count items. */
+static size_t obj_grown(size_t count)
+{
+    size_t cap = 0;
+
+    while (cap < count)
+        cap = grow_next_capacity(cap);
+    return cap;
+}
+
+enum {
+    OBJ_PARALLEL_MIN = 1 << 20, /* smaller files are read on one thread */
+    OBJ_PARTS_MAX = 64
+};
+
+/* Reads the len bytes at p (no NUL byte nor carriage return in them) into
+ * *mesh with threads threads: the parts are counted, the arrays sized,
+ * then each part read into its place. Returns 0, or -1 (mesh empty) when
+ * anything is wrong or out of the budget: the serial reading then says
+ * what, as it would have. */
+static int obj_parse_parallel(const char *name, const char *p, size_t len, size_t max_bytes,
+                              int threads, ObjMesh *mesh)
+{
+    static const size_t sizes[4] = {sizeof *mesh->v, sizeof *mesh->vt, sizeof *mesh->vn,
+                                    sizeof *mesh->tri};
+    ObjPart parts[OBJ_PARTS_MAX];
+    size_t total[4] = {0, 0, 0, 0}, used = 0;
+    int n = threads < OBJ_PARTS_MAX ? threads : OBJ_PARTS_MAX, failed = 0;
+    const char *end = p + len;
+
+    for (int k = 0; k < n; k++) {
+        const char *at = k == 0 ? p : parts[k - 1].end;
+        const char *cut = k == n - 1 ? end : p + len / (size_t)n * (size_t)(k + 1);
+        if (cut < at)
+            cut = at;
+        if (cut < end && cut > p && cut[-1] != '\n') {
+            const char *eol = memchr(cut, '\n', (size_t)(end - cut));
+            cut = eol ? eol + 1 : end;
+        }
+        parts[k].start = at;
+        parts[k].end = cut;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(n) schedule(static, 1)
+#endif
+    for (int k = 0; k < n; k++)
+        obj_count(&parts[k]);
+    for (int k = 0; k < n; k++)
+        for (int a = 0; a < 4; a++)
+            total[a] += parts[k].count[a];
+    for (int a = 0; a < 4; a++)
+        used += obj_grown(total[a]) * sizes[a]; /* what the serial reading takes */
+    if (max_bytes && used > max_bytes)
+        return -1;
+    memset(mesh, 0, sizeof *mesh);
+    if ((total[0] && !(mesh->v = malloc(total[0] * sizes[0]))) ||
+        (total[1] && !(mesh->vt = malloc(total[1] * sizes[1]))) ||
+        (total[2] && !(mesh->vn = malloc(total[2] * sizes[2]))) ||
+        (total[3] && !(mesh->tri = malloc(total[3] * sizes[3])))) {
         obj_free(mesh);
-    return rc;
+        return -1;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(n) schedule(static, 1) reduction(| : failed)
+#endif
+    for (int k = 0; k < n; k++) {
+        /* Part k's records go after those of the parts before it. */
+        ObjMesh view = *mesh;
+        size_t caps[4], *counts[4] = {&view.v_count, &view.vt_count, &view.vn_count,
+                                      &view.tri_count};
+        ObjReader r = {name, NULL, 0, 0, NULL, 0, 0, 1};
+        Error err;
+        r.err = &err;
+        for (int j = 0; j < k; j++)
+            r.lineno += (int)parts[j].lines;
+        for (int a = 0; a < 4; a++) {
+            *counts[a] = 0;
+            for (int j = 0; j < k; j++)
+                *counts[a] += parts[j].count[a];
+            caps[a] = *counts[a] + parts[k].count[a];
+        }
+        if (obj_parse_lines(&r, &view, caps, parts[k].start, parts[k].end, 0) != 0)
+            failed = 1;
+        for (int a = 0; a < 4; a++)
+            failed |= *counts[a] != caps[a];
+    }
+    if (failed) {
+        obj_free(mesh);
+        return -1;
+    }
+    mesh->v_count = total[0];
+    mesh->vt_count = total[1];
+    mesh->vn_count = total[2];
+    mesh->tri_count = total[3];
+    return 0;
+}
+
+int obj_parse(const char *name, const char *data, size_t len, size_t max_bytes, ObjMesh *mesh,
+              Error *err)
+{
+    size_t caps[4] = {0, 0, 0, 0};
+    const char *p = data, *end = data + len;
+    ObjReader r = {name, NULL, 0, 0, err, max_bytes, 0, 0};
+    int odd, threads = threads_count();
+
+    memset(mesh, 0, sizeof *mesh);
+    if (len >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0)
+        p += 3;
+    /* Lines are searched for NUL bytes and carriage returns only when the
+     * file holds some; a large file without them is read by every thread. */
+    odd = memchr(p, '\0', (size_t)(end - p)) || memchr(p, '\r', (size_t)(end - p));
+    if (!odd && threads > 1 && (size_t)(end - p) >= OBJ_PARALLEL_MIN &&
+        obj_parse_parallel(name, p, (size_t)(end - p), max_bytes, threads, mesh) == 0)
+        return 0;
+    if (obj_parse_lines(&r, mesh, caps, p, end, odd) != 0) {
+        obj_free(mesh);
+        return -1;
+    }
+    return 0;
 }

@@ -152,12 +152,3 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     }
     return used;
 }
-
-int render_default_threads(void)
-{
-#ifdef _OPENMP
-    return omp_get_num_procs();
-#else
-    return 1;
-#endif
-}

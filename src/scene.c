@@ -9,6 +9,10 @@
 #include "bvh.h"
 #include "grow.h"
 #include "obj.h"
+#include "threads.h"
+
+/* Meshes of fewer triangles are made on one thread. */
+enum { SCENE_PARALLEL_MIN = 4096 };
 
 void scene_init(Scene *scene)
 {
@@ -180,6 +184,82 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
     return 0;
 }
 
+/* Makes mesh m's triangle i with material mat into *tri: smooth when its
+ * corners have normals (unless one is zero), textured when they have
+ * texture coordinates; returns -1 when it has no area, else 0. */
+static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, Triangle *tri)
+{
+    const ObjCorner *c = m->tri[i];
+
+    if (triangle_make(tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
+        return -1;
+    if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
+        tri->smooth = 1;
+        for (int k = 0; k < 3; k++) {
+            Vec3 vn = m->vn[c[k].vn];
+            if (!(vec3_length(vn) > 0))
+                tri->smooth = 0;
+            else
+                tri->vn[k] = vec3_normalize(vn);
+        }
+        if (!tri->smooth)
+            tri->vn[0] = tri->vn[1] = tri->vn[2] = tri->normal;
+    }
+    if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
+        for (int k = 0; k < 3; k++) {
+            tri->uv[k][0] = m->vt[c[k].vt][0];
+            tri->uv[k][1] = m->vt[c[k].vt][1];
+        }
+    return 0;
+}
+
+/* Adds mesh m's triangles, made on every thread, into the room made for
+ * all of them, then closes the gaps of those without area and gives back
+ * the room they took (the capacity is then the one that adding them one by
+ * one from entry_capacity makes); returns the number added, or -1 when
+ * memory for the marks runs out (nothing added). */
+static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Material *mat,
+                                    size_t entry_capacity)
+{
+    size_t first = scene->triangle_count, kept = first, cap, least;
+    unsigned char *made = malloc(m->tri_count);
+    Triangle *tris = scene->triangles;
+
+    if (!made)
+        return -1;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static)
+#endif
+    for (size_t i = 0; i < m->tri_count; i++)
+        made[i] = scene_mesh_triangle(m, i, mat, &tris[first + i]) == 0;
+    for (size_t i = 0; i < m->tri_count; i++) {
+        if (!made[i])
+            continue;
+        if (kept != first + i)
+            tris[kept] = tris[first + i];
+        tris[kept].order = (unsigned)(scene->sphere_count + scene->plane_count + kept);
+        scene->has_transparency |= tris[kept].material.transparency > 0;
+        kept++;
+    }
+    free(made);
+    scene->triangle_count = kept;
+    least = entry_capacity ? entry_capacity : 16;
+    for (cap = scene->triangle_capacity; cap / 2 >= kept && cap / 2 >= least;)
+        cap /= 2;
+    if (kept == 0 && entry_capacity == 0)
+        cap = 0;
+    if (cap < scene->triangle_capacity) {
+        Triangle *fit = cap ? realloc(scene->triangles, cap * sizeof *fit) : NULL;
+        if (cap == 0)
+            free(scene->triangles);
+        if (fit || cap == 0) {
+            scene->triangles = fit;
+            scene->triangle_capacity = cap;
+        }
+    }
+    return (long)(kept - first);
+}
+
 long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 {
     long added = 0;
@@ -189,30 +269,25 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
     if (scene->memory_limit &&
         (held > left || m->tri_count > (left - held) / sizeof *scene->triangles))
         return SCENE_OVER_LIMIT;
+    /* A large mesh is made on every thread when there is room for all its
+     * triangles as adding them one by one would make it; else (or when
+     * that fails) one by one, which says what went wrong. */
+    if (m->tri_count >= SCENE_PARALLEL_MIN && threads_count() > 1) {
+        size_t need = scene->triangle_count + m->tri_count, entry = scene->triangle_capacity;
+        int rc = 0;
+        while (rc == 0 && scene->triangle_capacity < need)
+            rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
+                               scene->triangle_capacity, sizeof *scene->triangles);
+        if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, mat, entry)) >= 0)
+            return added;
+        added = 0;
+    }
     for (size_t i = 0; i < m->tri_count; i++) {
-        const ObjCorner *c = m->tri[i];
         Triangle tri;
-        if (triangle_make(&tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
+        int rc;
+        if (scene_mesh_triangle(m, i, mat, &tri) != 0)
             continue;
-        if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
-            /* Vertex normals: smooth shading, unless one is zero. */
-            tri.smooth = 1;
-            for (int k = 0; k < 3; k++) {
-                Vec3 vn = m->vn[c[k].vn];
-                if (!(vec3_length(vn) > 0))
-                    tri.smooth = 0;
-                else
-                    tri.vn[k] = vec3_normalize(vn);
-            }
-            if (!tri.smooth)
-                tri.vn[0] = tri.vn[1] = tri.vn[2] = tri.normal;
-        }
-        if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
-            for (int k = 0; k < 3; k++) {
-                tri.uv[k][0] = m->vt[c[k].vt][0];
-                tri.uv[k][1] = m->vt[c[k].vt][1];
-            }
-        int rc = scene_add_triangle(scene, &tri);
+        rc = scene_add_triangle(scene, &tri);
         if (rc != 0)
             return rc;
         added++;

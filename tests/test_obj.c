@@ -1,11 +1,13 @@
 /* test_obj.c: Wavefront OBJ files: every face form, and every fault. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "obj.h"
 #include "parse.h"
 #include "test.h"
+#include "threads.h"
 
 /* Writes text (len bytes) to build/t.obj and loads it. */
 static int load(const char *text, size_t len, ObjMesh *m, Error *err)
@@ -166,9 +168,217 @@ static void mesh_record_adds_the_triangles(void)
     CHECK_CONTAINS(err.message, "cannot use the mesh 't.obj': build/t.obj:2:5: vertex 2 does not exist");
 }
 
+/* A mesh of over 1 MiB, so that it is read on every thread: a grid of
+ * vertices with texture coordinates and normals; quads and triangles in
+ * every corner form, negative indices, comments, ignored records and blank
+ * lines; when degenerate, some faces without area. Returns its length. */
+static size_t big_obj(char *text, size_t cap, int degenerate)
+{
+    enum { N = 120 }; /* N x N vertices */
+    size_t len = 0;
+
+    len += (size_t)snprintf(text + len, cap - len, "# a grid\no grid\n");
+    for (int i = 0; i < N * N; i++)
+        len += (size_t)snprintf(text + len, cap - len,
+                                "v %d.%03d\t%d -0.%d  # vertex %d\nvt 0.%d %d\nvn 0 %d 1\n\n",
+                                i % N, i % 1000, i / N, i % 7, i + 1, i % 10, i % 2, i % 3);
+    for (int y = 0; y + 1 < N; y++)
+        for (int x = 0; x + 1 < N; x++) {
+            int a = y * N + x + 1, b = a + 1, c = a + N + 1, d = a + N;
+            if ((x + y) % 3 == 0)
+                len += (size_t)snprintf(text + len, cap - len, "f %d/%d/%d %d/%d/%d %d/%d/%d %d/%d/%d\n",
+                                        a, a, a, b, b, b, c, c, c, d, d, d);
+            else if ((x + y) % 3 == 1)
+                len += (size_t)snprintf(text + len, cap - len, "f %d//%d %d//%d %d//%d\ng g%d\nf %d %d %d\n",
+                                        a, a, b, b, c, c, y, a, c, d);
+            else
+                len += (size_t)snprintf(text + len, cap - len, "f %d %d %d\nf %d/%d %d/%d -%d/-%d\n",
+                                        a, b, degenerate && x % 5 == 0 ? a : c, a, a, c, c,
+                                        N * N - d + 1, N * N - d + 1);
+        }
+    return len;
+}
+
+/* Parses text on the given threads. */
+static int parse_on(int threads, const char *text, size_t len, size_t max_bytes, ObjMesh *m,
+                    Error *err)
+{
+    int rc;
+
+    threads_use(threads);
+    rc = obj_parse("big.obj", text, len, max_bytes, m, err);
+    return rc;
+}
+
+/* Returns the bytes the serial reading's arrays take: each grown by
+ * doubling from 16. */
+static size_t grown_bytes(const ObjMesh *m)
+{
+    size_t counts[4] = {m->v_count, m->vt_count, m->vn_count, m->tri_count};
+    size_t sizes[4] = {sizeof *m->v, sizeof *m->vt, sizeof *m->vn, sizeof *m->tri}, sum = 0;
+
+    for (int a = 0; a < 4; a++) {
+        size_t cap = 0;
+        while (cap < counts[a])
+            cap = cap ? 2 * cap : 16;
+        sum += cap * sizes[a];
+    }
+    return sum;
+}
+
+/* A large file is read alike on one thread and on two: the same arrays, or
+ * the same fault at the same place (the first in the file), also when the
+ * memory limit stops it. */
+static void obj_reads_alike_on_every_thread(void)
+{
+    size_t cap = 4 << 20, len;
+    char *text = malloc(cap), *bad = malloc(cap);
+    int before = threads_count();
+    ObjMesh one, two;
+    Error e1, e2;
+
+    CHECK(text && bad);
+    if (!text || !bad) {
+        free(text);
+        free(bad);
+        return;
+    }
+    len = big_obj(text, cap, 0);
+    CHECK(len > 1 << 20 && len < cap);
+    CHECK_INT(0, parse_on(1, text, len, 0, &one, &e1));
+    CHECK_INT(0, parse_on(2, text, len, 0, &two, &e2));
+    CHECK_INT((long long)one.v_count, (long long)two.v_count);
+    CHECK_INT((long long)one.vt_count, (long long)two.vt_count);
+    CHECK_INT((long long)one.vn_count, (long long)two.vn_count);
+    CHECK_INT((long long)one.tri_count, (long long)two.tri_count);
+    CHECK_INT(120 * 120, (long long)one.v_count);
+    if (one.tri_count == two.tri_count && one.v_count == two.v_count) {
+        CHECK(memcmp(one.v, two.v, one.v_count * sizeof *one.v) == 0);
+        CHECK(memcmp(one.vt, two.vt, one.vt_count * sizeof *one.vt) == 0);
+        CHECK(memcmp(one.vn, two.vn, one.vn_count * sizeof *one.vn) == 0);
+        CHECK(memcmp(one.tri, two.tri, one.tri_count * sizeof *one.tri) == 0);
+    }
+    /* The memory limit: the serial reading's arrays just fit, or not. */
+    {
+        size_t need = grown_bytes(&one);
+        ObjMesh m;
+        CHECK_INT(0, parse_on(2, text, len, need, &m, &e2));
+        obj_free(&m);
+        CHECK_INT(-1, parse_on(1, text, len, need - 1, &m, &e1));
+        CHECK_INT(-1, parse_on(2, text, len, need - 1, &m, &e2));
+        CHECK_ERROR("memory limit", &e2, e1.line, e1.column, e1.message);
+    }
+    obj_free(&one);
+    obj_free(&two);
+    /* A fault early, in the middle, near the end and on the last line: a
+     * face naming a vertex not yet read, a malformed number, a face of two
+     * corners, an unknown record. */
+    {
+        static const char *const faults[] = {"f 1 2 14400", "v 1 2 x", "f 1 2", "vp 1"};
+        size_t at[] = {len / 50, len / 2, len - len / 40, len};
+        for (int k = 0; k < 4; k++) {
+            size_t cut = at[k], n;
+            ObjMesh m;
+            while (cut > 0 && text[cut - 1] != '\n')
+                cut--;
+            memcpy(bad, text, cut);
+            n = cut + (size_t)sprintf(bad + cut, "%s\n", faults[k]);
+            memcpy(bad + n, text + cut, len - cut);
+            n += len - cut;
+            CHECK_INT(-1, parse_on(1, bad, n, 0, &m, &e1));
+            CHECK_INT(-1, parse_on(2, bad, n, 0, &m, &e2));
+            CHECK_ERROR(faults[k], &e2, e1.line, e1.column, e1.message);
+            CHECK_CONTAINS(e2.excerpt, faults[k]);
+        }
+    }
+    threads_use(before);
+    free(text);
+    free(bad);
+}
+
+/* Says whether triangles a and b are alike, field by field. */
+static int same_triangle(const Triangle *a, const Triangle *b)
+{
+    return memcmp(a->v, b->v, sizeof a->v) == 0 && memcmp(&a->normal, &b->normal, sizeof a->normal) == 0 &&
+           memcmp(a->uv, b->uv, sizeof a->uv) == 0 && memcmp(a->vn, b->vn, sizeof a->vn) == 0 &&
+           a->smooth == b->smooth && a->swapped == b->swapped && a->order == b->order &&
+           a->material.reflection == b->material.reflection &&
+           a->material.colour.g == b->material.colour.g;
+}
+
+/* A large mesh's triangles are made alike on one thread and on two, those
+ * without area left out, in the same order and the same room. */
+static void mesh_made_alike_on_every_thread(void)
+{
+    const char *text = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n4\n0 0 0\n0 5 0 255 255 255\n"
+                       "sphere: 0 0 9 1 1 2 3 0\nmesh: big.obj 10 20 30 0.5\n"
+                       "mesh: big.obj 10 20 30 0.5\n";
+    size_t cap = 4 << 20, len;
+    char *obj = malloc(cap);
+    int before = threads_count();
+    Scene one, two;
+    Error err;
+    FILE *f = fopen("build/big.obj", "wb");
+
+    CHECK(obj && f);
+    if (!obj || !f) {
+        free(obj);
+        if (f)
+            fclose(f);
+        return;
+    }
+    len = big_obj(obj, cap, 1);
+    fwrite(obj, 1, len, f);
+    fclose(f);
+    free(obj);
+    threads_use(1);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &one, &err));
+    threads_use(2);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &two, &err));
+    threads_use(before);
+    CHECK_INT((long long)one.triangle_count, (long long)two.triangle_count);
+    CHECK_INT((long long)one.triangle_capacity, (long long)two.triangle_capacity);
+    CHECK(one.triangle_count > 8192 && one.triangle_count % 2 == 0);
+    if (one.triangle_count == two.triangle_count) {
+        size_t differ = 0;
+        for (size_t i = 0; i < one.triangle_count; i++)
+            differ += !same_triangle(&one.triangles[i], &two.triangles[i]);
+        CHECK_INT(0, (long long)differ);
+        /* Objects are ordered as listed: the sphere first. */
+        CHECK_INT((long long)one.triangle_count, two.triangles[one.triangle_count - 1].order);
+    }
+    scene_free(&one);
+    scene_free(&two);
+    /* 4,100 faces of which 10 have no area: room is made for 8,192, then
+     * given back to the 4,096 that adding them one by one takes. */
+    f = fopen("build/big.obj", "wb");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\n", f);
+    for (int i = 0; i < 4100; i++)
+        fputs(i % 410 == 7 ? "f 1 1 2\n" : "f 1 2 3\n", f);
+    fclose(f);
+    text = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n4\n0 0 0\n0 5 0 255 255 255\n"
+           "mesh: big.obj 10 20 30 0.5\n";
+    threads_use(1);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &one, &err));
+    threads_use(2);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &two, &err));
+    threads_use(before);
+    CHECK_INT(4090, (long long)two.triangle_count);
+    CHECK_INT(4096, (long long)one.triangle_capacity);
+    CHECK_INT(4096, (long long)two.triangle_capacity);
+    CHECK_INT(4089, two.triangles[4089].order);
+    scene_free(&one);
+    scene_free(&two);
+}
+
 const TestCase obj_tests[] = {
     {"obj_reads_every_face_form", obj_reads_every_face_form},
     {"obj_faults_name_line_and_column", obj_faults_name_line_and_column},
     {"mesh_record_adds_the_triangles", mesh_record_adds_the_triangles},
+    {"obj_reads_alike_on_every_thread", obj_reads_alike_on_every_thread},
+    {"mesh_made_alike_on_every_thread", mesh_made_alike_on_every_thread},
     {NULL, NULL},
 };
