@@ -32,11 +32,13 @@ enum {
 
 /* A node: up to BVH_WIDTH children, each a node or a leaf (a run of
  * primitive references), their boxes laid out by coordinate so that one
- * vector holds a coordinate of every child's box. An unused child has the
- * box lo = +inf, hi = -inf, which no ray meets. */
+ * vector holds a coordinate of every child's box. The boxes are floats in
+ * the hierarchy's frame (centre and scale below), rounded outwards, so
+ * that they hold the scene's boxes; 128 bytes, two cache lines. An unused
+ * child has the box lo = +inf, hi = -inf, which no ray meets. */
 typedef struct {
-    real box[6][BVH_WIDTH];      /* box[c][k]: child k's lo x y z (c < 3),
-                                    then hi x y z */
+    _Alignas(64) float box[6][BVH_WIDTH]; /* box[c][k]: child k's lo x y z
+                                             (c < 3), then hi x y z */
     uint32_t child[BVH_WIDTH];   /* a node's index, or a leaf's first
                                     primitive reference */
     uint8_t count[BVH_WIDTH];    /* a leaf's primitives; 0: a node (or an
@@ -52,6 +54,9 @@ typedef struct Bvh {
                             them in leaf order; NULL without spheres */
     size_t prim_count;
     int depth;           /* deepest node, the root at 0 */
+    double centre[3];    /* the frame: a node's box coordinate is that of */
+    double scale;        /* the scene less centre, times scale (a power of
+                            two that brings the scene within about +-2) */
 } Bvh;
 
 /* Builds the hierarchy of scene's spheres and triangles into *bvh in

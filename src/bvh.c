@@ -66,6 +66,37 @@ static real box_half_area(const Box *b)
     return dx < 0 ? 0 : dx * dy + dy * dz + dz * dx;
 }
 
+/* Returns the float next to f, a finite float, above it (up = 1) or below
+ * it (up = 0): its bits stepped. */
+static inline float bvh_float_step(float f, int up)
+{
+    uint32_t bits;
+
+    if (f == 0)
+        return up ? FLT_TRUE_MIN : -FLT_TRUE_MIN;
+    memcpy(&bits, &f, sizeof bits);
+    bits += (f > 0) == (up != 0) ? 1 : (uint32_t)-1;
+    memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+/* Returns a float below x (a double) by at least half a float unit: below
+ * x even when x carries a double's rounding error; infinities stay. */
+static inline float bvh_float_below(double x)
+{
+    float f = (float)x;
+
+    return isinf(x) || f == -INFINITY ? f : bvh_float_step(f, 0);
+}
+
+/* Returns a float above x by at least half a float unit; infinities stay. */
+static inline float bvh_float_above(double x)
+{
+    float f = (float)x;
+
+    return isinf(x) || f == INFINITY ? f : bvh_float_step(f, 1);
+}
+
 /* What the build needs of each primitive. */
 typedef struct {
     Box box;         /* padded bounds */
@@ -452,12 +483,29 @@ static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, con
             w->child[k] = bvh_collapse(nodes, members[k], depth + 1, scene, pad, bvh, &box);
         }
         for (int a = 0; a < 3; a++) {
-            w->box[a][k] = box.lo[a];
-            w->box[3 + a][k] = box.hi[a];
+            w->box[a][k] = bvh_float_below(((double)box.lo[a] - bvh->centre[a]) * bvh->scale);
+            w->box[3 + a][k] = bvh_float_above(((double)box.hi[a] - bvh->centre[a]) * bvh->scale);
         }
         box_grow(bounds, &box);
     }
     return self;
+}
+
+/* Sets bvh's frame: the centre of the n primitives' boxes, and the power
+ * of two that brings their half-extent within [1, 2) (within 2^+-1000). */
+static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
+{
+    Box all;
+    double half = 0;
+
+    box_empty(&all);
+    for (size_t i = 0; i < n; i++)
+        box_grow(&all, &prims[i].box);
+    for (int a = 0; a < 3; a++) {
+        bvh->centre[a] = 0.5 * (double)all.lo[a] + 0.5 * (double)all.hi[a];
+        half = fmax(half, 0.5 * (double)all.hi[a] - 0.5 * (double)all.lo[a]);
+    }
+    bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;
 }
 
 int bvh_build(Bvh *bvh, const Scene *scene, int threads)
@@ -485,6 +533,7 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
     for (size_t i = 0; i < scene->triangle_count; i++)
         bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
+    bvh_frame(bvh, prims, n);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #pragma omp single
@@ -502,7 +551,8 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         if (fit)
             nodes = fit;
     }
-    bvh->nodes = malloc(bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
+    bvh->nodes = aligned_alloc(_Alignof(BvhNode),
+                               bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
         bvh_free(bvh);
@@ -566,75 +616,121 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* A vector of one coordinate of BVH_LANES children's boxes, and a lane
- * mask: a row of a node's boxes is BVH_VECTORS of them. 16 bytes (SSE2 on
- * x86-64, NEON on AArch64: every 64-bit processor has them), or 32 when the
- * compiler may use AVX (-mavx, -march=native) and they hold 4 doubles. */
-#ifdef RAYTRACE_REAL_FLOAT
-typedef int32_t bvh_lane_bits;
-#else
-typedef int64_t bvh_lane_bits;
-#endif
-#if defined(__AVX__) && !defined(RAYTRACE_REAL_FLOAT)
-#define BVH_VECTOR_BYTES 32
-#else
-#define BVH_VECTOR_BYTES 16
-#endif
-typedef real BvhLanes __attribute__((vector_size(BVH_VECTOR_BYTES)));
-typedef bvh_lane_bits BvhMask __attribute__((vector_size(BVH_VECTOR_BYTES)));
-enum {
-    BVH_LANES = BVH_VECTOR_BYTES / sizeof(real),
-    BVH_VECTORS = BVH_WIDTH / BVH_LANES
-};
+/* A vector of one coordinate of the BVH_WIDTH children's boxes (SSE on
+ * x86-64, NEON on AArch64: every 64-bit processor has them), and a lane
+ * mask. */
+typedef float BvhLanes __attribute__((vector_size(16)));
+typedef int32_t BvhMask __attribute__((vector_size(16)));
 
-/* The ray, prepared for box tests: origin and reciprocal direction (+-inf
- * for a zero component, by the sign of that zero) in every lane, and for
- * each axis where the row of a node's boxes the ray meets first (lo: a, or
- * hi: 3 + a) and the other start, in reals from box[0][0]. */
+/*
+ * The box tests run in floats, in the hierarchy's frame, with ray
+ * parameters scaled by a power of two sigma of the ray's own (t' = t sigma)
+ * that keeps them within floats' range. Each is conservative: when the
+ * ray meets a box at some t in [0, tmax], the test says so.
+ *
+ * - The boxes are rounded outwards (bvh_collapse()).
+ * - The origin o, in the frame, is rounded down to o- and up to o+; the
+ *   near planes are measured from the one that makes their distances
+ *   smaller (o+ when the direction is positive), the far ones from the
+ *   other: distances from the true origin lie between.
+ * - The reciprocal directions are rounded once from doubles: a slab
+ *   distance (b - o) * inv is then within a relative 3 u (u = 2^-24: the
+ *   subtraction, the reciprocal and the product) plus 2^-150 (a product in
+ *   the subnormal range) of its value from that origin.
+ * - So the computed entry t0 is at most T(1 + 3u) + 2^-150 and the computed
+ *   exit at least T'(1 - 3u) - 2^-150 where the true T <= T'; widening the
+ *   exit by BVH_WIDEN = 1 + 8u (1 + 7u after its own rounding) and adding
+ *   BVH_TINY = 2^-140 keeps t0 <= t1 (pbrt-v3, 3.9.2, makes the same
+ *   argument in one precision).
+ * - tmax is rounded up (bvh_limit()).
+ * Rays that would leave floats' range (an origin 2^100 beyond the scene's
+ * size, or direction components 2^100 apart: a component that small is
+ * not zero, yet its slab distances are not floats) enter every box.
+ */
+#define BVH_WIDEN (1 + 4 * FLT_EPSILON)
+#define BVH_TINY 0x1p-140f
+#define BVH_FAR 0x1p100 /* the farthest origin and the widest ratio */
+
+/* The ray, prepared for box tests: for each axis, the origins the near and
+ * the far planes are measured from and the reciprocal direction (+-inf for
+ * a zero component, by the sign of that zero) in every lane, where the
+ * row of a node's boxes the ray meets first starts (lo: a, or hi: 3 + a)
+ * and the other (in floats from box[0][0]); sigma; whether every box is
+ * entered. */
 typedef struct {
-    BvhLanes o[3], inv[3];
+    BvhLanes near_o[3], far_o[3], inv[3];
     int near[3], far[3];
+    double sigma;
+    int all;
 } BvhRay;
 
-static BvhRay bvh_ray(const Ray *r)
+/* Returns 2^e, for |e| <= 1022, from its bits. */
+static inline double bvh_pow2(int e)
+{
+    uint64_t bits = (uint64_t)(e + 1023) << 52;
+    double x;
+
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* Returns the exponent of x, a positive normal double: x is in [2^e, 2^(e+1)). */
+static inline int bvh_exponent(double x)
+{
+    uint64_t bits;
+
+    memcpy(&bits, &x, sizeof bits);
+    return (int)(bits >> 52 & 0x7ff) - 1023;
+}
+
+static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 {
     BvhRay b;
-    real o[3] = {r->origin.x, r->origin.y, r->origin.z};
-    real d[3] = {r->dir.x, r->dir.y, r->dir.z};
+    double o[3] = {r->origin.x, r->origin.y, r->origin.z};
+    double d[3] = {r->dir.x, r->dir.y, r->dir.z}, inv[3], most = 0, down;
+    int e, ok;
 
     for (int a = 0; a < 3; a++) {
-        real inv = 1 / d[a];
-        for (int k = 0; k < BVH_LANES; k++) {
-            b.o[a][k] = o[a];
-            b.inv[a][k] = inv;
-        }
-        b.near[a] = (inv < 0 ? 3 + a : a) * BVH_WIDTH;
-        b.far[a] = (inv < 0 ? a : 3 + a) * BVH_WIDTH;
+        double m;
+        inv[a] = 1 / d[a];
+        m = d[a] != 0 ? fabs(inv[a]) : 0; /* inf for a subnormal component */
+        most = m > most ? m : most;
     }
+    /* Scaled by down, the largest reciprocal is in [1/2, 1): t' = t sigma.
+     * (An infinite most has the exponent 1024.) */
+    e = bvh_exponent(most) + 1;
+    ok = e >= -1000 && e <= 1000;
+    down = bvh_pow2(ok ? -e : 0);
+    b.sigma = bvh->scale * down;
+    ok &= b.sigma >= 0x1p-1000 && b.sigma <= 0x1p1000;
+    for (int a = 0; a < 3; a++) {
+        double oa = (o[a] - bvh->centre[a]) * bvh->scale, ia = inv[a] * down;
+        float lo = bvh_float_below(oa), hi = bvh_float_above(oa), f = (float)ia;
+        ok &= fabs(oa) <= BVH_FAR && (d[a] == 0 || fabs(ia) >= 1 / BVH_FAR);
+        for (int k = 0; k < BVH_WIDTH; k++) {
+            b.near_o[a][k] = ia > 0 ? hi : lo;
+            b.far_o[a][k] = ia > 0 ? lo : hi;
+            b.inv[a][k] = f;
+        }
+        b.near[a] = (ia < 0 ? 3 + a : a) * BVH_WIDTH;
+        b.far[a] = (ia < 0 ? a : 3 + a) * BVH_WIDTH;
+    }
+    b.all = !ok;
     return b;
 }
 
-/* Rounding in the slab test: every computed slab distance is within a
- * relative 3 ulps (gamma_3) of the true one, so widening the far ends by
- * 1 + 8 ulps > 1 + 2 gamma_3 never loses a crossing (pbrt-v3, 3.9.2). */
-#define BVH_WIDEN (1 + 4 * REAL_EPSILON)
+/* Returns the bound of box tests for ray parameters up to t. */
+static float bvh_limit(const BvhRay *r, double t)
+{
+    return bvh_float_above(t * r->sigma);
+}
 
 /* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
- * what SSE's and AVX's max and min instructions do. */
-#if BVH_VECTOR_BYTES == 32
-#define bvh_max(a, b) ((BvhLanes)_mm256_max_pd((a), (b)))
-#define bvh_min(a, b) ((BvhLanes)_mm256_min_pd((a), (b)))
-#define bvh_mask_bits(m) ((unsigned)_mm256_movemask_pd((__m256d)(m)))
-#elif defined(__SSE2__)
-#ifdef RAYTRACE_REAL_FLOAT
+ * what SSE's max and min instructions do. */
+#if defined(__SSE2__)
 #define bvh_max(a, b) ((BvhLanes)_mm_max_ps((a), (b)))
 #define bvh_min(a, b) ((BvhLanes)_mm_min_ps((a), (b)))
 #define bvh_mask_bits(m) ((unsigned)_mm_movemask_ps((__m128)(m)))
-#else
-#define bvh_max(a, b) ((BvhLanes)_mm_max_pd((a), (b)))
-#define bvh_min(a, b) ((BvhLanes)_mm_min_pd((a), (b)))
-#define bvh_mask_bits(m) ((unsigned)_mm_movemask_pd((__m128d)(m)))
-#endif
 #else
 static inline BvhLanes bvh_pick(BvhMask m, BvhLanes a, BvhLanes b)
 {
@@ -646,13 +742,13 @@ static inline unsigned bvh_mask_bits(BvhMask m)
 {
     unsigned bits = 0;
 
-    for (int k = 0; k < BVH_LANES; k++)
+    for (int k = 0; k < BVH_WIDTH; k++)
         bits |= (unsigned)(m[k] & 1) << k;
     return bits;
 }
 #endif
 
-/* Returns the BVH_LANES reals of node's boxes from offset on. */
+/* Returns the row of node's boxes from offset on. */
 static inline BvhLanes bvh_row(const BvhNode *node, int offset)
 {
     BvhLanes x;
@@ -661,39 +757,42 @@ static inline BvhLanes bvh_row(const BvhNode *node, int offset)
     return x;
 }
 
-/* Says which of node's children's boxes the ray meets at some t in
- * [0, tmax]: bit k for child k; stores in enter[k] where the ray enters
- * child k's box (to within rounding, never later than the true entry by
- * more than BVH_WIDEN allows). The reciprocal directions are +-inf for a
+/* Says which of node's children's boxes the ray meets at some t' in [0,
+ * limit] (a bvh_limit()): bit k for child k; stores in enter[k] where
+ * the ray enters child k's box (t', never later than the true entry by
+ * more than the rounding above). The reciprocal directions are +-inf for a
  * zero component: the products then are +-inf (outside the slab or inside
  * it) or NaN (on its plane), which the comparisons ignore. */
-static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, real tmax,
-                                          real enter[BVH_WIDTH])
+static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, float limit,
+                                          float enter[BVH_WIDTH])
 {
-    unsigned bits = 0;
+    BvhLanes t0 = {0}, t1 = {0}, n, f;
 
-    /* Unrolled: the loops are short and the body is a few instructions. */
-#pragma GCC unroll 4
-    for (int v = 0; v < BVH_VECTORS; v++) {
-        BvhLanes t0 = {0}, t1 = {0}, n, f;
-        BvhMask in;
-
-        t1 += tmax;
-#pragma GCC unroll 3
-        for (int a = 0; a < 3; a++) {
-            n = (bvh_row(node, r->near[a] + v * BVH_LANES) - r->o[a]) * r->inv[a];
-            f = (bvh_row(node, r->far[a] + v * BVH_LANES) - r->o[a]) * r->inv[a];
-            t0 = bvh_max(n, t0);
-            t1 = bvh_min(f, t1);
-        }
-        /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
-         * least of the widened ends is the least end widened. */
-        t1 *= BVH_WIDEN;
-        in = t0 <= t1;
-        memcpy(&enter[v * BVH_LANES], &t0, sizeof t0);
-        bits |= bvh_mask_bits(in) << (v * BVH_LANES);
+    if (r->all) { /* every child in use */
+        memcpy(enter, &t0, sizeof t0);
+        return bvh_mask_bits((BvhMask)(bvh_row(node, 0) <= bvh_row(node, 3 * BVH_WIDTH)));
     }
-    return bits;
+    t1 += limit;
+    /* Unrolled: the loop is short and the body is a few instructions. */
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        n = (bvh_row(node, r->near[a]) - r->near_o[a]) * r->inv[a];
+        f = (bvh_row(node, r->far[a]) - r->far_o[a]) * r->inv[a];
+        t0 = bvh_max(n, t0);
+        t1 = bvh_min(f, t1);
+    }
+    /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
+     * least of the widened ends is the least end widened. */
+    t1 = t1 * BVH_WIDEN + BVH_TINY;
+    memcpy(enter, &t0, sizeof t0);
+    return bvh_mask_bits((BvhMask)(t0 <= t1));
+}
+
+/* Returns the entry beyond which no box is entered before limit: as in
+ * bvh_children_enter(). */
+static float bvh_cull(float limit)
+{
+    return limit * BVH_WIDEN + BVH_TINY;
 }
 
 /* Tests the primitive bvh->prims[k] for a crossing at tmin < t < tmax;
@@ -719,16 +818,17 @@ static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
 /* A child still to visit: a node (count 0) or a leaf. */
 typedef struct {
     uint32_t child, count; /* as in BvhNode */
-    real enter;            /* where the ray enters its box */
+    float enter;           /* where the ray enters its box (t') */
 } BvhEntry;
 
 int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
 {
-    BvhRay r = bvh_ray(ray);
+    BvhRay r = bvh_ray(bvh, ray);
     BvhEntry stack[BVH_STACK];
     int top = 0, found = 0;
     uint32_t id = 0;
     real bound = tmax; /* primitives are tested below bound */
+    float limit = bvh_limit(&r, tmax), cull = bvh_cull(limit);
 
     for (;;) {
         /* The children the ray enters before the best hit so far go on the
@@ -736,8 +836,8 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
          * may still hold an earlier-listed object at that t: the limit
          * keeps it. */
         const BvhNode *node = &bvh->nodes[id];
-        real enter[BVH_WIDTH];
-        unsigned bits = bvh_children_enter(node, &r, found ? hit->t : tmax, enter);
+        float enter[BVH_WIDTH];
+        unsigned bits = bvh_children_enter(node, &r, limit, enter);
         int base = top;
 
         /* One node alone: straight in. */
@@ -761,7 +861,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
             if (top == 0)
                 return found;
             e = stack[--top];
-            if (found && e.enter > hit->t * BVH_WIDEN)
+            if (e.enter > cull)
                 continue;
             if (e.count == 0) {
                 id = e.child;
@@ -782,6 +882,8 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
                     /* An exact tie with an earlier-listed object must
                      * still be seen: the bound is the next real up. */
                     bound = real_next(t, 1);
+                    limit = bvh_limit(&r, t);
+                    cull = bvh_cull(limit);
                 }
             }
         }
@@ -804,15 +906,15 @@ static void bvh_walk_start(BvhWalk *w)
     w->top = 1;
 }
 
-/* Finds the next leaf whose box the ray r meets at some t in [0, tmax]:
+/* Finds the next leaf whose box the ray r meets at some t' in [0, limit]:
  * returns 1 with its primitives at *first, *count, or 0 when there are no
  * more; start w with bvh_walk_start(). */
-static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w, uint32_t *first,
-                         uint32_t *count)
+static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *w,
+                         uint32_t *first, uint32_t *count)
 {
     while (w->top > 0) {
         const BvhNode *node;
-        real enter[BVH_WIDTH];
+        float enter[BVH_WIDTH];
         unsigned bits;
 
         w->top--;
@@ -822,7 +924,7 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w,
             return 1;
         }
         node = &bvh->nodes[w->stack[w->top].child];
-        bits = bvh_children_enter(node, r, tmax, enter);
+        bits = bvh_children_enter(node, r, limit, enter);
         for (; bits != 0; bits &= bits - 1) {
             int k = __builtin_ctz(bits);
             w->stack[w->top].child = node->child[k];
@@ -835,13 +937,13 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, real tmax, BvhWalk *w,
 
 int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
 {
-    BvhRay r = bvh_ray(ray);
+    BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
     uint32_t first, count;
     real t;
 
     bvh_walk_start(&w);
-    while (bvh_next_leaf(bvh, &r, tmax, &w, &first, &count))
+    while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count))
         for (uint32_t k = first; k < first + count; k++)
             if (bvh_prim_hit(bvh, scene, k, ray, 0, tmax, &t))
                 return 1;
@@ -857,14 +959,14 @@ static int bvh_crossing_before(const BvhCrossing *a, const BvhCrossing *b)
 int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
                   BvhCrossing *out, int max)
 {
-    BvhRay r = bvh_ray(ray);
+    BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
     uint32_t first, count;
     int n = 0;
     real t;
 
     bvh_walk_start(&w);
-    while (bvh_next_leaf(bvh, &r, tmax, &w, &first, &count)) {
+    while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count)) {
         for (uint32_t k = first; k < first + count; k++) {
             uint32_t ref = bvh->prims[k];
             const Material *m;

@@ -1,5 +1,6 @@
 /* test_bvh.c: the hierarchy's structure, and queries equal to the loops. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -46,11 +47,19 @@ static void random_scene(Scene *sc, int n, double s)
     }
 }
 
-/* Returns 1 when the box lo..hi lies within child k's box of node n. */
+/* Returns 1 when the box lo..hi, in the frame of bvh's boxes, lies within
+ * child k's box of node n. */
 static int within_child(const BvhNode *n, int k, Vec3 lo, Vec3 hi)
 {
     return lo.x >= n->box[0][k] && lo.y >= n->box[1][k] && lo.z >= n->box[2][k] &&
            hi.x <= n->box[3][k] && hi.y <= n->box[4][k] && hi.z <= n->box[5][k];
+}
+
+/* Returns scene point p in the frame of bvh's boxes. */
+static Vec3 in_frame(const Bvh *bvh, Vec3 p)
+{
+    return vec3((p.x - bvh->centre[0]) * bvh->scale, (p.y - bvh->centre[1]) * bvh->scale,
+                (p.z - bvh->centre[2]) * bvh->scale);
 }
 
 /* Checks node id's subtree: each child's box holds its children's boxes or
@@ -92,7 +101,7 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
                 lo = vec3_sub(s->centre, r);
                 hi = vec3_add(s->centre, r);
             }
-            if (!within_child(n, k, lo, hi))
+            if (!within_child(n, k, in_frame(bvh, lo), in_frame(bvh, hi)))
                 (*bad)++;
         }
         if (n->count[k] == 0) {
@@ -177,12 +186,38 @@ static void bvh_is_the_same_built_by_one_thread_or_two(void)
     scene_free(&sc);
 }
 
+/* Traces ray (and its segment seg) through sc with and without the
+ * hierarchy accel; returns 1 when anything differs: the nearest hit (t,
+ * object), occlusion or transmittance (to the bit), of the segment and of
+ * the unbounded ray (a distant light's). Counts nearest hits in *hits. */
+static int queries_differ(Scene *sc, struct Bvh *accel, Ray ray, Ray seg, int *hits)
+{
+    Hit a, b;
+    int fa, fb, oa, ob, ua, ub;
+    double ta, tb, va, vb;
+
+    sc->accel = NULL; /* every object, one by one */
+    fa = trace_nearest(sc, &ray, INFINITY, &a);
+    oa = trace_occluded(sc, &seg, 1);
+    ta = trace_transmittance(sc, &seg, 1);
+    ua = trace_occluded(sc, &seg, INFINITY);
+    va = trace_transmittance(sc, &seg, INFINITY);
+    sc->accel = accel;
+    fb = trace_nearest(sc, &ray, INFINITY, &b);
+    ob = trace_occluded(sc, &seg, 1);
+    tb = trace_transmittance(sc, &seg, 1);
+    ub = trace_occluded(sc, &seg, INFINITY);
+    vb = trace_transmittance(sc, &seg, INFINITY);
+    *hits += fa;
+    return fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
+           oa != ob || memcmp(&ta, &tb, sizeof ta) != 0 || ua != ub ||
+           memcmp(&va, &vb, sizeof va) != 0;
+}
+
 static void bvh_queries_equal_the_loops(void)
 {
-    /* The same nearest hit (t, object), occlusion and transmittance (to the
-     * bit) with and without the hierarchy, for rays from outside, from
-     * inside, through exact ties, shadow segments and unbounded shadow rays
-     * (distant lights). */
+    /* Rays from outside, from inside, through exact ties, shadow segments
+     * and unbounded shadow rays (distant lights). */
     static const double scales[] = {1e-3, 1, 1e6};
     int differ = 0, hits = 0;
 
@@ -199,31 +234,61 @@ static void bvh_queries_equal_the_loops(void)
             Vec3 o = vec3_scale(rng_unit_vector(), s * (i % 2 ? 3 : 0.5));
             Ray ray = {o, vec3_sub(vec3_scale(rng_unit_vector(), s * rng_uniform()), o)};
             Ray seg = {o, vec3_scale(ray.dir, rng_range(0.2, 2))};
-            Hit a, b;
-            int fa, fb, oa, ob, ua, ub;
-            double ta, tb, va, vb;
-
-            sc.accel = NULL; /* every object, one by one */
-            fa = trace_nearest(&sc, &ray, INFINITY, &a);
-            oa = trace_occluded(&sc, &seg, 1);
-            ta = trace_transmittance(&sc, &seg, 1);
-            ua = trace_occluded(&sc, &seg, INFINITY);
-            va = trace_transmittance(&sc, &seg, INFINITY);
-            sc.accel = accel;
-            fb = trace_nearest(&sc, &ray, INFINITY, &b);
-            ob = trace_occluded(&sc, &seg, 1);
-            tb = trace_transmittance(&sc, &seg, 1);
-            ub = trace_occluded(&sc, &seg, INFINITY);
-            vb = trace_transmittance(&sc, &seg, INFINITY);
-            hits += fa;
-            if (fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
-                oa != ob || memcmp(&ta, &tb, sizeof ta) != 0 || ua != ub ||
-                memcmp(&va, &vb, sizeof va) != 0)
-                differ++;
+            differ += queries_differ(&sc, accel, ray, seg, &hits);
         }
         scene_free(&sc);
     }
     CHECK(hits > 3000);
+    CHECK_INT(0, differ);
+}
+
+/* The box tests run in floats in a frame of the scene's size: scenes at
+ * the extremes of the numbers a scene may hold (a tiny one enlarged, as
+ * the readers enlarge it), seen from 2^10 to 2^120 times their size (past
+ * 2^100, beyond what floats hold: such rays enter every box), directions
+ * along an axis to within 10^-10 to 10^-323 (past 2^-100 likewise), and
+ * origins on boxes' planes give the loops' answers too. */
+static void bvh_queries_equal_the_loops_at_the_extremes(void)
+{
+    static const double scales[] = {1e-300, 1e-18, 1e14};
+    static const double tilts[] = {0, 1e-10, 1e-25, 1e-31, 1e-300, 4.9e-324};
+    int differ = 0, hits = 0;
+
+    for (int si = 0; si < 3; si++) {
+        for (int far = 10; far <= 120; far += 10) {
+            double s = scales[si];
+            Scene sc;
+            struct Bvh *accel;
+
+            random_scene(&sc, 100, s);
+            scene_fit_scale(&sc); /* as the readers do: 10^-300 becomes about 1 */
+            s = ldexp(s, sc.length_exponent);
+            /* The eye is part of the scene: its hierarchy allows for it. */
+            sc.camera.eye = vec3_scale(rng_unit_vector(), ldexp(s, far));
+            CHECK_INT(0, scene_build_accel(&sc, 1));
+            accel = sc.accel;
+            CHECK(accel != NULL);
+            for (int i = 0; i < 120 && accel; i++) {
+                const Sphere *sp = &sc.spheres[i % sc.sphere_count];
+                Vec3 aim = vec3_add(sp->centre,
+                                    vec3_scale(rng_unit_vector(), sp->radius * rng_uniform()));
+                Vec3 o = sc.camera.eye, d = vec3_sub(aim, o);
+                if (i % 2) { /* along an axis, tilted, from before the sphere */
+                    double e[3] = {tilts[i / 2 % 6] * (i % 4 < 2 ? 1 : -1), tilts[i / 12 % 6],
+                                   tilts[i / 2 % 6]};
+                    e[i / 3 % 3] = i % 8 < 4 ? 1 : -1;
+                    d = vec3(e[0], e[1], e[2]);
+                    o = vec3_sub(aim, vec3_scale(d, s * 3));
+                    if (i % 5 == 0) /* on the plane of the sphere's box, beside it */
+                        o.x = sp->centre.x + sp->radius;
+                }
+                differ += queries_differ(&sc, accel, (Ray){o, d},
+                                         (Ray){o, vec3_scale(d, rng_range(0.5, 2))}, &hits);
+            }
+            scene_free(&sc);
+        }
+    }
+    CHECK(hits > 1000);
     CHECK_INT(0, differ);
 }
 
@@ -233,5 +298,6 @@ const TestCase bvh_tests[] = {
     {"bvh_stays_shallow_on_degenerate_scenes", bvh_stays_shallow_on_degenerate_scenes},
     {"bvh_is_the_same_built_by_one_thread_or_two", bvh_is_the_same_built_by_one_thread_or_two},
     {"bvh_queries_equal_the_loops", bvh_queries_equal_the_loops},
+    {"bvh_queries_equal_the_loops_at_the_extremes", bvh_queries_equal_the_loops_at_the_extremes},
     {NULL, NULL},
 };
