@@ -18,8 +18,7 @@
 # make memcheck     renders and comparisons under Valgrind's memcheck
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
-# The default -O3 is 8% faster than -O2 on the sphere field (same bytes);
-# `make CFLAGS="-O3 -march=native"` adds AVX to the box tests (5% more).
+# The default -O3 is 8% faster than -O2 on the sphere field (same bytes).
 
 CC ?= cc
 CFLAGS ?= -O3 -g
