@@ -22,7 +22,7 @@
 struct Scene;
 
 enum {
-    BVH_WIDTH = 4,           /* children of a node */
+    BVH_WIDTH = 8,           /* children of a node */
     BVH_LEAF_MAX = 4,        /* most primitives in a leaf */
     BVH_MIN_PRIMITIVES = 16  /* scenes with fewer are not worth a hierarchy */
 };
@@ -34,7 +34,7 @@ enum {
  * primitive references), their boxes laid out by coordinate so that one
  * vector holds a coordinate of every child's box. The boxes are floats in
  * the hierarchy's frame (centre and scale below), rounded outwards, so
- * that they hold the scene's boxes; 128 bytes, two cache lines. An unused
+ * that they hold the scene's boxes; 256 bytes, four cache lines. An unused
  * child has the box lo = +inf, hi = -inf, which no ray meets. */
 typedef struct {
     _Alignas(64) float box[6][BVH_WIDTH]; /* box[c][k]: child k's lo x y z

@@ -104,7 +104,7 @@ typedef struct {
 } BuildPrim;
 
 /* A node of the binary tree the build makes first. Its box is not kept:
- * the four-wide nodes' boxes are gathered again from the leaves up. */
+ * the wide nodes' boxes are gathered again from the leaves up. */
 typedef struct {
     uint32_t index;  /* interior: the right child (the left is the next
                         node); leaf: the first of its primitives */
@@ -583,13 +583,16 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
 size_t bvh_build_memory(size_t n)
 {
     /* Building: the primitives' boxes, the binary tree and the references.
-     * Collapsing: the tree, the references and the nodes, at most 2n / 3 + 1
-     * of them: a node of BVH_WIDTH = 4 children takes up 3 of the tree's
-     * interior nodes, one of fewer has only leaves (at least 2 of the n
-     * leaves), and with W4 and Ws of each, 3 W4 + Ws <= n - 1 and Ws <= n / 2
-     * give W4 + Ws <= (n + 2 Ws) / 3 <= 2n / 3. After: the nodes, the
-     * references and the spheres' copies, 4 reals a primitive in place of
-     * the binary tree's two nodes: the larger of the two is counted. */
+     * Collapsing: the tree, the references and the nodes, at most
+     * W n / (2 (W - 1)) of them (W = BVH_WIDTH): a node of W children
+     * takes up W - 1 of the tree's interior nodes; one of m < W children has
+     * only leaves, m >= 2 of them, and takes up m - 1. With F nodes of the
+     * first kind and S of the second holding M leaves in all, the tree's
+     * L <= n leaves give L - 1 = (W - 1) F + M - S, M >= 2 S and M <= L, so
+     * F + S = (L - 1 - M + W S) / (W - 1) <= (L - 1 + (W - 2) S) / (W - 1)
+     * <= W L / (2 (W - 1)). After: the nodes, the references and the
+     * spheres' copies, 4 reals a primitive in place of the binary tree's two
+     * nodes: the larger of the two is counted. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
     size_t tree = 2 * sizeof(BuildNode) > 4 * sizeof(real) ? 2 * sizeof(BuildNode)
                                                             : 4 * sizeof(real);
@@ -597,7 +600,7 @@ size_t bvh_build_memory(size_t n)
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
         return SIZE_MAX;
-    collapse = n * collapse + (2 * n / 3 + 1) * sizeof(BvhNode);
+    collapse = n * collapse + (n / 2 * BVH_WIDTH / (BVH_WIDTH - 1) + 2) * sizeof(BvhNode);
     build *= n;
     return (build > collapse ? build : collapse) + 4096;
 }
@@ -616,11 +619,12 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
-/* A vector of one coordinate of the BVH_WIDTH children's boxes (SSE on
- * x86-64, NEON on AArch64: every 64-bit processor has them), and a lane
- * mask. */
+/* A vector of one coordinate of BVH_LANES children's boxes (SSE on x86-64,
+ * NEON on AArch64: every 64-bit processor has them), and a lane mask; a
+ * row of a node's boxes is BVH_VECTORS of them. */
 typedef float BvhLanes __attribute__((vector_size(16)));
 typedef int32_t BvhMask __attribute__((vector_size(16)));
+enum { BVH_LANES = 4, BVH_VECTORS = BVH_WIDTH / BVH_LANES };
 
 /*
  * The box tests run in floats, in the hierarchy's frame, with ray
@@ -707,7 +711,7 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
         double oa = (o[a] - bvh->centre[a]) * bvh->scale, ia = inv[a] * down;
         float lo = bvh_float_below(oa), hi = bvh_float_above(oa), f = (float)ia;
         ok &= fabs(oa) <= BVH_FAR && (d[a] == 0 || fabs(ia) >= 1 / BVH_FAR);
-        for (int k = 0; k < BVH_WIDTH; k++) {
+        for (int k = 0; k < BVH_LANES; k++) {
             b.near_o[a][k] = ia > 0 ? hi : lo;
             b.far_o[a][k] = ia > 0 ? lo : hi;
             b.inv[a][k] = f;
@@ -742,7 +746,7 @@ static inline unsigned bvh_mask_bits(BvhMask m)
 {
     unsigned bits = 0;
 
-    for (int k = 0; k < BVH_WIDTH; k++)
+    for (int k = 0; k < BVH_LANES; k++)
         bits |= (unsigned)(m[k] & 1) << k;
     return bits;
 }
@@ -766,26 +770,36 @@ static inline BvhLanes bvh_row(const BvhNode *node, int offset)
 static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, float limit,
                                           float enter[BVH_WIDTH])
 {
-    BvhLanes t0 = {0}, t1 = {0}, n, f;
+    unsigned bits = 0;
 
-    if (r->all) { /* every child in use */
-        memcpy(enter, &t0, sizeof t0);
-        return bvh_mask_bits((BvhMask)(bvh_row(node, 0) <= bvh_row(node, 3 * BVH_WIDTH)));
+    if (r->all) { /* every child in use, entered at 0 */
+        memset(enter, 0, BVH_WIDTH * sizeof *enter);
+        for (int v = 0; v < BVH_VECTORS; v++)
+            bits |= bvh_mask_bits((BvhMask)(bvh_row(node, v * BVH_LANES) <=
+                                             bvh_row(node, 3 * BVH_WIDTH + v * BVH_LANES)))
+                    << v * BVH_LANES;
+        return bits;
     }
-    t1 += limit;
-    /* Unrolled: the loop is short and the body is a few instructions. */
+    /* Unrolled: the loops are short and the body is a few instructions. */
+#pragma GCC unroll 2
+    for (int v = 0; v < BVH_VECTORS; v++) {
+        int first = v * BVH_LANES;
+        BvhLanes t0 = {0}, t1 = {0}, n, f;
+        t1 += limit;
 #pragma GCC unroll 3
-    for (int a = 0; a < 3; a++) {
-        n = (bvh_row(node, r->near[a]) - r->near_o[a]) * r->inv[a];
-        f = (bvh_row(node, r->far[a]) - r->far_o[a]) * r->inv[a];
-        t0 = bvh_max(n, t0);
-        t1 = bvh_min(f, t1);
+        for (int a = 0; a < 3; a++) {
+            n = (bvh_row(node, r->near[a] + first) - r->near_o[a]) * r->inv[a];
+            f = (bvh_row(node, r->far[a] + first) - r->far_o[a]) * r->inv[a];
+            t0 = bvh_max(n, t0);
+            t1 = bvh_min(f, t1);
+        }
+        /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
+         * least of the widened ends is the least end widened. */
+        t1 = t1 * BVH_WIDEN + BVH_TINY;
+        memcpy(enter + first, &t0, sizeof t0);
+        bits |= bvh_mask_bits((BvhMask)(t0 <= t1)) << first;
     }
-    /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
-     * least of the widened ends is the least end widened. */
-    t1 = t1 * BVH_WIDEN + BVH_TINY;
-    memcpy(enter, &t0, sizeof t0);
-    return bvh_mask_bits((BvhMask)(t0 <= t1));
+    return bits;
 }
 
 /* Returns the entry beyond which no box is entered before limit: as in
