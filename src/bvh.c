@@ -687,6 +687,22 @@ static inline int bvh_exponent(double x)
     return (int)(bits >> 52 & 0x7ff) - 1023;
 }
 
+/* Returns x in every lane (four of them: one shuffle). */
+static inline BvhLanes bvh_splat(float x)
+{
+    _Static_assert(BVH_LANES == 4, "bvh_splat() fills four lanes");
+    return (BvhLanes){x, x, x, x};
+}
+
+/* Returns x, a double, with a float's margin: x - m and x + m rounded to
+ * floats are below and above x by half a float unit or more (m is two float
+ * units of x, or a subnormal float's), and so are below and above the value
+ * x approximates to a double's precision. */
+static inline double bvh_margin(double x)
+{
+    return fabs(x) * 0x1p-22 + 0x1p-149;
+}
+
 static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 {
     BvhRay b;
@@ -709,13 +725,11 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
     ok &= b.sigma >= 0x1p-1000 && b.sigma <= 0x1p1000;
     for (int a = 0; a < 3; a++) {
         double oa = (o[a] - bvh->centre[a]) * bvh->scale, ia = inv[a] * down;
-        float lo = bvh_float_below(oa), hi = bvh_float_above(oa), f = (float)ia;
+        float lo = (float)(oa - bvh_margin(oa)), hi = (float)(oa + bvh_margin(oa));
         ok &= fabs(oa) <= BVH_FAR && (d[a] == 0 || fabs(ia) >= 1 / BVH_FAR);
-        for (int k = 0; k < BVH_LANES; k++) {
-            b.near_o[a][k] = ia > 0 ? hi : lo;
-            b.far_o[a][k] = ia > 0 ? lo : hi;
-            b.inv[a][k] = f;
-        }
+        b.near_o[a] = bvh_splat(ia > 0 ? hi : lo);
+        b.far_o[a] = bvh_splat(ia > 0 ? lo : hi);
+        b.inv[a] = bvh_splat((float)ia);
         b.near[a] = (ia < 0 ? 3 + a : a) * BVH_WIDTH;
         b.far[a] = (ia < 0 ? a : 3 + a) * BVH_WIDTH;
     }
@@ -726,7 +740,9 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 /* Returns the bound of box tests for ray parameters up to t. */
 static float bvh_limit(const BvhRay *r, double t)
 {
-    return bvh_float_above(t * r->sigma);
+    double x = t * r->sigma;
+
+    return (float)(x + bvh_margin(x));
 }
 
 /* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
