@@ -529,10 +529,15 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         bvh_free(bvh);
         return -1;
     }
-    for (size_t i = 0; i < scene->sphere_count; i++)
-        bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
-    for (size_t i = 0; i < scene->triangle_count; i++)
-        bvh_prim_box(scene, (uint32_t)i | BVH_TRIANGLE, pad, &prims[scene->sphere_count + i]);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
+#endif
+    for (size_t i = 0; i < n; i++) {
+        if (i < scene->sphere_count)
+            bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
+        else
+            bvh_prim_box(scene, (uint32_t)(i - scene->sphere_count) | BVH_TRIANGLE, pad, &prims[i]);
+    }
     bvh_frame(bvh, prims, n);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
