@@ -221,27 +221,33 @@ static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, 
 static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Material *mat,
                                     size_t entry_capacity)
 {
-    size_t first = scene->triangle_count, kept = first, cap, least;
+    size_t first = scene->triangle_count, kept = first, cap, least, i = 0;
+    size_t others = scene->sphere_count + scene->plane_count; /* listed before */
     unsigned char *made = malloc(m->tri_count);
     Triangle *tris = scene->triangles;
 
     if (!made)
         return -1;
+    /* Each in its place, ordered as if none lacked area... */
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static)
 #endif
-    for (size_t i = 0; i < m->tri_count; i++)
-        made[i] = scene_mesh_triangle(m, i, mat, &tris[first + i]) == 0;
-    for (size_t i = 0; i < m->tri_count; i++) {
+    for (size_t k = 0; k < m->tri_count; k++) {
+        made[k] = scene_mesh_triangle(m, k, mat, &tris[first + k]) == 0;
+        tris[first + k].order = (unsigned)(others + first + k);
+    }
+    /* ... then those after the first gap moved down and ordered again. */
+    while (i < m->tri_count && made[i])
+        i++;
+    for (kept = first + i; i < m->tri_count; i++) {
         if (!made[i])
             continue;
-        if (kept != first + i)
-            tris[kept] = tris[first + i];
-        tris[kept].order = (unsigned)(scene->sphere_count + scene->plane_count + kept);
-        scene->has_transparency |= tris[kept].material.transparency > 0;
+        tris[kept] = tris[first + i];
+        tris[kept].order = (unsigned)(others + kept);
         kept++;
     }
     free(made);
+    scene->has_transparency |= kept > first && mat->transparency > 0;
     scene->triangle_count = kept;
     least = entry_capacity ? entry_capacity : 16;
     for (cap = scene->triangle_capacity; cap / 2 >= kept && cap / 2 >= least;)
