@@ -450,45 +450,67 @@ static size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
     return count;
 }
 
-/* Writes the node made from binary node id, at depth, and then its
- * subtree's, into bvh's nodes from bvh->node_count on; stores the box of
- * its children's boxes in *bounds and returns its index. A leaf's box is
- * that of its primitives' padded boxes (bvh_prim_box() with pad), as the
- * build had it. */
-static uint32_t bvh_collapse(const BuildNode *nodes, uint32_t id, int depth, const Scene *scene,
-                             real pad, Bvh *bvh, Box *bounds)
+/* Writes the node made from binary node id into bvh->nodes[self] and its
+ * subtree's after it, in depth-first order (a child's subtree right after
+ * the previous child's); stores the box of its children's boxes in *bounds
+ * and the depth of its deepest node (it being at depth) in *deepest;
+ * returns how many nodes it wrote. A leaf's box is that of its primitives'
+ * padded boxes (bvh_prim_box() with pad), as the build had it. In an OpenMP
+ * parallel region, children of BVH_TASK_MIN primitives or more are made
+ * by tasks, their places counted first: the nodes are the same. */
+static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
+                           const Scene *scene, real pad, Bvh *bvh, Box *bounds, int *deepest)
 {
-    uint32_t members[BVH_WIDTH], self = (uint32_t)bvh->node_count++;
-    int m = bvh_members(nodes, id, members);
+    uint32_t members[BVH_WIDTH];
+    int m = bvh_members(nodes, id, members), deep[BVH_WIDTH];
     BvhNode *w = &bvh->nodes[self];
+    size_t next = self + 1;
+    Box box[BVH_WIDTH];
 
     memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
-    if (depth > bvh->depth)
-        bvh->depth = depth;
-    box_empty(bounds);
     for (int k = 0; k < BVH_WIDTH; k++) {
-        Box box; /* stays empty for an unused child */
-
-        box_empty(&box);
-        if (k < m && nodes[members[k]].count > 0) {
-            const BuildNode *leaf = &nodes[members[k]];
-            for (uint32_t i = leaf->index; i < leaf->index + leaf->count; i++) {
+        box_empty(&box[k]); /* stays empty for an unused child */
+        deep[k] = depth;
+    }
+    for (int k = 0; k < m; k++) {
+        const BuildNode *c = &nodes[members[k]];
+        if (c->count > 0) {
+            for (uint32_t i = c->index; i < c->index + c->count; i++) {
                 BuildPrim p;
                 bvh_prim_box(scene, bvh->prims[i], pad, &p);
-                box_grow(&box, &p.box);
+                box_grow(&box[k], &p.box);
             }
-            w->child[k] = leaf->index;
-            w->count[k] = (uint8_t)leaf->count;
-        } else if (k < m) {
-            w->child[k] = bvh_collapse(nodes, members[k], depth + 1, scene, pad, bvh, &box);
+            w->child[k] = c->index;
+            w->count[k] = (uint8_t)c->count;
+        } else if (c->size >= BVH_TASK_MIN) {
+            size_t at = next;
+            next += bvh_collapsed_count(nodes, members[k]);
+            w->child[k] = (uint32_t)at;
+#ifdef _OPENMP
+#pragma omp task firstprivate(k, at) shared(box, deep)
+#endif
+            bvh_collapse(nodes, members[k], at, depth + 1, scene, pad, bvh, &box[k], &deep[k]);
+        } else {
+            w->child[k] = (uint32_t)next;
+            next += bvh_collapse(nodes, members[k], next, depth + 1, scene, pad, bvh, &box[k],
+                                 &deep[k]);
         }
-        for (int a = 0; a < 3; a++) {
-            w->box[a][k] = bvh_float_below(((double)box.lo[a] - bvh->centre[a]) * bvh->scale);
-            w->box[3 + a][k] = bvh_float_above(((double)box.hi[a] - bvh->centre[a]) * bvh->scale);
-        }
-        box_grow(bounds, &box);
     }
-    return self;
+#ifdef _OPENMP
+#pragma omp taskwait
+#endif
+    box_empty(bounds);
+    *deepest = depth;
+    for (int k = 0; k < BVH_WIDTH; k++) {
+        for (int a = 0; a < 3; a++) {
+            w->box[a][k] = bvh_float_below(((double)box[k].lo[a] - bvh->centre[a]) * bvh->scale);
+            w->box[3 + a][k] =
+                bvh_float_above(((double)box[k].hi[a] - bvh->centre[a]) * bvh->scale);
+        }
+        box_grow(bounds, &box[k]);
+        *deepest = deep[k] > *deepest ? deep[k] : *deepest;
+    }
+    return next - self;
 }
 
 /* Sets bvh's frame: the centre of the n primitives' boxes, and the power
@@ -556,16 +578,20 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
         if (fit)
             nodes = fit;
     }
-    bvh->nodes = aligned_alloc(_Alignof(BvhNode),
-                               bvh_collapsed_count(nodes, 0) * sizeof *bvh->nodes);
+    bvh->node_count = bvh_collapsed_count(nodes, 0);
+    bvh->nodes = aligned_alloc(_Alignof(BvhNode), bvh->node_count * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
         bvh_free(bvh);
         return -1;
     }
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
+#pragma omp single
+#endif
     {
         Box all;
-        bvh_collapse(nodes, 0, 0, scene, pad, bvh, &all);
+        bvh_collapse(nodes, 0, 0, 0, scene, pad, bvh, &all, &bvh->depth);
     }
     free(nodes);
     /* The spheres' copies come last, once the binary tree is gone. */

@@ -171,11 +171,12 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
 
 static void bvh_is_the_same_built_by_one_thread_or_two(void)
 {
-    /* 40,000 spheres and their triangles: enough for the build's tasks. */
+    /* 140,000 spheres and triangles: enough for the build's tasks and the
+     * collapse's (children of 16,384 primitives or more). */
     Scene sc;
     Bvh one, two;
 
-    random_scene(&sc, 20000, 10);
+    random_scene(&sc, 65000, 10);
     CHECK_INT(0, bvh_build(&one, &sc, 1));
     CHECK_INT(0, bvh_build(&two, &sc, 2));
     CHECK(one.node_count > 1000);
