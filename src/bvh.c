@@ -66,35 +66,26 @@ static real box_half_area(const Box *b)
     return dx < 0 ? 0 : dx * dy + dy * dz + dz * dx;
 }
 
-/* Returns the float next to f, a finite float, above it (up = 1) or below
- * it (up = 0): its bits stepped. */
-static inline float bvh_float_step(float f, int up)
+/* Returns x's margin, for x a finite double: x - m and x + m rounded to
+ * floats are below and above x by half a float unit or more (m is two float
+ * units of x, or a subnormal float's), and so are below and above the value
+ * x approximates to a double's precision. */
+static inline double bvh_margin(double x)
 {
-    uint32_t bits;
-
-    if (f == 0)
-        return up ? FLT_TRUE_MIN : -FLT_TRUE_MIN;
-    memcpy(&bits, &f, sizeof bits);
-    bits += (f > 0) == (up != 0) ? 1 : (uint32_t)-1;
-    memcpy(&f, &bits, sizeof f);
-    return f;
+    return fabs(x) * 0x1p-22 + 0x1p-149;
 }
 
-/* Returns a float below x (a double) by at least half a float unit: below
- * x even when x carries a double's rounding error; infinities stay. */
+/* Returns a float below x, a double, by half a float unit or more;
+ * infinities stay. */
 static inline float bvh_float_below(double x)
 {
-    float f = (float)x;
-
-    return isinf(x) || f == -INFINITY ? f : bvh_float_step(f, 0);
+    return isinf(x) ? (float)x : (float)(x - bvh_margin(x));
 }
 
-/* Returns a float above x by at least half a float unit; infinities stay. */
+/* Returns a float above x by half a float unit or more; infinities stay. */
 static inline float bvh_float_above(double x)
 {
-    float f = (float)x;
-
-    return isinf(x) || f == INFINITY ? f : bvh_float_step(f, 1);
+    return isinf(x) ? (float)x : (float)(x + bvh_margin(x));
 }
 
 /* What the build needs of each primitive. */
@@ -725,15 +716,6 @@ static inline BvhLanes bvh_splat(float x)
     return (BvhLanes){x, x, x, x};
 }
 
-/* Returns x, a double, with a float's margin: x - m and x + m rounded to
- * floats are below and above x by half a float unit or more (m is two float
- * units of x, or a subnormal float's), and so are below and above the value
- * x approximates to a double's precision. */
-static inline double bvh_margin(double x)
-{
-    return fabs(x) * 0x1p-22 + 0x1p-149;
-}
-
 static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 {
     BvhRay b;
@@ -756,7 +738,7 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
     ok &= b.sigma >= 0x1p-1000 && b.sigma <= 0x1p1000;
     for (int a = 0; a < 3; a++) {
         double oa = (o[a] - bvh->centre[a]) * bvh->scale, ia = inv[a] * down;
-        float lo = (float)(oa - bvh_margin(oa)), hi = (float)(oa + bvh_margin(oa));
+        float lo = bvh_float_below(oa), hi = bvh_float_above(oa);
         ok &= fabs(oa) <= BVH_FAR && (d[a] == 0 || fabs(ia) >= 1 / BVH_FAR);
         b.near_o[a] = bvh_splat(ia > 0 ? hi : lo);
         b.far_o[a] = bvh_splat(ia > 0 ? lo : hi);
@@ -771,9 +753,7 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 /* Returns the bound of box tests for ray parameters up to t. */
 static float bvh_limit(const BvhRay *r, double t)
 {
-    double x = t * r->sigma;
-
-    return (float)(x + bvh_margin(x));
+    return bvh_float_above(t * r->sigma);
 }
 
 /* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
