@@ -661,13 +661,15 @@ enum { BVH_LANES = 4, BVH_VECTORS = BVH_WIDTH / BVH_LANES };
  *   other: distances from the true origin lie between.
  * - The reciprocal directions are rounded once from doubles: a slab
  *   distance (b - o) * inv is then within a relative 3 u (u = 2^-24: the
- *   subtraction, the reciprocal and the product) plus 2^-150 (a product in
- *   the subnormal range) of its value from that origin.
+ *   subtraction, the reciprocal and the product; the double reciprocal's
+ *   2^-53 and second-order terms are left to the margin below) plus
+ *   2^-150 (a product in the subnormal range) of its value from that
+ *   origin.
  * - So the computed entry t0 is at most T(1 + 3u) + 2^-150 and the computed
  *   exit at least T'(1 - 3u) - 2^-150 where the true T <= T'; widening the
- *   exit by BVH_WIDEN = 1 + 8u (1 + 7u after its own rounding) and adding
- *   BVH_TINY = 2^-140 keeps t0 <= t1 (pbrt-v3, 3.9.2, makes the same
- *   argument in one precision).
+ *   exit by BVH_WIDEN = 1 + 8u (1 + 7u after its own rounding, more than
+ *   the 1 + 6u + O(u^2) needed) and adding BVH_TINY = 2^-140 keeps
+ *   t0 <= t1 (pbrt-v3, 3.9.2, makes the same argument in one precision).
  * - tmax is rounded up (bvh_limit()).
  * Rays that would leave floats' range (an origin 2^100 beyond the scene's
  * size, or direction components 2^100 apart: a component that small is
