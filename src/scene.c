@@ -213,6 +213,24 @@ static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, 
     return 0;
 }
 
+/* Gives back the room for triangles beyond capacity cap (at least the
+ * triangles held; 0 frees it). */
+static void scene_triangles_fit(Scene *scene, size_t cap)
+{
+    Triangle *fit;
+
+    if (cap >= scene->triangle_capacity)
+        return;
+    if (cap == 0) {
+        free(scene->triangles);
+        scene->triangles = NULL;
+        scene->triangle_capacity = 0;
+    } else if ((fit = realloc(scene->triangles, cap * sizeof *fit)) != NULL) {
+        scene->triangles = fit;
+        scene->triangle_capacity = cap;
+    }
+}
+
 /* Adds mesh m's triangles, made on every thread, into the room made for
  * all of them, then closes the gaps of those without area and gives back
  * the room they took (the capacity is then the one that adding them one by
@@ -254,15 +272,7 @@ static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Materi
         cap /= 2;
     if (kept == 0 && entry_capacity == 0)
         cap = 0;
-    if (cap < scene->triangle_capacity) {
-        Triangle *fit = cap ? realloc(scene->triangles, cap * sizeof *fit) : NULL;
-        if (cap == 0)
-            free(scene->triangles);
-        if (fit || cap == 0) {
-            scene->triangles = fit;
-            scene->triangle_capacity = cap;
-        }
-    }
+    scene_triangles_fit(scene, cap);
     return (long)(kept - first);
 }
 
@@ -287,6 +297,7 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
         if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, mat, entry)) >= 0)
             return added;
         added = 0;
+        scene_triangles_fit(scene, entry); /* as it was: one by one decides */
     }
     for (size_t i = 0; i < m->tri_count; i++) {
         Triangle tri;

@@ -372,6 +372,27 @@ static void mesh_made_alike_on_every_thread(void)
     CHECK_INT(4089, two.triangles[4089].order);
     scene_free(&one);
     scene_free(&two);
+    /* 5,000 faces, 10 with area, under a memory limit with room for 5,000
+     * triangles but not for the 8,192 that making them all at once would
+     * reserve: one by one, as on one thread, to the same 16. */
+    f = fopen("build/big.obj", "wb");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\n", f);
+    for (int i = 0; i < 5000; i++)
+        fputs(i % 500 == 0 ? "f 1 2 3\n" : "f 1 1 2\n", f);
+    fclose(f);
+    threads_use(1);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 2200000, &one, &err));
+    threads_use(2);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 2200000, &two, &err));
+    threads_use(before);
+    CHECK_INT(10, (long long)two.triangle_count);
+    CHECK_INT(16, (long long)one.triangle_capacity);
+    CHECK_INT(16, (long long)two.triangle_capacity);
+    scene_free(&one);
+    scene_free(&two);
 }
 
 const TestCase obj_tests[] = {
