@@ -306,6 +306,36 @@ static int same_triangle(const Triangle *a, const Triangle *b)
            a->material.colour.g == b->material.colour.g;
 }
 
+/* Reads scene text on one thread into *one and on two into *two, under
+ * memory_limit (bytes, 0: none). */
+static void parse_on_both(const char *text, size_t memory_limit, Scene *one, Scene *two)
+{
+    int before = threads_count();
+    Error err;
+
+    threads_use(1);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), memory_limit, one, &err));
+    threads_use(2);
+    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), memory_limit, two, &err));
+    threads_use(before);
+}
+
+/* Writes build/big.obj: a triangle's three vertices and n faces, the i-th
+ * `odd` when i % k == j, else `usual`. Returns 0, or -1. */
+static int write_faces(int n, int k, int j, const char *odd, const char *usual)
+{
+    FILE *f = fopen("build/big.obj", "wb");
+
+    CHECK(f != NULL);
+    if (!f)
+        return -1;
+    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\n", f);
+    for (int i = 0; i < n; i++)
+        fputs(i % k == j ? odd : usual, f);
+    fclose(f);
+    return 0;
+}
+
 /* A large mesh's triangles are made alike on one thread and on two, those
  * without area left out, in the same order and the same room. */
 static void mesh_made_alike_on_every_thread(void)
@@ -313,11 +343,11 @@ static void mesh_made_alike_on_every_thread(void)
     const char *text = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n4\n0 0 0\n0 5 0 255 255 255\n"
                        "sphere: 0 0 9 1 1 2 3 0\nmesh: big.obj 10 20 30 0.5\n"
                        "mesh: big.obj 10 20 30 0.5\n";
+    const char *mesh = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n4\n0 0 0\n0 5 0 255 255 255\n"
+                       "mesh: big.obj 10 20 30 0.5\n";
     size_t cap = 4 << 20, len;
     char *obj = malloc(cap);
-    int before = threads_count();
     Scene one, two;
-    Error err;
     FILE *f = fopen("build/big.obj", "wb");
 
     CHECK(obj && f);
@@ -331,11 +361,7 @@ static void mesh_made_alike_on_every_thread(void)
     fwrite(obj, 1, len, f);
     fclose(f);
     free(obj);
-    threads_use(1);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &one, &err));
-    threads_use(2);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &two, &err));
-    threads_use(before);
+    parse_on_both(text, 0, &one, &two);
     CHECK_INT((long long)one.triangle_count, (long long)two.triangle_count);
     CHECK_INT((long long)one.triangle_capacity, (long long)two.triangle_capacity);
     CHECK(one.triangle_count > 8192 && one.triangle_count % 2 == 0);
@@ -350,49 +376,30 @@ static void mesh_made_alike_on_every_thread(void)
     scene_free(&one);
     scene_free(&two);
     /* 4,100 faces of which 10 have no area: room is made for 8,192, then
-     * given back to the 4,096 that adding them one by one takes. */
-    f = fopen("build/big.obj", "wb");
-    CHECK(f != NULL);
-    if (!f)
-        return;
-    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\n", f);
-    for (int i = 0; i < 4100; i++)
-        fputs(i % 410 == 7 ? "f 1 1 2\n" : "f 1 2 3\n", f);
-    fclose(f);
-    text = "0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n4\n0 0 0\n0 5 0 255 255 255\n"
-           "mesh: big.obj 10 20 30 0.5\n";
-    threads_use(1);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &one, &err));
-    threads_use(2);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &two, &err));
-    threads_use(before);
-    CHECK_INT(4090, (long long)two.triangle_count);
-    CHECK_INT(4096, (long long)one.triangle_capacity);
-    CHECK_INT(4096, (long long)two.triangle_capacity);
-    CHECK_INT(4089, two.triangles[4089].order);
-    scene_free(&one);
-    scene_free(&two);
-    /* 5,000 faces, 10 with area, under a memory limit with room for 5,000
+     * given back to the 4,096 that adding them one by one takes. 5,000
+     * faces, 10 with area, under a memory limit with room for 5,000
      * triangles but not for the 8,192 that making them all at once would
      * reserve: one by one, as on one thread, to the same 16. */
-    f = fopen("build/big.obj", "wb");
-    CHECK(f != NULL);
-    if (!f)
-        return;
-    fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\n", f);
-    for (int i = 0; i < 5000; i++)
-        fputs(i % 500 == 0 ? "f 1 2 3\n" : "f 1 1 2\n", f);
-    fclose(f);
-    threads_use(1);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 2200000, &one, &err));
-    threads_use(2);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 2200000, &two, &err));
-    threads_use(before);
-    CHECK_INT(10, (long long)two.triangle_count);
-    CHECK_INT(16, (long long)one.triangle_capacity);
-    CHECK_INT(16, (long long)two.triangle_capacity);
-    scene_free(&one);
-    scene_free(&two);
+    static const struct {
+        int faces, every, at;
+        const char *odd, *usual;
+        size_t memory_limit;
+        long long count, capacity;
+    } cases[] = {{4100, 410, 7, "f 1 1 2\n", "f 1 2 3\n", 0, 4090, 4096},
+                 {5000, 500, 0, "f 1 2 3\n", "f 1 1 2\n", 2200000, 10, 16}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        if (write_faces(cases[c].faces, cases[c].every, cases[c].at, cases[c].odd,
+                        cases[c].usual) != 0)
+            return;
+        parse_on_both(mesh, cases[c].memory_limit, &one, &two);
+        CHECK_INT(cases[c].count, (long long)two.triangle_count);
+        CHECK_INT(cases[c].capacity, (long long)one.triangle_capacity);
+        CHECK_INT(cases[c].capacity, (long long)two.triangle_capacity);
+        if (two.triangle_count > 0)
+            CHECK_INT(cases[c].count - 1, two.triangles[two.triangle_count - 1].order);
+        scene_free(&one);
+        scene_free(&two);
+    }
 }
 
 const TestCase obj_tests[] = {
