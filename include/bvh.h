@@ -56,7 +56,7 @@ typedef struct Bvh {
     int depth;           /* deepest node, the root at 0 */
     double centre[3];    /* the frame: a node's box coordinate is that of */
     double scale;        /* the scene less centre, times scale (a power of
-                            two that brings the scene within about +-2) */
+                            two that brings the scene within +-4) */
 } Bvh;
 
 /* Builds the hierarchy of scene's spheres and triangles into *bvh in

@@ -166,29 +166,33 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, real pad, BuildPrim *
 }
 
 /* Orders prims[lo..hi) so that the k-th smallest centroid on axis is at k,
- * smaller ones before it and larger after (quickselect). */
+ * smaller ones before it and larger after (quickselect; each pass splits the
+ * range three ways about the middle one's centroid, so the part equal to it
+ * is never empty and every pass shrinks the range). */
 static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
 {
     while (hi - lo > 1) {
         real pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
-        size_t i = lo, j = hi - 1;
-        for (;;) {
-            while (bvh_centroid(&prims[i], axis) < pivot)
-                i++;
-            while (bvh_centroid(&prims[j], axis) > pivot)
-                j--;
-            if (i >= j)
-                break;
+        size_t less = lo, i = lo, more = hi; /* [lo, less) < pivot, [more, hi) > */
+        while (i < more) {
+            real c = bvh_centroid(&prims[i], axis);
             BuildPrim tmp = prims[i];
-            prims[i] = prims[j];
-            prims[j] = tmp;
-            i++;
-            j--;
+            if (c < pivot) {
+                prims[i++] = prims[less];
+                prims[less++] = tmp;
+            } else if (c > pivot) {
+                prims[i] = prims[--more];
+                prims[more] = tmp;
+            } else {
+                i++;
+            }
         }
-        if (k <= j)
-            hi = j + 1;
+        if (k < less)
+            hi = less;
+        else if (k >= more)
+            lo = more;
         else
-            lo = j + 1;
+            return;
     }
 }
 
@@ -504,9 +508,13 @@ static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int
     return next - self;
 }
 
-/* Sets bvh's frame: the centre of the n primitives' boxes, and the power
- * of two that brings their half-extent within [1, 2) (within 2^+-1000). */
-static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
+/* Sets bvh's frame: on each axis the median of the n primitives' centroids
+ * (reordering prims), as the boxes' rounding margins grow with their
+ * distance from it and most boxes are near it (the centre of all the boxes
+ * would sit 10^5 away from spheres of radius 0.1 beside a floor sphere of
+ * radius 10^5); and the power of two that brings the boxes' half-extent
+ * within [1, 2) (within 2^+-1000). */
+static void bvh_frame(Bvh *bvh, BuildPrim *prims, size_t n)
 {
     Box all;
     double half = 0;
@@ -515,7 +523,8 @@ static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
     for (size_t i = 0; i < n; i++)
         box_grow(&all, &prims[i].box);
     for (int a = 0; a < 3; a++) {
-        bvh->centre[a] = 0.5 * (double)all.lo[a] + 0.5 * (double)all.hi[a];
+        bvh_select(prims, 0, n, n / 2, a);
+        bvh->centre[a] = bvh_centroid(&prims[n / 2], a);
         half = fmax(half, 0.5 * (double)all.hi[a] - 0.5 * (double)all.lo[a]);
     }
     bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;

@@ -169,6 +169,76 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
     scene_free(&sc);
 }
 
+/* Returns 1 when bvh, built from sc, holds each primitive once in nested
+ * boxes (check_subtree()). */
+static int bvh_holds_each_once(const Bvh *bvh, const Scene *sc)
+{
+    size_t n = sc->sphere_count + sc->triangle_count;
+    unsigned char *seen = calloc(n, 1);
+    int bad = 0;
+
+    check_subtree(bvh, sc, 0, 0, seen, &bad);
+    for (size_t i = 0; i < n; i++)
+        bad += seen[i] != 1;
+    free(seen);
+    return bad == 0;
+}
+
+static void bvh_frame_sits_at_the_median(void)
+{
+    /* Up to 6 spheres with centres at x = 0, 1 or 2, in every order (the
+     * selection finds the median of equal and unequal keys in any order);
+     * then 1,000 small spheres beside a floor sphere of radius 10^5: the
+     * frame is among them, not 10^5 away at the centre of all the boxes. */
+    Light light = light_point(vec3(0, 10, 0), colour(255, 255, 255));
+    int bad = 0, scenes = 0;
+
+    for (int n = 1; n <= 6; n++) {
+        int ways = 1;
+        for (int k = 0; k < n; k++)
+            ways *= 3;
+        for (int w = 0; w < ways; w++) {
+            Scene sc;
+            Bvh bvh;
+            int count[3] = {0}, v = w, median;
+            scene_init(&sc);
+            CHECK_INT(0, scene_add_light(&sc, &light));
+            for (int k = 0; k < n; k++, v /= 3) {
+                Sphere s = {{v % 3, 0, 0}, 0.25, material_plain(colour(1, 1, 1), 0), 0};
+                CHECK_INT(0, scene_add_sphere(&sc, &s));
+                count[v % 3]++;
+            }
+            median = n / 2 < count[0] ? 0 : n / 2 < count[0] + count[1] ? 1 : 2;
+            CHECK_INT(0, bvh_build(&bvh, &sc, 1));
+            bad += bvh.centre[0] != median || !bvh_holds_each_once(&bvh, &sc);
+            scenes++;
+            bvh_free(&bvh);
+            scene_free(&sc);
+        }
+    }
+    CHECK_INT(1092, scenes);
+    CHECK_INT(0, bad);
+    {
+        Scene sc;
+        Bvh bvh;
+        Sphere floor = {{0, -1e5, 0}, 1e5, material_plain(colour(1, 1, 1), 0), 0};
+        scene_init(&sc);
+        CHECK_INT(0, scene_add_light(&sc, &light));
+        CHECK_INT(0, scene_add_sphere(&sc, &floor));
+        for (int i = 0; i < 1000; i++) {
+            Sphere s = {{rng_range(-10, 10), rng_range(0, 10), rng_range(0, 10)}, 0.1,
+                        material_plain(colour(1, 1, 1), 0), 0};
+            CHECK_INT(0, scene_add_sphere(&sc, &s));
+        }
+        CHECK_INT(0, bvh_build(&bvh, &sc, 1));
+        CHECK(fabs(bvh.centre[0]) < 2 && fabs(bvh.centre[1] - 5) < 2 &&
+              fabs(bvh.centre[2] - 5) < 2);
+        CHECK(bvh_holds_each_once(&bvh, &sc));
+        bvh_free(&bvh);
+        scene_free(&sc);
+    }
+}
+
 static void bvh_is_the_same_built_by_one_thread_or_two(void)
 {
     /* 140,000 spheres and triangles: enough for the build's tasks and the
@@ -298,6 +368,7 @@ const TestCase bvh_tests[] = {
     {"bvh_holds_every_primitive_once_in_nested_boxes",
      bvh_holds_every_primitive_once_in_nested_boxes},
     {"bvh_stays_shallow_on_degenerate_scenes", bvh_stays_shallow_on_degenerate_scenes},
+    {"bvh_frame_sits_at_the_median", bvh_frame_sits_at_the_median},
     {"bvh_is_the_same_built_by_one_thread_or_two", bvh_is_the_same_built_by_one_thread_or_two},
     {"bvh_queries_equal_the_loops", bvh_queries_equal_the_loops},
     {"bvh_queries_equal_the_loops_at_the_extremes", bvh_queries_equal_the_loops_at_the_extremes},
