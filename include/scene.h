@@ -71,6 +71,10 @@ typedef struct Scene {
     Triangle *triangles;    /* file order; NULL when there are none */
     size_t triangle_count;
     size_t triangle_capacity;
+    TriangleShading *shading; /* the triangles' that have texture
+                               coordinates or vertex normals */
+    size_t shading_count;
+    size_t shading_capacity;
     Texture *textures;      /* one per distinct texture file */
     size_t texture_count;
     size_t texture_capacity;
@@ -107,7 +111,8 @@ void scene_init(Scene *scene);
 void scene_free(Scene *scene);
 
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
- * position among the scene's objects; returns 0, or -1 when memory runs
+ * position among the scene's objects (and a triangle no shading:
+ * scene_shade_triangle() gives it some); returns 0, or -1 when memory runs
  * out or SCENE_OVER_LIMIT when it would pass the memory limit, the scene
  * unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
@@ -115,12 +120,25 @@ int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t);
 
+/* Gives triangle i the shading *sh (in an entry of the scene's shading of
+ * its own); returns 0, -1 when memory runs out or SCENE_OVER_LIMIT, the
+ * triangle unchanged. */
+int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh);
+
+/* Returns tri's shading, a triangle of scene, or NULL when it is plain. */
+static inline const TriangleShading *scene_shading_of(const Scene *scene, const Triangle *tri)
+{
+    return tri->shading == TRIANGLE_PLAIN ? NULL : &scene->shading[tri->shading];
+}
+
 /* Appends the triangles of OBJ mesh m with material mat, smooth where all
  * three corners have a non-zero normal, with the texture coordinates of
- * their corners when all three have some; triangles without area are left
- * out. Returns how many it added, -1 when memory runs out (those added
- * stay), or SCENE_OVER_LIMIT (none added) when the triangles and the mesh
- * together would pass the memory limit. */
+ * their corners when all three have some (every triangle of a mesh with
+ * normals or texture coordinates has a shading entry; of one without,
+ * none); triangles without area are left out. Returns how many it added,
+ * -1 when memory runs out (those added stay), or SCENE_OVER_LIMIT (none
+ * added) when the triangles and the mesh together would pass the memory
+ * limit. */
 long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
 
 /* Appends *m, taking ownership of its name (freed on failure); returns its

@@ -19,21 +19,33 @@
 #include "ray.h"
 #include "vec3.h"
 
+/* What a triangle's surface holds beyond its plane, kept apart (in the
+ * scene's shading array) for the triangles that have it: a plain one has
+ * the default texture coordinates and is flat. */
 typedef struct {
-    Vec3 v[3];         /* vertices, scene units */
-    Vec3 normal;       /* unit (v1 - v0) x (v2 - v0): the front */
     double uv[3][2];   /* texture coordinates of the vertices */
     Vec3 vn[3];        /* unit vertex normals, when smooth */
     int smooth;        /* 1: shade with the normal interpolated from vn */
+} TriangleShading;
+
+#define TRIANGLE_PLAIN 0xffffffffu /* a triangle's shading when it has none */
+
+typedef struct {
+    Vec3 v[3];         /* vertices, scene units */
+    Vec3 normal;       /* unit (v1 - v0) x (v2 - v0): the front */
     unsigned swapped;  /* bit k: edge k's vertices are taken in reverse */
+    unsigned shading;  /* index in the scene's shading, or TRIANGLE_PLAIN */
     Material material; /* what the surface looks like */
     unsigned order;    /* position among the scene's objects, for ties */
 } Triangle;
 
-/* Makes the triangle v0 v1 v2 with material m and the default texture
- * coordinates (0, 0), (1, 0), (0, 1); returns -1 when its vertices are on
- * one line (no area, no normal), else 0. */
+/* Makes the triangle v0 v1 v2 with material m, plain; returns -1 when its
+ * vertices are on one line (no area, no normal), else 0. */
 int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m);
+
+/* Returns a plain triangle's shading: texture coordinates (0, 0), (1, 0),
+ * (0, 1) and its normal at every vertex, flat. */
+TriangleShading triangle_plain_shading(const Triangle *tri);
 
 /* Finds where the ray crosses the triangle with tmin < t < tmax; returns 1
  * and stores t, or returns 0. */
@@ -42,8 +54,9 @@ int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax
 /* Returns the point where the ray meets the triangle's plane, computed from
  * its barycentric coordinates, with the normal (and, on a smooth triangle,
  * the shading normal interpolated from the vertex normals) and error bound;
- * stores in uv the interpolated texture coordinates. The ray must cross the
- * triangle. */
-SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[2]);
+ * stores in uv the interpolated texture coordinates. sh is the triangle's
+ * shading, NULL for a plain one. The ray must cross the triangle. */
+SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh, const Ray *ray,
+                                 double uv[2]);
 
 #endif

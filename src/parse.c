@@ -603,11 +603,17 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
     }
     if (P->last_kind == PARSE_SHAPE_PLANE && n == 1)
         scene->planes[P->last_index].tile = v[0];
-    if (P->last_kind == PARSE_SHAPE_TRIANGLE && n == 6)
+    if (P->last_kind == PARSE_SHAPE_TRIANGLE && n == 6) {
+        TriangleShading sh = triangle_plain_shading(&scene->triangles[P->last_index]);
+        int rc;
         for (int k = 0; k < 3; k++) {
-            scene->triangles[P->last_index].uv[k][0] = v[2 * k];
-            scene->triangles[P->last_index].uv[k][1] = v[2 * k + 1];
+            sh.uv[k][0] = v[2 * k];
+            sh.uv[k][1] = v[2 * k + 1];
         }
+        rc = scene_shade_triangle(scene, P->last_index, &sh);
+        if (rc != 0)
+            return parse_fail_memory(P, rec, scene, rc);
+    }
     return 0;
 }
 

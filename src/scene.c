@@ -48,6 +48,7 @@ void scene_free(Scene *scene)
     free(scene->spheres);
     free(scene->planes);
     free(scene->triangles);
+    free(scene->shading);
     scene_init(scene);
 }
 
@@ -65,6 +66,7 @@ size_t scene_memory(const Scene *scene)
     scene_sum(&m, scene->sphere_capacity * sizeof *scene->spheres);
     scene_sum(&m, scene->plane_capacity * sizeof *scene->planes);
     scene_sum(&m, scene->triangle_capacity * sizeof *scene->triangles);
+    scene_sum(&m, scene->shading_capacity * sizeof *scene->shading);
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
     scene_sum(&m, scene->phong_capacity * sizeof *scene->phong);
     scene_sum(&m, scene->mesh_capacity * sizeof *scene->meshes);
@@ -179,70 +181,108 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
         return rc;
     scene->triangles[scene->triangle_count] = *t;
     scene->triangles[scene->triangle_count].order = (unsigned)scene_object_count(scene);
+    scene->triangles[scene->triangle_count].shading = TRIANGLE_PLAIN;
     scene->triangle_count++;
     scene->has_transparency |= t->material.transparency > 0;
     return 0;
 }
 
-/* Makes mesh m's triangle i with material mat into *tri: smooth when its
- * corners have normals (unless one is zero), textured when they have
- * texture coordinates; returns -1 when it has no area, else 0. */
-static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, Triangle *tri)
+int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh)
+{
+    Triangle *tri = &scene->triangles[i];
+    int rc;
+
+    if (tri->shading != TRIANGLE_PLAIN) {
+        scene->shading[tri->shading] = *sh;
+        return 0;
+    }
+    rc = scene_reserve(scene, (void **)&scene->shading, &scene->shading_capacity,
+                       scene->shading_count, sizeof *sh);
+    if (rc != 0)
+        return rc;
+    scene->shading[scene->shading_count] = *sh;
+    tri->shading = (unsigned)scene->shading_count++;
+    return 0;
+}
+
+/* Makes mesh m's triangle i with material mat into *tri, and its shading
+ * into *sh unless sh is NULL: smooth when its corners have normals (unless
+ * one is zero), textured when they have texture coordinates; returns -1
+ * when it has no area, else 0. */
+static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, Triangle *tri,
+                               TriangleShading *sh)
 {
     const ObjCorner *c = m->tri[i];
 
     if (triangle_make(tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
         return -1;
+    if (!sh)
+        return 0;
+    *sh = triangle_plain_shading(tri);
     if (c[0].vn >= 0 && c[1].vn >= 0 && c[2].vn >= 0) {
-        tri->smooth = 1;
+        sh->smooth = 1;
         for (int k = 0; k < 3; k++) {
             Vec3 vn = m->vn[c[k].vn];
             if (!(vec3_length(vn) > 0))
-                tri->smooth = 0;
+                sh->smooth = 0;
             else
-                tri->vn[k] = vec3_normalize(vn);
+                sh->vn[k] = vec3_normalize(vn);
         }
-        if (!tri->smooth)
-            tri->vn[0] = tri->vn[1] = tri->vn[2] = tri->normal;
+        if (!sh->smooth)
+            sh->vn[0] = sh->vn[1] = sh->vn[2] = tri->normal;
     }
     if (c[0].vt >= 0 && c[1].vt >= 0 && c[2].vt >= 0)
         for (int k = 0; k < 3; k++) {
-            tri->uv[k][0] = m->vt[c[k].vt][0];
-            tri->uv[k][1] = m->vt[c[k].vt][1];
+            sh->uv[k][0] = m->vt[c[k].vt][0];
+            sh->uv[k][1] = m->vt[c[k].vt][1];
         }
     return 0;
 }
 
-/* Gives back the room for triangles beyond capacity cap (at least the
- * triangles held; 0 frees it). */
-static void scene_triangles_fit(Scene *scene, size_t cap)
+/* Gives back the room for items beyond capacity cap, of an array of items
+ * of size bytes (cap at least the items held; 0 frees it). */
+static void scene_fit(void **items, size_t *capacity, size_t cap, size_t size)
 {
-    Triangle *fit;
+    void *fit;
 
-    if (cap >= scene->triangle_capacity)
+    if (cap >= *capacity)
         return;
     if (cap == 0) {
-        free(scene->triangles);
-        scene->triangles = NULL;
-        scene->triangle_capacity = 0;
-    } else if ((fit = realloc(scene->triangles, cap * sizeof *fit)) != NULL) {
-        scene->triangles = fit;
-        scene->triangle_capacity = cap;
+        free(*items);
+        *items = NULL;
+        *capacity = 0;
+    } else if ((fit = realloc(*items, cap * size)) != NULL) {
+        *items = fit;
+        *capacity = cap;
     }
 }
 
-/* Adds mesh m's triangles, made on every thread, into the room made for
- * all of them, then closes the gaps of those without area and gives back
- * the room they took (the capacity is then the one that adding them one by
- * one from entry_capacity makes); returns the number added, or -1 when
- * memory for the marks runs out (nothing added). */
-static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Material *mat,
-                                    size_t entry_capacity)
+/* Returns the capacity that adding count items one by one from capacity
+ * entry makes, given capacity cap >= it reached by doubling. */
+static size_t scene_fit_capacity(size_t cap, size_t count, size_t entry)
 {
-    size_t first = scene->triangle_count, kept = first, cap, least, i = 0;
+    size_t least = entry ? entry : 16;
+
+    while (cap / 2 >= count && cap / 2 >= least)
+        cap /= 2;
+    return count == 0 && entry == 0 ? 0 : cap;
+}
+
+/* Adds mesh m's triangles (with their shading when shaded), made on every
+ * thread, into the room made for all of them, then closes the gaps of those
+ * without area and gives back the room they took (the capacities are then
+ * those that adding them one by one from the entry capacities makes);
+ * returns the number added, or -1 when memory for the marks runs out
+ * (nothing added). */
+static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Material *mat,
+                                    int shaded, size_t entry_tris, size_t entry_shading)
+{
+    size_t first = scene->triangle_count, kept = first, i = 0;
     size_t others = scene->sphere_count + scene->plane_count; /* listed before */
+    size_t shade = scene->shading_count;                        /* shading of first */
     unsigned char *made = malloc(m->tri_count);
     Triangle *tris = scene->triangles;
+    TriangleShading *sh = scene->shading;
 
     if (!made)
         return -1;
@@ -251,8 +291,11 @@ static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Materi
 #pragma omp parallel for schedule(static)
 #endif
     for (size_t k = 0; k < m->tri_count; k++) {
-        made[k] = scene_mesh_triangle(m, k, mat, &tris[first + k]) == 0;
+        made[k] = scene_mesh_triangle(m, k, mat, &tris[first + k], shaded ? &sh[shade + k] : NULL) ==
+                  0;
         tris[first + k].order = (unsigned)(others + first + k);
+        if (shaded)
+            tris[first + k].shading = (unsigned)(shade + k);
     }
     /* ... then those after the first gap moved down and ordered again. */
     while (i < m->tri_count && made[i])
@@ -262,49 +305,79 @@ static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Materi
             continue;
         tris[kept] = tris[first + i];
         tris[kept].order = (unsigned)(others + kept);
+        if (shaded) {
+            sh[shade + kept - first] = sh[shade + i];
+            tris[kept].shading = (unsigned)(shade + kept - first);
+        }
         kept++;
     }
     free(made);
     scene->has_transparency |= kept > first && mat->transparency > 0;
     scene->triangle_count = kept;
-    least = entry_capacity ? entry_capacity : 16;
-    for (cap = scene->triangle_capacity; cap / 2 >= kept && cap / 2 >= least;)
-        cap /= 2;
-    if (kept == 0 && entry_capacity == 0)
-        cap = 0;
-    scene_triangles_fit(scene, cap);
+    scene_fit((void **)&scene->triangles, &scene->triangle_capacity,
+              scene_fit_capacity(scene->triangle_capacity, kept, entry_tris), sizeof *tris);
+    if (shaded) {
+        scene->shading_count = shade + kept - first;
+        scene_fit((void **)&scene->shading, &scene->shading_capacity,
+                  scene_fit_capacity(scene->shading_capacity, scene->shading_count, entry_shading),
+                  sizeof *sh);
+    }
     return (long)(kept - first);
+}
+
+/* Grows *items (of size bytes each, *capacity of them) by doubling, as
+ * adding items one by one would, until it holds need; returns 0 or what
+ * scene_reserve() returned. */
+static int scene_reserve_all(const Scene *scene, void **items, size_t *capacity, size_t need,
+                             size_t size)
+{
+    int rc = 0;
+
+    while (rc == 0 && *capacity < need)
+        rc = scene_reserve(scene, items, capacity, *capacity, size);
+    return rc;
 }
 
 long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 {
     long added = 0;
     size_t left = scene_memory_left(scene), held = obj_memory(m);
+    int shaded = m->vn_count > 0 || m->vt_count > 0;
+    size_t each = sizeof *scene->triangles + (shaded ? sizeof *scene->shading : 0);
 
     /* The mesh's triangles must fit beside the mesh itself. */
-    if (scene->memory_limit &&
-        (held > left || m->tri_count > (left - held) / sizeof *scene->triangles))
+    if (scene->memory_limit && (held > left || m->tri_count > (left - held) / each))
         return SCENE_OVER_LIMIT;
     /* A large mesh is made on every thread when there is room for all its
      * triangles as adding them one by one would make it; else (or when
      * that fails) one by one, which says what went wrong. */
     if (m->tri_count >= SCENE_PARALLEL_MIN && threads_count() > 1) {
-        size_t need = scene->triangle_count + m->tri_count, entry = scene->triangle_capacity;
-        int rc = 0;
-        while (rc == 0 && scene->triangle_capacity < need)
-            rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
-                               scene->triangle_capacity, sizeof *scene->triangles);
-        if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, mat, entry)) >= 0)
+        size_t entry_tris = scene->triangle_capacity, entry_shading = scene->shading_capacity;
+        int rc = scene_reserve_all(scene, (void **)&scene->triangles, &scene->triangle_capacity,
+                                   scene->triangle_count + m->tri_count, sizeof *scene->triangles);
+        if (rc == 0 && shaded)
+            rc = scene_reserve_all(scene, (void **)&scene->shading, &scene->shading_capacity,
+                                   scene->shading_count + m->tri_count, sizeof *scene->shading);
+        if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, mat, shaded, entry_tris,
+                                                        entry_shading)) >= 0)
             return added;
         added = 0;
-        scene_triangles_fit(scene, entry); /* as it was: one by one decides */
+        /* As it was: one by one decides. */
+        scene_fit((void **)&scene->triangles, &scene->triangle_capacity, entry_tris,
+                  sizeof *scene->triangles);
+        scene_fit((void **)&scene->shading, &scene->shading_capacity, entry_shading,
+                  sizeof *scene->shading);
     }
     for (size_t i = 0; i < m->tri_count; i++) {
         Triangle tri;
+        TriangleShading sh;
         int rc;
-        if (scene_mesh_triangle(m, i, mat, &tri) != 0)
+        if (scene_mesh_triangle(m, i, mat, &tri, shaded ? &sh : NULL) != 0)
             continue;
         rc = scene_add_triangle(scene, &tri);
+        if (rc == 0 && shaded && (rc = scene_shade_triangle(scene, scene->triangle_count - 1,
+                                                            &sh)) != 0)
+            scene->triangle_count--;
         if (rc != 0)
             return rc;
         added++;

@@ -237,7 +237,7 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
     }
     default: {
         const Triangle *tri = &scene->triangles[hit->index];
-        sh.sp = triangle_surface_at(tri, ray, uv);
+        sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
         sh.material = &tri->material;
         break;
     }

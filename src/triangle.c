@@ -45,19 +45,22 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
     tri->v[1] = v1;
     tri->v[2] = v2;
     tri->normal = vec3_normalize(n);
-    tri->uv[0][0] = 0, tri->uv[0][1] = 0;
-    tri->uv[1][0] = 1, tri->uv[1][1] = 0;
-    tri->uv[2][0] = 0, tri->uv[2][1] = 1;
     /* Edge k joins the two vertices other than k, from k+1 to k+2. */
     tri->swapped = 0;
     for (unsigned k = 0; k < 3; k++)
         if (triangle_vertex_before(tri->v[(k + 2) % 3], tri->v[(k + 1) % 3]))
             tri->swapped |= 1u << k;
-    tri->smooth = 0;
-    tri->vn[0] = tri->vn[1] = tri->vn[2] = tri->normal;
+    tri->shading = TRIANGLE_PLAIN;
     tri->material = m;
     tri->order = 0;
     return 0;
+}
+
+TriangleShading triangle_plain_shading(const Triangle *tri)
+{
+    TriangleShading sh = {{{0, 0}, {1, 0}, {0, 1}}, {tri->normal, tri->normal, tri->normal}, 0};
+
+    return sh;
 }
 
 /* Returns d . (p x q), the weight of the vertex opposite an edge whose
@@ -109,8 +112,10 @@ int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax
     return 1;
 }
 
-SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[2])
+SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh, const Ray *ray,
+                                 double uv[2])
 {
+    TriangleShading plain;
     SurfacePoint sp;
     real w[3], b[3], det, u = REAL_EPSILON / 2;
     real g = TRIANGLE_ERROR_ULPS * u / (1 - TRIANGLE_ERROR_ULPS * u);
@@ -123,9 +128,13 @@ SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[
                         vec3_scale(tri->v[2], b[2]));
     sp.normal = tri->normal;
     sp.shading = tri->normal;
-    if (tri->smooth) {
-        Vec3 ns = vec3_add(vec3_add(vec3_scale(tri->vn[0], b[0]), vec3_scale(tri->vn[1], b[1])),
-                           vec3_scale(tri->vn[2], b[2]));
+    if (!sh) {
+        plain = triangle_plain_shading(tri);
+        sh = &plain;
+    }
+    if (sh->smooth) {
+        Vec3 ns = vec3_add(vec3_add(vec3_scale(sh->vn[0], b[0]), vec3_scale(sh->vn[1], b[1])),
+                           vec3_scale(sh->vn[2], b[2]));
         if (vec3_length(ns) > 0)
             sp.shading = vec3_normalize(ns);
     }
@@ -135,7 +144,7 @@ SurfacePoint triangle_surface_at(const Triangle *tri, const Ray *ray, double uv[
         m = vec3(fmax(m.x, a.x), fmax(m.y, a.y), fmax(m.z, a.z));
     }
     sp.error = vec3_scale(m, g);
-    uv[0] = b[0] * tri->uv[0][0] + b[1] * tri->uv[1][0] + b[2] * tri->uv[2][0];
-    uv[1] = b[0] * tri->uv[0][1] + b[1] * tri->uv[1][1] + b[2] * tri->uv[2][1];
+    uv[0] = b[0] * sh->uv[0][0] + b[1] * sh->uv[1][0] + b[2] * sh->uv[2][0];
+    uv[1] = b[0] * sh->uv[0][1] + b[1] * sh->uv[1][1] + b[2] * sh->uv[2][1];
     return sp;
 }

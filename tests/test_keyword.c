@@ -14,6 +14,14 @@
 #include "test.h"
 #include "trace.h"
 
+/* Returns triangle i's shading in sc, a plain one's made up. */
+static TriangleShading shading_of(const Scene *sc, size_t i)
+{
+    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
+
+    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
+}
+
 #define SEED                                                                                  \
     "camera 0. 0. 0. 0. 0. 5. 2.0943951 700 500\n"                                             \
     "material sphereMat 255 0 0 1. 0.6 0.7 10.\n"                                              \
@@ -540,8 +548,9 @@ static int same_scene(const Scene *a, const Scene *b)
     }
     for (size_t i = 0; same && i < a->triangle_count; i++) {
         const Triangle *p = &a->triangles[i], *q = &b->triangles[i];
-        same = SAME(p->v, q->v) && SAME(p->normal, q->normal) && SAME(p->uv, q->uv) &&
-               p->smooth == q->smooth && (!p->smooth || SAME(p->vn, q->vn)) &&
+        TriangleShading ps = shading_of(a, i), qs = shading_of(b, i);
+        same = SAME(p->v, q->v) && SAME(p->normal, q->normal) && SAME(ps.uv, qs.uv) &&
+               ps.smooth == qs.smooth && (!ps.smooth || SAME(ps.vn, qs.vn)) &&
                p->swapped == q->swapped && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }

@@ -9,6 +9,14 @@
 #include "test.h"
 #include "threads.h"
 
+/* Returns triangle i's shading in sc, a plain one's made up. */
+static TriangleShading shading_of(const Scene *sc, size_t i)
+{
+    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
+
+    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
+}
+
 /* Writes text (len bytes) to build/t.obj and loads it. */
 static int load(const char *text, size_t len, ObjMesh *m, Error *err)
 {
@@ -133,8 +141,8 @@ static void mesh_record_adds_the_triangles(void)
     if (sc.triangle_count == 2) {
         CHECK_NEAR(0.25, sc.triangles[1].material.transparency, 0);
         CHECK_NEAR(20, sc.triangles[0].material.colour.g, 0);
-        CHECK_NEAR(1, sc.triangles[1].uv[1][0], 0); /* corner 3: vt 3 = (1, 1) */
-        CHECK_NEAR(1, sc.triangles[1].uv[1][1], 0);
+        CHECK_NEAR(1, shading_of(&sc, 1).uv[1][0], 0); /* corner 3: vt 3 = (1, 1) */
+        CHECK_NEAR(1, shading_of(&sc, 1).uv[1][1], 0);
     }
     scene_free(&sc);
     /* Vertex normals make a smooth triangle (normalised); a zero one, a flat one. */
@@ -148,10 +156,10 @@ static void mesh_record_adds_the_triangles(void)
     CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(2, (long long)sc.triangle_count);
     if (sc.triangle_count == 2) {
-        CHECK_INT(1, sc.triangles[0].smooth);
-        CHECK_NEAR(-1, sc.triangles[0].vn[0].z, 0);
-        CHECK_NEAR(sqrt(0.5), sc.triangles[0].vn[1].x, 1e-15);
-        CHECK_INT(0, sc.triangles[1].smooth);
+        CHECK_INT(1, shading_of(&sc, 0).smooth);
+        CHECK_NEAR(-1, shading_of(&sc, 0).vn[0].z, 0);
+        CHECK_NEAR(sqrt(0.5), shading_of(&sc, 0).vn[1].x, 1e-15);
+        CHECK_INT(0, shading_of(&sc, 1).smooth);
     }
     scene_free(&sc);
     /* A fault in the OBJ file is reported at the path, quoting the file's
@@ -296,13 +304,17 @@ static void obj_reads_alike_on_every_thread(void)
     free(bad);
 }
 
-/* Says whether triangles a and b are alike, field by field. */
-static int same_triangle(const Triangle *a, const Triangle *b)
+/* Says whether triangle i of scenes sa and sb are alike, field by field
+ * (their shading too, and where it is kept). */
+static int same_triangle(const Scene *sa, const Scene *sb, size_t i)
 {
+    const Triangle *a = &sa->triangles[i], *b = &sb->triangles[i];
+    TriangleShading as = shading_of(sa, i), bs = shading_of(sb, i);
+
     return memcmp(a->v, b->v, sizeof a->v) == 0 && memcmp(&a->normal, &b->normal, sizeof a->normal) == 0 &&
-           memcmp(a->uv, b->uv, sizeof a->uv) == 0 && memcmp(a->vn, b->vn, sizeof a->vn) == 0 &&
-           a->smooth == b->smooth && a->swapped == b->swapped && a->order == b->order &&
-           a->material.reflection == b->material.reflection &&
+           memcmp(as.uv, bs.uv, sizeof as.uv) == 0 && memcmp(as.vn, bs.vn, sizeof as.vn) == 0 &&
+           as.smooth == bs.smooth && a->shading == b->shading && a->swapped == b->swapped &&
+           a->order == b->order && a->material.reflection == b->material.reflection &&
            a->material.colour.g == b->material.colour.g;
 }
 
@@ -364,11 +376,14 @@ static void mesh_made_alike_on_every_thread(void)
     parse_on_both(text, 0, &one, &two);
     CHECK_INT((long long)one.triangle_count, (long long)two.triangle_count);
     CHECK_INT((long long)one.triangle_capacity, (long long)two.triangle_capacity);
+    CHECK_INT((long long)one.triangle_count, (long long)one.shading_count);
+    CHECK_INT((long long)one.shading_count, (long long)two.shading_count);
+    CHECK_INT((long long)one.shading_capacity, (long long)two.shading_capacity);
     CHECK(one.triangle_count > 8192 && one.triangle_count % 2 == 0);
     if (one.triangle_count == two.triangle_count) {
         size_t differ = 0;
         for (size_t i = 0; i < one.triangle_count; i++)
-            differ += !same_triangle(&one.triangles[i], &two.triangles[i]);
+            differ += !same_triangle(&one, &two, i);
         CHECK_INT(0, (long long)differ);
         /* Objects are ordered as listed: the sphere first. */
         CHECK_INT((long long)one.triangle_count, two.triangles[one.triangle_count - 1].order);
@@ -377,21 +392,31 @@ static void mesh_made_alike_on_every_thread(void)
     scene_free(&two);
     /* 4,100 faces of which 10 have no area: room is made for 8,192, then
      * given back to the 4,096 that adding them one by one takes. 5,000
-     * faces, 10 with area, under a memory limit with room for 5,000
-     * triangles but not for the 8,192 that making them all at once would
-     * reserve: one by one, as on one thread, to the same 16. */
+     * faces, 10 with area, under a memory limit with room beside the mesh
+     * for its 5,000 triangles (and 64 KiB) but not for the 8,192 that
+     * making them all at once would reserve: one by one, as on one thread,
+     * to the same 16. */
     static const struct {
         int faces, every, at;
         const char *odd, *usual;
-        size_t memory_limit;
+        size_t room; /* triangles the limit has room for beside the mesh; 0: no limit */
         long long count, capacity;
     } cases[] = {{4100, 410, 7, "f 1 1 2\n", "f 1 2 3\n", 0, 4090, 4096},
-                 {5000, 500, 0, "f 1 2 3\n", "f 1 1 2\n", 2200000, 10, 16}};
+                 {5000, 500, 0, "f 1 2 3\n", "f 1 1 2\n", 5000, 10, 16}};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        size_t limit = 0;
         if (write_faces(cases[c].faces, cases[c].every, cases[c].at, cases[c].odd,
                         cases[c].usual) != 0)
             return;
-        parse_on_both(mesh, cases[c].memory_limit, &one, &two);
+        if (cases[c].room > 0) {
+            ObjMesh m;
+            Error err;
+            CHECK_INT(0, obj_load("build/big.obj", 0, &m, &err));
+            limit = obj_memory(&m) + cases[c].room * sizeof(Triangle) + 65536;
+            CHECK(limit < 8192 * sizeof(Triangle));
+            obj_free(&m);
+        }
+        parse_on_both(mesh, limit, &one, &two);
         CHECK_INT(cases[c].count, (long long)two.triangle_count);
         CHECK_INT(cases[c].capacity, (long long)one.triangle_capacity);
         CHECK_INT(cases[c].capacity, (long long)two.triangle_capacity);

@@ -56,7 +56,7 @@ static void triangle_hit_gives_point_and_barycentric_uv(void)
 
     CHECK(triangle_intersect(&tri, &r, 0, INFINITY, &t));
     CHECK_NEAR(1, t, 1e-15);
-    sp = triangle_surface_at(&tri, &r, uv);
+    sp = triangle_surface_at(&tri, NULL, &r, uv);
     CHECK_NEAR(0.25, sp.point.x, 1e-15);
     CHECK_NEAR(0.5, sp.point.y, 1e-15);
     CHECK_NEAR(5, sp.point.z, 0);
@@ -245,7 +245,7 @@ static void flat_spawned_rays_never_rehit_their_surface(void)
         }
         if (triangle_make(&tri, a, b, d, white) == 0 &&
             triangle_intersect(&tri, &ray, 0, INFINITY, &t)) {
-            sp = triangle_surface_at(&tri, &ray, uv);
+            sp = triangle_surface_at(&tri, NULL, &ray, uv);
             rehits += rehits_from(sp, ray_facing_normal(sp.normal, ray.dir), triangle_hit, &tri);
             tested++;
         }

@@ -5,6 +5,14 @@
 #include "test.h"
 #include "trace.h"
 
+/* Returns triangle i's shading in sc, a plain one's made up. */
+static TriangleShading shading_of(const Scene *sc, size_t i)
+{
+    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
+
+    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
+}
+
 #define PI 3.14159265358979323846
 
 /* An empty scene: white light at `light`, background (10, 20, 30). */
@@ -373,12 +381,17 @@ static void trace_smooth_triangle_shades_with_its_vertex_normals(void)
                                material_plain(colour(200, 100, 50), 0)));
     CHECK_INT(0, scene_add_triangle(&sc, &tri));
     CHECK_COLOUR(200, 100, 50, seen(&sc, vec3(0, 0, 0), centroid, 0), 1e-9);
-    sc.triangles[0].smooth = 1;
-    for (int k = 0; k < 3; k++)
-        sc.triangles[0].vn[k] = tilt[0];
-    CHECK_COLOUR(100, 50, 25, seen(&sc, vec3(0, 0, 0), vec3(0, a, 5), 0), 1e-9);
-    for (int k = 0; k < 3; k++)
-        sc.triangles[0].vn[k] = tilt[k];
+    {
+        TriangleShading sh = shading_of(&sc, 0);
+        sh.smooth = 1;
+        for (int k = 0; k < 3; k++)
+            sh.vn[k] = tilt[0];
+        CHECK_INT(0, scene_shade_triangle(&sc, 0, &sh));
+        CHECK_COLOUR(100, 50, 25, seen(&sc, vec3(0, 0, 0), vec3(0, a, 5), 0), 1e-9);
+        for (int k = 0; k < 3; k++)
+            sh.vn[k] = tilt[k];
+        CHECK_INT(0, scene_shade_triangle(&sc, 0, &sh));
+    }
     mean = vec3_normalize(vec3_add(vec3_add(tilt[0], tilt[1]), tilt[2]));
     {
         Vec3 l = vec3_normalize(vec3_sub(vec3(0, 0, -1e6), centroid));
