@@ -71,6 +71,10 @@ typedef struct Scene {
     Triangle *triangles;    /* file order; NULL when there are none */
     size_t triangle_count;
     size_t triangle_capacity;
+    Material *materials;    /* the triangles' (spheres and planes hold
+                               their own) */
+    size_t material_count;
+    size_t material_capacity;
     TriangleShading *shading; /* the triangles' that have texture
                                coordinates or vertex normals */
     size_t shading_count;
@@ -111,19 +115,26 @@ void scene_init(Scene *scene);
 void scene_free(Scene *scene);
 
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
- * position among the scene's objects (and a triangle no shading:
- * scene_shade_triangle() gives it some); returns 0, or -1 when memory runs
+ * position among the scene's objects (and a triangle a material of its own,
+ * a copy of *m, and no shading: scene_shade_triangle() gives it some);
+ * returns 0, or -1 when memory runs
  * out or SCENE_OVER_LIMIT when it would pass the memory limit, the scene
  * unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
-int scene_add_triangle(Scene *scene, const Triangle *t);
+int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
 
 /* Gives triangle i the shading *sh (in an entry of the scene's shading of
  * its own); returns 0, -1 when memory runs out or SCENE_OVER_LIMIT, the
  * triangle unchanged. */
 int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh);
+
+/* Returns the material of tri, a triangle of scene. */
+static inline Material *scene_material_of(const Scene *scene, const Triangle *tri)
+{
+    return &scene->materials[tri->material];
+}
 
 /* Returns tri's shading, a triangle of scene, or NULL when it is plain. */
 static inline const TriangleShading *scene_shading_of(const Scene *scene, const Triangle *tri)

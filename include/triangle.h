@@ -35,13 +35,14 @@ typedef struct {
     Vec3 normal;       /* unit (v1 - v0) x (v2 - v0): the front */
     unsigned swapped;  /* bit k: edge k's vertices are taken in reverse */
     unsigned shading;  /* index in the scene's shading, or TRIANGLE_PLAIN */
-    Material material; /* what the surface looks like */
+    unsigned material; /* index in the scene's materials (a mesh's
+                          triangles share one) */
     unsigned order;    /* position among the scene's objects, for ties */
 } Triangle;
 
-/* Makes the triangle v0 v1 v2 with material m, plain; returns -1 when its
+/* Makes the triangle v0 v1 v2, plain, with material 0; returns -1 when its
  * vertices are on one line (no area, no normal), else 0. */
-int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m);
+int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2);
 
 /* Returns a plain triangle's shading: texture coordinates (0, 0), (1, 0),
  * (0, 1) and its normal at every vertex, flat. */

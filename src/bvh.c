@@ -1026,7 +1026,7 @@ int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
             if (ref & BVH_TRIANGLE) {
                 const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
                 c = triangle_intersect(tri, ray, 0, tmax, &t);
-                m = &tri->material;
+                m = scene_material_of(scene, tri);
             } else {
                 c = sphere_crossings(&scene->spheres[ref], ray, 0, tmax);
                 m = &scene->spheres[ref].material;

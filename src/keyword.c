@@ -383,13 +383,13 @@ static int keyword_triangle_record(Keyword *K, const Record *rec, Scene *scene)
     if (keyword_numbers_and_material(K, rec, 1, &keyword_triangle, scene, v, &m) != 0)
         return -1;
     if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
-                      vec3(v[6], v[7], v[8]), m) != 0) {
+                      vec3(v[6], v[7], v[8])) != 0) {
         keyword_fail(K, &rec->line, rec->tok[0].column,
                      "the triangle's three vertices lie on one line: it has no area");
         return -1;
     }
     {
-        int rc = scene_add_triangle(scene, &tri);
+        int rc = scene_add_triangle(scene, &tri, &m);
         return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
     }
 }

@@ -327,8 +327,8 @@ static Material *parse_last_material(Parser *P, Scene *scene)
     case PARSE_SHAPE_PLANE:
         return &scene->planes[P->last_index].material;
     case PARSE_SHAPE_TRIANGLE:
-    case PARSE_SHAPE_MESH:
-        return &scene->triangles[P->last_index].material;
+    case PARSE_SHAPE_MESH: /* a mesh's triangles share it */
+        return scene_material_of(scene, &scene->triangles[P->last_index]);
     default:
         return &scene->spheres[P->last_index].material;
     }
@@ -388,12 +388,12 @@ static int parse_triangle_record(Parser *P, const Record *rec, Scene *scene)
     if (n < 0 || parse_material(P, rec, &parse_triangle, 1, 9, v, n, &m) != 0)
         return -1;
     if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
-                      vec3(v[6], v[7], v[8]), m) != 0) {
+                      vec3(v[6], v[7], v[8])) != 0) {
         parse_fail(P, &rec->line, rec->tok[0].column,
                    "the triangle's three vertices lie on one line: it has no area");
         return -1;
     }
-    rc = scene_add_triangle(scene, &tri);
+    rc = scene_add_triangle(scene, &tri, &m);
     if (rc != 0)
         return parse_fail_memory(P, rec, scene, rc);
     parse_note_object(P, PARSE_SHAPE_TRIANGLE, scene->triangle_count - 1);
@@ -595,12 +595,9 @@ static int parse_texture_record(Parser *P, const Record *rec, Scene *scene)
     index = parse_load_texture(P, rec, &rec->tok[1], scene);
     if (index < 0)
         return -1;
-    for (size_t k = 0; k < (P->last_kind == PARSE_SHAPE_MESH ? P->last_count : 1); k++) {
-        m = P->last_kind == PARSE_SHAPE_MESH ? &scene->triangles[P->last_index + k].material
-                                             : parse_last_material(P, scene);
-        m->texture = index;
-        m->filter = filter;
-    }
+    m = parse_last_material(P, scene);
+    m->texture = index;
+    m->filter = filter;
     if (P->last_kind == PARSE_SHAPE_PLANE && n == 1)
         scene->planes[P->last_index].tile = v[0];
     if (P->last_kind == PARSE_SHAPE_TRIANGLE && n == 6) {

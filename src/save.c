@@ -126,14 +126,14 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
             fputs("mesh ", fp);
             if (save_mesh_path(fp, m, scene_name, out_name, err) != 0)
                 return -1;
-            fprintf(fp, " %s\n", save_name(scene, &scene->triangles[t].material));
+            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, &scene->triangles[t])));
             t += m->count;
         } else {
             const Triangle *tri = &scene->triangles[t++];
             fputs("triangle", fp);
             for (int j = 0; j < 3; j++)
                 save_point(fp, tri->v[j], k);
-            fprintf(fp, " %s\n", save_name(scene, &tri->material));
+            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, tri)));
         }
     }
     return 0;

@@ -48,6 +48,7 @@ void scene_free(Scene *scene)
     free(scene->spheres);
     free(scene->planes);
     free(scene->triangles);
+    free(scene->materials);
     free(scene->shading);
     scene_init(scene);
 }
@@ -66,6 +67,7 @@ size_t scene_memory(const Scene *scene)
     scene_sum(&m, scene->sphere_capacity * sizeof *scene->spheres);
     scene_sum(&m, scene->plane_capacity * sizeof *scene->planes);
     scene_sum(&m, scene->triangle_capacity * sizeof *scene->triangles);
+    scene_sum(&m, scene->material_capacity * sizeof *scene->materials);
     scene_sum(&m, scene->shading_capacity * sizeof *scene->shading);
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
     scene_sum(&m, scene->phong_capacity * sizeof *scene->phong);
@@ -172,7 +174,23 @@ int scene_add_plane(Scene *scene, const Plane *p)
     return 0;
 }
 
-int scene_add_triangle(Scene *scene, const Triangle *t)
+/* Appends *m to the triangles' materials; returns 0 or what
+ * scene_reserve() returned. */
+static int scene_add_material(Scene *scene, const Material *m)
+{
+    int rc = scene_reserve(scene, (void **)&scene->materials, &scene->material_capacity,
+                           scene->material_count, sizeof *m);
+
+    if (rc != 0)
+        return rc;
+    scene->materials[scene->material_count++] = *m;
+    scene->has_transparency |= m->transparency > 0;
+    return 0;
+}
+
+/* Appends a copy of *t with material index material, plain; returns 0 or
+ * what scene_reserve() returned. */
+static int scene_append_triangle(Scene *scene, const Triangle *t, size_t material)
 {
     int rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
                            scene->triangle_count, sizeof *t);
@@ -182,9 +200,18 @@ int scene_add_triangle(Scene *scene, const Triangle *t)
     scene->triangles[scene->triangle_count] = *t;
     scene->triangles[scene->triangle_count].order = (unsigned)scene_object_count(scene);
     scene->triangles[scene->triangle_count].shading = TRIANGLE_PLAIN;
+    scene->triangles[scene->triangle_count].material = (unsigned)material;
     scene->triangle_count++;
-    scene->has_transparency |= t->material.transparency > 0;
     return 0;
+}
+
+int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m)
+{
+    int rc = scene_add_material(scene, m);
+
+    if (rc == 0 && (rc = scene_append_triangle(scene, t, scene->material_count - 1)) != 0)
+        scene->material_count--;
+    return rc;
 }
 
 int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh)
@@ -205,17 +232,18 @@ int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh)
     return 0;
 }
 
-/* Makes mesh m's triangle i with material mat into *tri, and its shading
- * into *sh unless sh is NULL: smooth when its corners have normals (unless
- * one is zero), textured when they have texture coordinates; returns -1
- * when it has no area, else 0. */
-static int scene_mesh_triangle(const ObjMesh *m, size_t i, const Material *mat, Triangle *tri,
+/* Makes mesh m's triangle i with material index material into *tri, and
+ * its shading into *sh unless sh is NULL: smooth when its corners have
+ * normals (unless one is zero), textured when they have texture
+ * coordinates; returns -1 when it has no area, else 0. */
+static int scene_mesh_triangle(const ObjMesh *m, size_t i, size_t material, Triangle *tri,
                                TriangleShading *sh)
 {
     const ObjCorner *c = m->tri[i];
 
-    if (triangle_make(tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v], *mat) != 0)
+    if (triangle_make(tri, m->v[c[0].v], m->v[c[1].v], m->v[c[2].v]) != 0)
         return -1;
+    tri->material = (unsigned)material;
     if (!sh)
         return 0;
     *sh = triangle_plain_shading(tri);
@@ -274,7 +302,7 @@ static size_t scene_fit_capacity(size_t cap, size_t count, size_t entry)
  * those that adding them one by one from the entry capacities makes);
  * returns the number added, or -1 when memory for the marks runs out
  * (nothing added). */
-static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Material *mat,
+static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, size_t material,
                                     int shaded, size_t entry_tris, size_t entry_shading)
 {
     size_t first = scene->triangle_count, kept = first, i = 0;
@@ -291,8 +319,8 @@ static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Materi
 #pragma omp parallel for schedule(static)
 #endif
     for (size_t k = 0; k < m->tri_count; k++) {
-        made[k] = scene_mesh_triangle(m, k, mat, &tris[first + k], shaded ? &sh[shade + k] : NULL) ==
-                  0;
+        made[k] = scene_mesh_triangle(m, k, material, &tris[first + k],
+                                      shaded ? &sh[shade + k] : NULL) == 0;
         tris[first + k].order = (unsigned)(others + first + k);
         if (shaded)
             tris[first + k].shading = (unsigned)(shade + k);
@@ -312,7 +340,6 @@ static long scene_add_mesh_parallel(Scene *scene, const ObjMesh *m, const Materi
         kept++;
     }
     free(made);
-    scene->has_transparency |= kept > first && mat->transparency > 0;
     scene->triangle_count = kept;
     scene_fit((void **)&scene->triangles, &scene->triangle_capacity,
               scene_fit_capacity(scene->triangle_capacity, kept, entry_tris), sizeof *tris);
@@ -341,24 +368,28 @@ static int scene_reserve_all(const Scene *scene, void **items, size_t *capacity,
 long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 {
     long added = 0;
-    size_t left = scene_memory_left(scene), held = obj_memory(m);
-    int shaded = m->vn_count > 0 || m->vt_count > 0;
+    size_t left = scene_memory_left(scene), held = obj_memory(m), material;
+    int shaded = m->vn_count > 0 || m->vt_count > 0, rc;
     size_t each = sizeof *scene->triangles + (shaded ? sizeof *scene->shading : 0);
 
     /* The mesh's triangles must fit beside the mesh itself. */
     if (scene->memory_limit && (held > left || m->tri_count > (left - held) / each))
         return SCENE_OVER_LIMIT;
+    /* One material for all its triangles. */
+    if ((rc = scene_add_material(scene, mat)) != 0)
+        return rc;
+    material = scene->material_count - 1;
     /* A large mesh is made on every thread when there is room for all its
      * triangles as adding them one by one would make it; else (or when
      * that fails) one by one, which says what went wrong. */
     if (m->tri_count >= SCENE_PARALLEL_MIN && threads_count() > 1) {
         size_t entry_tris = scene->triangle_capacity, entry_shading = scene->shading_capacity;
-        int rc = scene_reserve_all(scene, (void **)&scene->triangles, &scene->triangle_capacity,
-                                   scene->triangle_count + m->tri_count, sizeof *scene->triangles);
+        rc = scene_reserve_all(scene, (void **)&scene->triangles, &scene->triangle_capacity,
+                               scene->triangle_count + m->tri_count, sizeof *scene->triangles);
         if (rc == 0 && shaded)
             rc = scene_reserve_all(scene, (void **)&scene->shading, &scene->shading_capacity,
                                    scene->shading_count + m->tri_count, sizeof *scene->shading);
-        if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, mat, shaded, entry_tris,
+        if (rc == 0 && (added = scene_add_mesh_parallel(scene, m, material, shaded, entry_tris,
                                                         entry_shading)) >= 0)
             return added;
         added = 0;
@@ -371,10 +402,9 @@ long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
     for (size_t i = 0; i < m->tri_count; i++) {
         Triangle tri;
         TriangleShading sh;
-        int rc;
-        if (scene_mesh_triangle(m, i, mat, &tri, shaded ? &sh : NULL) != 0)
+        if (scene_mesh_triangle(m, i, material, &tri, shaded ? &sh : NULL) != 0)
             continue;
-        rc = scene_add_triangle(scene, &tri);
+        rc = scene_append_triangle(scene, &tri, material);
         if (rc == 0 && shaded && (rc = scene_shade_triangle(scene, scene->triangle_count - 1,
                                                             &sh)) != 0)
             scene->triangle_count--;

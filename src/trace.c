@@ -172,7 +172,8 @@ static double trace_transmittance_accel(const Scene *scene, const Ray *ray, real
     if (!trace_attenuate_planes(scene, ray, tmax, &share))
         return 0;
     for (; i < n; i++)
-        if (!trace_attenuate(&share, &scene->triangles[c[i].prim & ~BVH_TRIANGLE].material,
+        if (!trace_attenuate(&share,
+                             scene_material_of(scene, &scene->triangles[c[i].prim & ~BVH_TRIANGLE]),
                              c[i].crossings))
             return 0;
     return share;
@@ -197,7 +198,8 @@ double trace_transmittance(const Scene *scene, const Ray *ray, real tmax)
         return 0;
     for (size_t k = 0; k < scene->triangle_count; k++) {
         const Triangle *tri = &scene->triangles[k];
-        if (!trace_attenuate(&share, &tri->material, triangle_intersect(tri, ray, 0, tmax, &t)))
+        if (!trace_attenuate(&share, scene_material_of(scene, tri),
+                             triangle_intersect(tri, ray, 0, tmax, &t)))
             return 0;
     }
     return share;
@@ -238,7 +240,7 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
     default: {
         const Triangle *tri = &scene->triangles[hit->index];
         sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
-        sh.material = &tri->material;
+        sh.material = scene_material_of(scene, tri);
         break;
     }
     }

@@ -25,7 +25,7 @@ static int triangle_vertex_before(Vec3 a, Vec3 b)
     return a.z < b.z;
 }
 
-int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
+int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2)
 {
     Vec3 e1 = vec3_sub(v1, v0), e2 = vec3_sub(v2, v0);
     real scale = fmax(vec3_max_abs(e1), vec3_max_abs(e2));
@@ -51,7 +51,7 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2, Material m)
         if (triangle_vertex_before(tri->v[(k + 2) % 3], tri->v[(k + 1) % 3]))
             tri->swapped |= 1u << k;
     tri->shading = TRIANGLE_PLAIN;
-    tri->material = m;
+    tri->material = 0;
     tri->order = 0;
     return 0;
 }

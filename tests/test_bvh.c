@@ -35,10 +35,10 @@ static void random_scene(Scene *sc, int n, double s)
         if (i % 10 == 0) /* the same sphere again: exact ties */
             CHECK_INT(0, scene_add_sphere(sc, &sp));
         if (triangle_make(&tri, c, vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s)),
-                          vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s)), m) == 0) {
-            CHECK_INT(0, scene_add_triangle(sc, &tri));
+                          vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s))) == 0) {
+            CHECK_INT(0, scene_add_triangle(sc, &tri, &m));
             if (i % 10 == 5)
-                CHECK_INT(0, scene_add_triangle(sc, &tri));
+                CHECK_INT(0, scene_add_triangle(sc, &tri, &m));
         }
     }
     {

@@ -97,8 +97,8 @@ static void keyword_reads_every_element_in_any_order(void)
     CHECK_INT(2, sc.triangles[0].order);
     CHECK_INT(3, sc.spheres[1].order);
     /* eta_r without tau: all the light not mirrored is transmitted. */
-    CHECK_NEAR(0.9, sc.triangles[0].material.transparency, 1e-16);
-    CHECK_NEAR(1.5, sc.triangles[0].material.ior, 0);
+    CHECK_NEAR(0.9, scene_material_of(&sc, &sc.triangles[0])->transparency, 1e-16);
+    CHECK_NEAR(1.5, scene_material_of(&sc, &sc.triangles[0])->ior, 0);
     CHECK_NEAR(0.5, sc.spheres[1].material.transparency, 0);
     CHECK_NEAR(0.2, sc.spheres[1].material.reflection, 0);
     CHECK(sc.has_transparency);
@@ -551,7 +551,7 @@ static int same_scene(const Scene *a, const Scene *b)
         TriangleShading ps = shading_of(a, i), qs = shading_of(b, i);
         same = SAME(p->v, q->v) && SAME(p->normal, q->normal) && SAME(ps.uv, qs.uv) &&
                ps.smooth == qs.smooth && (!ps.smooth || SAME(ps.vn, qs.vn)) &&
-               p->swapped == q->swapped && same_material(&p->material, &q->material) &&
+               p->swapped == q->swapped && same_material(scene_material_of(a, p), scene_material_of(b, q)) &&
                p->order == q->order;
     }
     return same;

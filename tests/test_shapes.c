@@ -12,7 +12,7 @@ static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1
 static Triangle triangle_of(Vec3 a, Vec3 b, Vec3 c)
 {
     Triangle t;
-    CHECK_INT(0, triangle_make(&t, a, b, c, white));
+    CHECK_INT(0, triangle_make(&t, a, b, c));
     return t;
 }
 
@@ -91,11 +91,11 @@ static void triangle_make_rejects_only_zero_area(void)
     Triangle tri;
     double s = 1e-200;
 
-    CHECK_INT(-1, triangle_make(&tri, vec3(0, 0, 0), vec3(1, 1, 1), vec3(2, 2, 2), white));
-    CHECK_INT(-1, triangle_make(&tri, vec3(1, 2, 3), vec3(1, 2, 3), vec3(0, 0, 0), white));
-    CHECK_INT(0, triangle_make(&tri, vec3(0, 0, 0), vec3(s, 0, 0), vec3(0, s, 0), white));
+    CHECK_INT(-1, triangle_make(&tri, vec3(0, 0, 0), vec3(1, 1, 1), vec3(2, 2, 2)));
+    CHECK_INT(-1, triangle_make(&tri, vec3(1, 2, 3), vec3(1, 2, 3), vec3(0, 0, 0)));
+    CHECK_INT(0, triangle_make(&tri, vec3(0, 0, 0), vec3(s, 0, 0), vec3(0, s, 0)));
     CHECK_NEAR(1, tri.normal.z, 0);
-    CHECK_INT(0, triangle_make(&tri, vec3(0, 0, 0), vec3(1, 0, 0), vec3(2, 1e-9, 0), white));
+    CHECK_INT(0, triangle_make(&tri, vec3(0, 0, 0), vec3(1, 0, 0), vec3(2, 1e-9, 0)));
 }
 
 /* The seed's Moller-Trumbore, written as seed 002 gives it: vectors from v0,
@@ -135,8 +135,8 @@ static void triangle_shared_edges_have_no_cracks(void)
         Vec3 d = vec3_add(base, vec3_scale(rng_unit_vector(), s));
         Triangle t1, t2;
 
-        if (triangle_make(&t1, a, b, c, white) != 0 ||
-            triangle_make(&t2, b, i % 2 ? d : c, i % 2 ? c : d, white) != 0)
+        if (triangle_make(&t1, a, b, c) != 0 ||
+            triangle_make(&t2, b, i % 2 ? d : c, i % 2 ? c : d) != 0)
             continue;
         for (int j = 0; j < 30; j++) {
             Vec3 p = vec3_add(b, vec3_scale(vec3_sub(c, b), rng_uniform()));
@@ -243,7 +243,7 @@ static void flat_spawned_rays_never_rehit_their_surface(void)
             rehits += rehits_from(sp, ray_facing_normal(sp.normal, ray.dir), plane_hit, &pl);
             tested++;
         }
-        if (triangle_make(&tri, a, b, d, white) == 0 &&
+        if (triangle_make(&tri, a, b, d) == 0 &&
             triangle_intersect(&tri, &ray, 0, INFINITY, &t)) {
             sp = triangle_surface_at(&tri, NULL, &ray, uv);
             rehits += rehits_from(sp, ray_facing_normal(sp.normal, ray.dir), triangle_hit, &tri);

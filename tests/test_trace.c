@@ -377,9 +377,10 @@ static void trace_smooth_triangle_shades_with_its_vertex_normals(void)
     Vec3 tilt[3] = {{s60, 0, -0.5}, {0, s60, -0.5}, {-s60, 0, -0.5}}, mean;
     Vec3 centroid = vec3(0, 1.0 / 3, 5);
 
-    CHECK_INT(0, triangle_make(&tri, vec3(-1, 0, 5), vec3(1, 0, 5), vec3(0, 1, 5),
-                               material_plain(colour(200, 100, 50), 0)));
-    CHECK_INT(0, scene_add_triangle(&sc, &tri));
+    Material m = material_plain(colour(200, 100, 50), 0);
+
+    CHECK_INT(0, triangle_make(&tri, vec3(-1, 0, 5), vec3(1, 0, 5), vec3(0, 1, 5)));
+    CHECK_INT(0, scene_add_triangle(&sc, &tri, &m));
     CHECK_COLOUR(200, 100, 50, seen(&sc, vec3(0, 0, 0), centroid, 0), 1e-9);
     {
         TriangleShading sh = shading_of(&sc, 0);
