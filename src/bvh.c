@@ -800,12 +800,12 @@ static inline BvhLanes bvh_row(const BvhNode *node, int offset)
 }
 
 /* Says which of node's children's boxes the ray meets at some t' in [0,
- * limit] (a bvh_limit()): bit k for child k; stores in enter[k] where
+ * limit] (a bvh_limit(), in every lane): bit k for child k; stores in enter[k] where
  * the ray enters child k's box (t', never later than the true entry by
  * more than the rounding above). The reciprocal directions are +-inf for a
  * zero component: the products then are +-inf (outside the slab or inside
  * it) or NaN (on its plane), which the comparisons ignore. */
-static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, float limit,
+static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, BvhLanes limit,
                                           float enter[BVH_WIDTH])
 {
     unsigned bits = 0;
@@ -822,8 +822,7 @@ static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, 
 #pragma GCC unroll 2
     for (int v = 0; v < BVH_VECTORS; v++) {
         int first = v * BVH_LANES;
-        BvhLanes t0 = {0}, t1 = {0}, n, f;
-        t1 += limit;
+        BvhLanes t0 = {0}, t1 = limit, n, f;
 #pragma GCC unroll 3
         for (int a = 0; a < 3; a++) {
             n = (bvh_row(node, r->near[a] + first) - r->near_o[a]) * r->inv[a];
@@ -881,6 +880,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
     uint32_t id = 0;
     real bound = tmax; /* primitives are tested below bound */
     float limit = bvh_limit(&r, tmax), cull = bvh_cull(limit);
+    BvhLanes limits = bvh_splat(limit);
 
     for (;;) {
         /* The children the ray enters before the best hit so far go on the
@@ -889,7 +889,7 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
          * keeps it. */
         const BvhNode *node = &bvh->nodes[id];
         float enter[BVH_WIDTH];
-        unsigned bits = bvh_children_enter(node, &r, limit, enter);
+        unsigned bits = bvh_children_enter(node, &r, limits, enter);
         int base = top;
 
         /* One node alone: straight in. */
@@ -910,8 +910,11 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
          * leaves are tested on the way, a node is visited. */
         for (;;) {
             BvhEntry e;
-            if (top == 0)
+            if (top == 0) {
+                if (found)
+                    hit->order = bvh_prim_order(scene, hit->prim);
                 return found;
+            }
             e = stack[--top];
             if (e.enter > cull)
                 continue;
@@ -922,19 +925,20 @@ int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, B
             for (uint32_t k = e.child; k < e.child + e.count; k++) {
                 uint32_t ref = bvh->prims[k];
                 real t;
-                unsigned order;
                 if (!bvh_prim_hit(bvh, scene, k, ray, 0, bound, &t))
                     continue;
-                order = bvh_prim_order(scene, ref);
-                if (!found || t < hit->t || order < hit->order) {
+                /* t <= hit->t: on a tie the earlier-listed object wins
+                 * (their positions are read only then). */
+                if (!found || t < hit->t ||
+                    bvh_prim_order(scene, ref) < bvh_prim_order(scene, hit->prim)) {
                     hit->t = t;
                     hit->prim = ref;
-                    hit->order = order;
                     found = 1;
                     /* An exact tie with an earlier-listed object must
                      * still be seen: the bound is the next real up. */
                     bound = real_next(t, 1);
                     limit = bvh_limit(&r, t);
+                    limits = bvh_splat(limit);
                     cull = bvh_cull(limit);
                 }
             }
@@ -964,6 +968,8 @@ static void bvh_walk_start(BvhWalk *w)
 static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *w,
                          uint32_t *first, uint32_t *count)
 {
+    BvhLanes limits = bvh_splat(limit);
+
     while (w->top > 0) {
         const BvhNode *node;
         float enter[BVH_WIDTH];
@@ -976,7 +982,7 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *
             return 1;
         }
         node = &bvh->nodes[w->stack[w->top].child];
-        bits = bvh_children_enter(node, r, limit, enter);
+        bits = bvh_children_enter(node, r, limits, enter);
         for (; bits != 0; bits &= bits - 1) {
             int k = __builtin_ctz(bits);
             w->stack[w->top].child = node->child[k];
