@@ -107,16 +107,35 @@ static int parse_in_build(const char *text, Scene *sc, Error *err)
 
 static void texture_records_attach_to_the_object_before(void)
 {
+    /* Only to that object: not to a triangle of the same colours after it,
+     * nor to another mesh of the same file (a mesh's triangles share one
+     * material; a triangle's texture coordinates are its own). */
+    static const char square[] = "v 0 0 4\nv 1 0 4\nv 1 1 4\nv 0 1 4\nf 1 2 3 4\n";
     Scene sc;
     Error err;
 
     write_file("build/tex-a.ppm", TEX_P3, strlen(TEX_P3));
+    write_file("build/square.obj", square, strlen(square));
     CHECK_INT(0, parse_in_build(TEX_HEADER "sphere: 0 0 5 1 1 2 3 0\ntexture: tex-a.ppm\n"
                                            "plane: 0 -1 0 0 1 0 1 2 3 0\n"
                                            "texture: tex-a.ppm nearest 2.5\n"
                                            "triangle: 0 0 3 1 0 3 0 1 3 1 2 3 0\n"
-                                           "texture: tex-a.ppm bilinear 0 0 1 0 0.5 1\n",
+                                           "texture: tex-a.ppm bilinear 0 0 1 0 0.5 1\n"
+                                           "triangle: 0 0 3 1 0 3 0 1 3 1 2 3 0\n"
+                                           "mesh: square.obj 1 2 3 0\ntexture: tex-a.ppm\n"
+                                           "mesh: square.obj 1 2 3 0\n",
                                 &sc, &err));
+    CHECK_INT(6, (long long)sc.triangle_count);
+    if (sc.triangle_count == 6) {
+        CHECK_INT(-1, scene_material_of(&sc, &sc.triangles[1])->texture);
+        CHECK_INT(TRIANGLE_PLAIN, sc.triangles[1].shading);
+        CHECK_INT(sc.triangles[2].material, sc.triangles[3].material);
+        CHECK_INT(0, scene_material_of(&sc, &sc.triangles[3])->texture);
+        CHECK_INT(sc.triangles[4].material, sc.triangles[5].material);
+        CHECK(sc.triangles[4].material != sc.triangles[2].material);
+        CHECK_INT(-1, scene_material_of(&sc, &sc.triangles[4])->texture);
+        CHECK_INT(1, (long long)sc.shading_count); /* the first triangle's */
+    }
     CHECK_INT(1, (long long)sc.texture_count); /* one file, read once */
     CHECK_INT(0, sc.spheres[0].material.texture);
     CHECK_INT(TEXTURE_BILINEAR, sc.spheres[0].material.filter);
