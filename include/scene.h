@@ -117,9 +117,8 @@ void scene_free(Scene *scene);
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
  * position among the scene's objects (and a triangle a material of its own,
  * a copy of *m, and no shading: scene_shade_triangle() gives it some);
- * returns 0, or -1 when memory runs
- * out or SCENE_OVER_LIMIT when it would pass the memory limit, the scene
- * unchanged. */
+ * returns 0, or -1 when memory runs out or SCENE_OVER_LIMIT when it would
+ * pass the memory limit, the scene unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
@@ -130,7 +129,8 @@ int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
  * triangle unchanged. */
 int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh);
 
-/* Returns the material of tri, a triangle of scene. */
+/* Returns the material of tri, a triangle of scene (writable: the parser's
+ * texture records set it). */
 static inline Material *scene_material_of(const Scene *scene, const Triangle *tri)
 {
     return &scene->materials[tri->material];

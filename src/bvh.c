@@ -800,9 +800,9 @@ static inline BvhLanes bvh_row(const BvhNode *node, int offset)
 }
 
 /* Says which of node's children's boxes the ray meets at some t' in [0,
- * limit] (a bvh_limit(), in every lane): bit k for child k; stores in enter[k] where
- * the ray enters child k's box (t', never later than the true entry by
- * more than the rounding above). The reciprocal directions are +-inf for a
+ * limit] (a bvh_limit(), in every lane): bit k for child k; stores in
+ * enter[k] where the ray enters child k's box (t', never later than the
+ * true entry by more than the rounding above). The reciprocal directions are +-inf for a
  * zero component: the products then are +-inf (outside the slab or inside
  * it) or NaN (on its plane), which the comparisons ignore. */
 static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, BvhLanes limit,
