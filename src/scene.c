@@ -465,7 +465,9 @@ static double scene_points_max(const Vec3 *p, size_t n)
     return m;
 }
 
-/* Returns the largest magnitude of every length in the scene. */
+/* Returns the largest magnitude of every length in the scene, or some
+ * magnitude of SCENE_TINY or more when there is one (the objects are then
+ * not looked at: a scene of 10^6 triangles is seldom tiny). */
 static double scene_max_length(const Scene *scene)
 {
     const Camera *cam = &scene->camera;
@@ -473,6 +475,8 @@ static double scene_max_length(const Scene *scene)
                     fmax(vec3_max_abs(cam->u), vec3_max_abs(cam->v)));
 
     m = fmax(m, fmax(cam->aperture, cam->aperture > 0 ? cam->focus : 0));
+    if (m >= SCENE_TINY)
+        return m;
     for (size_t i = 0; i < scene->light_count; i++)
         if (!scene->lights[i].distant) /* a direction, not a place */
             m = fmax(m, vec3_max_abs(scene->lights[i].position));
