@@ -47,7 +47,6 @@ typedef struct {
     int last_kind;     /* which shape the last object is (a PARSE_SHAPE_*) */
     size_t last_index; /* its index among the scene's shapes of that kind (a
                           mesh: its first triangle's) */
-    size_t last_count; /* a mesh: how many triangles it added */
 } Parser;
 
 /* Records a fault at column of line. */
@@ -538,7 +537,6 @@ static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
         return -1;
     }
     parse_note_object(P, PARSE_SHAPE_MESH, scene->triangle_count - (size_t)added);
-    P->last_count = (size_t)added;
     return 0;
 }
 
@@ -700,7 +698,6 @@ int parse_scene_text(const char *name, const char *text, size_t len, size_t memo
     lex_init(&P.lex, name, text, len, err);
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;
-    P.last_count = 0;
     P.last_kind = PARSE_SHAPE_SPHERE;
     P.last_index = 0;
     if (parse_header(&P, scene) != 0 || parse_objects(&P, scene) != 0) {

@@ -11,16 +11,9 @@
 #include "number.h"
 #include "rng.h"
 #include "save.h"
+#include "shading.h"
 #include "test.h"
 #include "trace.h"
-
-/* Returns triangle i's shading in sc, a plain one's made up. */
-static TriangleShading shading_of(const Scene *sc, size_t i)
-{
-    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
-
-    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
-}
 
 #define SEED                                                                                  \
     "camera 0. 0. 0. 0. 0. 5. 2.0943951 700 500\n"                                             \

@@ -6,16 +6,9 @@
 
 #include "obj.h"
 #include "parse.h"
+#include "shading.h"
 #include "test.h"
 #include "threads.h"
-
-/* Returns triangle i's shading in sc, a plain one's made up. */
-static TriangleShading shading_of(const Scene *sc, size_t i)
-{
-    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
-
-    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
-}
 
 /* Writes text (len bytes) to build/t.obj and loads it. */
 static int load(const char *text, size_t len, ObjMesh *m, Error *err)

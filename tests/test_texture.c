@@ -4,17 +4,10 @@
 #include <string.h>
 
 #include "parse.h"
+#include "shading.h"
 #include "sphere.h"
 #include "test.h"
 #include "texture.h"
-
-/* Returns triangle i's shading in sc, a plain one's made up. */
-static TriangleShading shading_of(const Scene *sc, size_t i)
-{
-    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
-
-    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
-}
 
 /* Writes text (len bytes) to path. */
 static void write_file(const char *path, const char *text, size_t len)

@@ -2,16 +2,9 @@
 #include <math.h>
 
 #include "scene.h"
+#include "shading.h"
 #include "test.h"
 #include "trace.h"
-
-/* Returns triangle i's shading in sc, a plain one's made up. */
-static TriangleShading shading_of(const Scene *sc, size_t i)
-{
-    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
-
-    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
-}
 
 #define PI 3.14159265358979323846
 
