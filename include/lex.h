@@ -82,6 +82,11 @@ void lex_init(Lexer *L, const char *name, const char *text, size_t len, Error *e
  * after its first ':' if it has one, so that "sphere:1" is "sphere:" "1". */
 int lex_next_record(Lexer *L, Record *rec);
 
+/* Splits the len bytes at p into n parts (n >= 1) of about len / n bytes
+ * each that end at line ends, for n threads to read: part k is [cut[k],
+ * cut[k + 1]) (cut has n + 1 entries; a part may be empty). */
+void lex_split(const char *p, size_t len, int n, const char **cut);
+
 /* Records a fault at column of line. */
 #define lex_fail(L, line, column, ...)                                                        \
     error_set_at((L)->err, (L)->name, (line)->number, (column), (line)->text, (line)->len,    \

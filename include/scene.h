@@ -124,6 +124,13 @@ int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
 
+/* Appends n >= 1 spheres at once, as n calls of scene_add_sphere() would (the
+ * same room; their positions among the objects set here): fill(room, ctx)
+ * writes them into room, on any threads, and returns 0. Returns 0, or
+ * what fill() returned (non-zero), -1 or SCENE_OVER_LIMIT, with the scene
+ * as it was, when fill() or one of those calls would fail. */
+int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx);
+
 /* Gives triangle i the shading *sh (in an entry of the scene's shading of
  * its own); returns 0, -1 when memory runs out or SCENE_OVER_LIMIT, the
  * triangle unchanged. */

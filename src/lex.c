@@ -22,6 +22,25 @@ void lex_init(Lexer *L, const char *name, const char *text, size_t len, Error *e
     L->err = err;
 }
 
+void lex_split(const char *p, size_t len, int n, const char **cut)
+{
+    const char *end = p + len;
+
+    cut[0] = p;
+    for (int k = 1; k < n; k++) {
+        const char *at = p + len / (size_t)n * (size_t)k, *eol;
+        if (at < cut[k - 1])
+            at = cut[k - 1];
+        /* Forward to the start of the next line, unless at is one. */
+        if (at > p && at[-1] != '\n') {
+            eol = memchr(at, '\n', (size_t)(end - at));
+            at = eol ? eol + 1 : end;
+        }
+        cut[k] = at;
+    }
+    cut[n] = end;
+}
+
 const char *lex_quote(char *buf, size_t size, const Token *t)
 {
     size_t n = 0, shown = t->len > 40 ? 40 : t->len;

@@ -9,6 +9,7 @@
 
 #include "file.h"
 #include "grow.h"
+#include "lex.h"
 #include "number.h"
 #include "threads.h"
 
@@ -399,21 +400,14 @@ static int obj_parse_parallel(const char *name, const char *p, size_t len, size_
     static const size_t sizes[4] = {sizeof *mesh->v, sizeof *mesh->vt, sizeof *mesh->vn,
                                     sizeof *mesh->tri};
     ObjPart parts[OBJ_PARTS_MAX];
+    const char *cut[OBJ_PARTS_MAX + 1];
     size_t total[4] = {0, 0, 0, 0}, used = 0;
     int n = threads < OBJ_PARTS_MAX ? threads : OBJ_PARTS_MAX, failed = 0;
-    const char *end = p + len;
 
+    lex_split(p, len, n, cut);
     for (int k = 0; k < n; k++) {
-        const char *at = k == 0 ? p : parts[k - 1].end;
-        const char *cut = k == n - 1 ? end : p + len / (size_t)n * (size_t)(k + 1);
-        if (cut < at)
-            cut = at;
-        if (cut < end && cut > p && cut[-1] != '\n') {
-            const char *eol = memchr(cut, '\n', (size_t)(end - cut));
-            cut = eol ? eol + 1 : end;
-        }
-        parts[k].start = at;
-        parts[k].end = cut;
+        parts[k].start = cut[k];
+        parts[k].end = cut[k + 1];
     }
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(n) schedule(static, 1)

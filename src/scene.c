@@ -365,6 +365,31 @@ static int scene_reserve_all(const Scene *scene, void **items, size_t *capacity,
     return rc;
 }
 
+int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx)
+{
+    size_t entry = scene->sphere_capacity, first = scene->sphere_count;
+    size_t others = scene_object_count(scene); /* listed before */
+    int rc = scene_reserve_all(scene, (void **)&scene->spheres, &scene->sphere_capacity,
+                               first + n, sizeof *scene->spheres), transparent = 0;
+    Sphere *room = scene->spheres + first;
+
+    if (rc != 0 || (rc = fill(room, ctx)) != 0) {
+        scene_fit((void **)&scene->spheres, &scene->sphere_capacity, entry,
+                  sizeof *scene->spheres);
+        return rc;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) reduction(| : transparent)
+#endif
+    for (size_t k = 0; k < n; k++) {
+        room[k].order = (unsigned)(others + k);
+        transparent |= room[k].material.transparency > 0;
+    }
+    scene->sphere_count += n;
+    scene->has_transparency |= transparent;
+    return 0;
+}
+
 long scene_add_mesh(Scene *scene, const ObjMesh *m, const Material *mat)
 {
     long added = 0;

@@ -9,6 +9,7 @@
 #include "parse.h"
 #include "rng.h"
 #include "test.h"
+#include "threads.h"
 
 /* A valid header: the screen is 2 x 2 at z = 1, so 4 x 4 pixels. */
 #define CAMERA "0 0 0\n"
@@ -155,6 +156,132 @@ static void parse_accepts_many_spheres(void)
     CHECK_NEAR(4999, sc.spheres[4999].centre.x, 0);
     scene_free(&sc);
     free(text);
+}
+
+/* Writes into text (room for cap bytes) a course scene of more than 1 MiB,
+ * large enough to be read on every thread: the header, then n sphere:
+ * records in every accepted form (comments, blank lines, tabs, CRLF,
+ * transparency and index); returns its length. */
+static size_t big_course(char *text, size_t cap, int n)
+{
+    size_t len = (size_t)snprintf(text, cap, "%s", HEADER);
+
+    for (int i = 0; i < n && len < cap; i++) {
+        const char *form[] = {"sphere: %d.25 -%d 9e1 0.5 1 2 3 0.125\n",
+                              "  sphere:\t%d 1E-3 %d 1 255 0 7 0 0.5 1.5\r\n",
+                              "sphere: %d 1 %d 2 3 4 5 1 # a comment\n\n",
+                              "# only a comment\n\t \nsphere: -%d 2 +%d .5 0 0 0 0.0\n"};
+        len += (size_t)snprintf(text + len, cap - len, form[i % 4], i, i % 977);
+    }
+    return len;
+}
+
+/* Says whether the spheres of scenes a and b are alike, field by field. */
+static int same_spheres(const Scene *a, const Scene *b)
+{
+    if (a->sphere_count != b->sphere_count || a->sphere_capacity != b->sphere_capacity ||
+        a->has_transparency != b->has_transparency)
+        return 0;
+    for (size_t i = 0; i < a->sphere_count; i++) {
+        const Sphere *x = &a->spheres[i], *y = &b->spheres[i];
+        if (memcmp(&x->centre, &y->centre, sizeof x->centre) != 0 || x->radius != y->radius ||
+            memcmp(&x->material.colour, &y->material.colour, sizeof x->material.colour) != 0 ||
+            x->material.reflection != y->material.reflection ||
+            x->material.transparency != y->material.transparency ||
+            x->material.ior != y->material.ior || x->order != y->order)
+            return 0;
+    }
+    return 1;
+}
+
+/* Parses text on the given threads under memory_limit (0: none). */
+static int parse_on(int threads, const char *text, size_t len, size_t memory_limit,
+                    Scene *scene, Error *err)
+{
+    threads_use(threads);
+    return parse_scene_text("big.txt", text, len, memory_limit, scene, err);
+}
+
+/* A large scene of spheres is read alike on one thread and on two: the same
+ * spheres, room and flags, or the same fault at the same place (the first
+ * in the file), also when the memory limit stops it or when a record other
+ * than a sphere sends the reading back to one thread. */
+static void parse_reads_alike_on_every_thread(void)
+{
+    size_t cap = 3 << 20, len;
+    char *text = malloc(cap), *odd = malloc(cap + 64);
+    int before = threads_count();
+    Scene one, two;
+    Error e1, e2;
+
+    CHECK(text && odd);
+    if (!text || !odd) {
+        free(text);
+        free(odd);
+        return;
+    }
+    len = big_course(text, cap, 40000);
+    CHECK(len > 1 << 20 && len < cap - 1);
+    CHECK_INT(0, parse_on(1, text, len, 0, &one, &e1));
+    CHECK_INT(0, parse_on(2, text, len, 0, &two, &e2));
+    CHECK_INT(40000, (long long)one.sphere_count);
+    CHECK(one.has_transparency);
+    CHECK(same_spheres(&one, &two));
+    /* The memory limit: the serial reading's room just fits, or not. */
+    {
+        size_t need = scene_memory(&one);
+        Scene sc;
+        CHECK_INT(0, parse_on(2, text, len, need, &sc, &e2));
+        CHECK(same_spheres(&one, &sc));
+        scene_free(&sc);
+        CHECK_INT(-1, parse_on(1, text, len, need - 1, &sc, &e1));
+        CHECK_INT(-1, parse_on(2, text, len, need - 1, &sc, &e2));
+        CHECK_ERROR("memory limit", &e2, e1.line, e1.column, e1.message);
+    }
+    /* A fault early, in the middle, near the end and at the very end: a bad
+     * number, an unknown record, a reflection out of range, a NUL byte, a
+     * carriage return inside a line; and records that are right but not
+     * spheres (a plane, a light), read alike. */
+    {
+        static const char *const lines[] = {"sphere: 1 2 x 1 1 2 3 0", "spheres: 1 2 3 1 1 2 3 0",
+                                            "sphere: 1 2 3 1 1 2 3 1.5", "sphere: 1 2 3\0 1 1 2 3 0",
+                                            "sphere: 1 2 3 1\r 1 2 3 0", "plane: 0 -1 0 0 1 0 9 9 9 0",
+                                            "light: 1 2 3 4 5 6"};
+        size_t at[] = {len / 50, len / 2, len - len / 40, len};
+        for (int k = 0; k < 7; k++) {
+            size_t cut = at[k % 4], n, extra = strlen(lines[k]) + (k == 3);
+            Scene s1, s2;
+            int r1, r2;
+            while (cut > 0 && text[cut - 1] != '\n')
+                cut--;
+            memcpy(odd, text, cut);
+            memcpy(odd + cut, lines[k], extra);
+            n = cut + extra;
+            odd[n++] = '\n';
+            memcpy(odd + n, text + cut, len - cut);
+            n += len - cut;
+            r1 = parse_on(1, odd, n, 0, &s1, &e1);
+            r2 = parse_on(2, odd, n, 0, &s2, &e2);
+            CHECK_INT(k < 5 ? -1 : 0, r1);
+            CHECK_INT(r1, r2);
+            if (r1 != 0 && r2 != 0) {
+                CHECK_ERROR(lines[k], &e2, e1.line, e1.column, e1.message);
+            } else if (r1 == 0 && r2 == 0) {
+                CHECK(same_spheres(&s1, &s2));
+                CHECK_INT((long long)s1.plane_count, (long long)s2.plane_count);
+                CHECK_INT((long long)s1.light_count, (long long)s2.light_count);
+                CHECK_INT(k == 5, (long long)s2.plane_count);
+                CHECK_INT(1 + (k == 6), (long long)s2.light_count);
+                scene_free(&s1);
+                scene_free(&s2);
+            }
+        }
+    }
+    threads_use(before);
+    scene_free(&one);
+    scene_free(&two);
+    free(text);
+    free(odd);
 }
 
 /* Returns the image height of the screen with the given corners at width
@@ -532,6 +659,7 @@ const TestCase parse_tests[] = {
     {"parse_numbers_round_as_strtod", parse_numbers_round_as_strtod},
     {"parse_numbers_with_long_zero_runs", parse_numbers_with_long_zero_runs},
     {"parse_accepts_many_spheres", parse_accepts_many_spheres},
+    {"parse_reads_alike_on_every_thread", parse_reads_alike_on_every_thread},
     {"parse_height_follows_the_screen", parse_height_follows_the_screen},
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
     {"parse_every_record_rejects_each_fault", parse_every_record_rejects_each_fault},
