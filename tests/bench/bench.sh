@@ -2,11 +2,12 @@
 # bench.sh: the benchmark behind `make bench`. Not a test: it measures.
 #
 # Generates its scenes (tests/bench/scenegen.c) into build/bench, renders
-# each BENCH_RUNS times (default 3) on 1 thread and on all of them, and
-# writes docs/benchmarks.md: median wall time (reading the scene and
-# building the hierarchy included), rays by kind, Mrays/s (render only),
-# peak memory. When POV-Ray is installed, it renders the two sphere fields
-# with it too, side by side in the same run, and compares the pixels.
+# each BENCH_RUNS times (default 3) on 1 thread and on all of them, run for
+# run alternately, and writes docs/benchmarks.md: median wall time (reading
+# the scene and building the hierarchy included), rays by kind, Mrays/s
+# (render only), peak memory, the speed-up from 1 thread to all. When
+# POV-Ray is installed, it renders the two sphere fields with it too, side
+# by side in the same run, and compares the pixels.
 #
 # Usage: sh tests/bench/bench.sh RAYTRACE RAYTRACE-DIFF SCENEGEN [OUT.md]
 # Environment: BENCH_RUNS (runs per measure), BENCH_ONLY (a space-separated
@@ -35,34 +36,82 @@ scene() {
     esac || { rm -f "$f"; echo "bench: cannot generate $1" >&2; exit 2; }
 }
 
-# measure NAME THREADS: renders RUNS times; appends a table row to $T.
+# run NAME THREADS: renders once; appends the wall time (ms) and Mrays/s to
+# $DIR/t-THREADS and leaves the -v log in $DIR/log-THREADS.
+run() {
+    start=$(now)
+    "$RT" -v -j "$2" "$DIR/$1.txt" "$DIR/$1.ppm" 2>"$DIR/log-$2" || { cat "$DIR/log-$2" >&2; exit 1; }
+    end=$(now)
+    speed=$(sed -n 's/^raytrace: rendered in .*: \(.*\) Mrays\/s$/\1/p' "$DIR/log-$2")
+    echo "$(((end - start) / 1000000)) $speed" >>"$DIR/t-$2"
+}
+
+# row NAME THREADS: appends the table row of THREADS' runs to $DIR/rows.
+row() {
+    log=$DIR/log-$2
+    wall=$(cut -d' ' -f1 "$DIR/t-$2" | median)
+    speed=$(cut -d' ' -f2 "$DIR/t-$2" | median)
+    rays=$(sed -n 's/^raytrace: rays: //p' "$log")
+    mem=$(sed -n 's/^raytrace: peak memory: \(.*\) MB$/\1/p' "$log")
+    size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$log")
+    printf '| %s | %s | %s | %s | %.2f s | %.2f | %s MB |\n' "$1" "$size" "$2" "$rays" \
+        "$(echo "$wall / 1000" | bc -l)" "$speed" "$mem" >>"$DIR/rows"
+    echo "bench: $1, $2 thread(s): median $wall ms ($(cut -d' ' -f1 "$DIR/t-$2" | tr '\n' ' '))" >&2
+}
+
+# together NAME: renders ALL times at once, one thread each (separate
+# processes, which share nothing but the machine); appends the wall time
+# (ms) until the last ends to $DIR/t-together.
+together() {
+    start=$(now)
+    k=0
+    pids=
+    while [ $k -lt "$ALL" ]; do
+        "$RT" -q -j 1 "$DIR/$1.txt" "$DIR/$1-$k.ppm" &
+        pids="$pids $!"
+        k=$((k + 1))
+    done
+    for p in $pids; do
+        wait "$p" || exit 1
+    done
+    end=$(now)
+    echo $(((end - start) / 1000000)) >>"$DIR/t-together"
+}
+
+# measure NAME: renders RUNS times on 1 thread, on all of them, and as ALL
+# one-thread processes at once, run for run alternately, so that all see
+# the machine alike; appends the table rows of the first two, and to
+# $DIR/speedup the medians over the runs of the speed-ups: the whole
+# command's, the render's alone, and the machine's own (ALL renders at
+# once against one alone: what threads could at best reach).
 measure() {
-    : >"$DIR/times"
+    : >"$DIR/t-1"
+    : >"$DIR/t-$ALL"
+    : >"$DIR/t-together"
     i=0
     while [ $i -lt "$RUNS" ]; do
-        start=$(now)
-        "$RT" -v -j "$2" "$DIR/$1.txt" "$DIR/$1.ppm" 2>"$DIR/log" || { cat "$DIR/log" >&2; exit 1; }
-        end=$(now)
-        echo $(((end - start) / 1000000)) >>"$DIR/times"
+        run "$1" 1
+        if [ "$ALL" -gt 1 ]; then
+            run "$1" "$ALL"
+            together "$1"
+        fi
         i=$((i + 1))
     done
-    wall=$(median <"$DIR/times")
-    rays=$(sed -n 's/^raytrace: rays: //p' "$DIR/log")
-    speed=$(sed -n 's/^raytrace: rendered in .*: \(.*\) Mrays\/s$/\1/p' "$DIR/log")
-    mem=$(sed -n 's/^raytrace: peak memory: \(.*\) MB$/\1/p' "$DIR/log")
-    size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
-    printf '| %s | %s | %s | %s | %.2f s | %s | %s MB |\n' "$1" "$size" "$2" "$rays" \
-        "$(echo "$wall / 1000" | bc -l)" "$speed" "$mem" >>"$DIR/rows"
-    echo "$1 $2 $wall $speed" >>"$DIR/raw"
-    echo "bench: $1, $2 thread(s): median $wall ms ($(tr '\n' ' ' <"$DIR/times"))" >&2
+    row "$1" 1
+    [ "$ALL" -gt 1 ] || return 0
+    row "$1" "$ALL"
+    whole=$(paste -d' ' "$DIR/t-1" "$DIR/t-$ALL" | awk '$3 > 0 { print $1 / $3 }' | median)
+    render=$(paste -d' ' "$DIR/t-1" "$DIR/t-$ALL" | awk '$2 > 0 { print $4 / $2 }' | median)
+    machine=$(paste -d' ' "$DIR/t-1" "$DIR/t-together" |
+        awk -v all="$ALL" '$3 > 0 { print all * $1 / $3 }' | median)
+    printf '| %s | %.2f× | %.2f× | %.2f× |\n' "$1" "$whole" "$render" "$machine" >>"$DIR/speedup"
 }
 
 : >"$DIR/rows"
-: >"$DIR/raw"
+: >"$DIR/speedup"
 for s in $ONLY; do
     scene "$s"
-    measure "$s" 1
-    [ "$ALL" -gt 1 ] && measure "$s" "$ALL"
+    measure "$s"
 done
 
 # render_time SCENE: renders RUNS times on all threads; sets render to the
@@ -194,25 +243,28 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "(reflection 0.2), 1920 × 1080. Default depth 10, one sample per pixel."
     echo
     echo "Wall time is the median of $RUNS runs of the whole command (reading the"
-    echo "scene and building the hierarchy included); Mrays/s counts every ray"
-    echo "(primary, shadow, reflection, refraction) over the render alone; peak"
-    echo "memory is the process's maximum resident size, image included."
+    echo "scene and building the hierarchy included); Mrays/s, the median of the"
+    echo "same runs, counts every ray (primary, shadow, reflection, refraction)"
+    echo "over the render alone; peak memory is the process's maximum resident"
+    echo "size, image included."
     echo
     echo "| scene | pixels | threads | rays | wall time | Mrays/s | peak memory |"
     echo "|-------|--------|---------|------|-----------|---------|-------------|"
     cat "$DIR/rows"
     if [ "$ALL" -gt 1 ]; then
         echo
-        echo "Speed-up from 1 to $ALL threads, from the table: the whole command's"
-        echo "(reading and building included) and the render's alone (Mrays/s)."
+        echo "Speed-up from 1 to $ALL threads: the 1-thread and $ALL-thread runs above"
+        echo "alternate with $ALL 1-thread runs of the same scene at once (separate"
+        echo "processes), and each figure is the median over the $RUNS rounds of"
+        echo "the 1-thread run's time over the other's: the whole command's (reading"
+        echo "and building included), the render's alone (Mrays/s), and the"
+        echo "machine's own ($ALL × the time of one run alone over that of $ALL at"
+        echo "once: the throughput $ALL processes that share nothing get, which"
+        echo "threads sharing one scene cannot pass)."
         echo
-        echo "| scene | whole command | render alone |"
-        echo "|-------|---------------|--------------|"
-        awk -v all="$ALL" '$2 == 1 { w[$1] = $3; r[$1] = $4; order[++n] = $1 }
-            $2 == all { W[$1] = $3; R[$1] = $4 }
-            END { for (i = 1; i <= n; i++) { s = order[i]
-                if (W[s] > 0 && r[s] > 0)
-                    printf "| %s | %.2f× | %.2f× |\n", s, w[s] / W[s], R[s] / r[s] } }' "$DIR/raw"
+        echo "| scene | whole command | render alone | $ALL processes at once |"
+        echo "|-------|---------------|--------------|----------------------|"
+        cat "$DIR/speedup"
     fi
     if [ -s "$DIR/scale" ]; then
         echo
