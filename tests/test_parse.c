@@ -284,6 +284,67 @@ static void parse_reads_alike_on_every_thread(void)
     free(odd);
 }
 
+/* Random edits of a large field (a few bytes replaced by bytes that matter
+ * to lines, comments, records and numbers) are read alike on one thread and
+ * on two: both succeed with the same spheres and other objects, or fail
+ * with the same message at the same place. */
+static void parse_reads_random_edits_alike(void)
+{
+    static const char bytes[] = {'\n', '\r', '\0', '#', ':', ' ', '\t', 'e', '-', '.', '1',
+                                 'x', 's', '\xEF', '\xBB', '\xBF'};
+    static const char *const words[] = {"sphere:", "plane: 0 1 0 0 1 0 1 2 3 0", "texture:",
+                                        "\r\n", "\n\n#", "ambient: 1 2 3", "1e999"};
+    size_t cap = 3 << 20, len;
+    char *text = malloc(cap), *odd = malloc(cap + 64);
+    int before = threads_count(), fails = 0;
+
+    CHECK(text && odd);
+    if (!text || !odd) {
+        free(text);
+        free(odd);
+        return;
+    }
+    len = big_course(text, cap, 36000);
+    CHECK(len > 1 << 20);
+    for (int round = 0; round < 24; round++) {
+        size_t n = len;
+        Scene s1, s2;
+        Error e1, e2;
+        int r1, r2;
+        memcpy(odd, text, len);
+        /* One to three edits past the header, each a byte or a word. */
+        for (int k = 0, edits = 1 + round % 3; k < edits; k++) {
+            size_t at = 200 + (size_t)(rng_uniform() * (double)(n - 260));
+            if (rng_uniform() < 0.5) {
+                odd[at] = bytes[(int)(rng_uniform() * sizeof bytes)];
+            } else {
+                const char *w = words[(int)(rng_uniform() * 7)];
+                size_t wl = strlen(w);
+                memcpy(odd + at, w, wl); /* over what was there */
+            }
+        }
+        r1 = parse_on(1, odd, n, 0, &s1, &e1);
+        r2 = parse_on(2, odd, n, 0, &s2, &e2);
+        CHECK_INT(r1, r2);
+        if (r1 != 0 && r2 != 0) {
+            fails++;
+            CHECK_ERROR("a random edit", &e2, e1.line, e1.column, e1.message);
+        } else if (r1 == 0 && r2 == 0) {
+            CHECK(same_spheres(&s1, &s2));
+            CHECK_INT((long long)s1.plane_count, (long long)s2.plane_count);
+            CHECK_INT((long long)s1.texture_count, (long long)s2.texture_count);
+            CHECK(s1.has_ambient == s2.has_ambient);
+            scene_free(&s1);
+            scene_free(&s2);
+        }
+    }
+    /* Most edits break a record; some must not, or this tests one path. */
+    CHECK(fails > 0 && fails < 24);
+    threads_use(before);
+    free(text);
+    free(odd);
+}
+
 /* Returns the image height of the screen with the given corners at width
  * W, or -1 if the scene does not parse. */
 static int height_of(const char *corners, const char *width)
@@ -660,6 +721,7 @@ const TestCase parse_tests[] = {
     {"parse_numbers_with_long_zero_runs", parse_numbers_with_long_zero_runs},
     {"parse_accepts_many_spheres", parse_accepts_many_spheres},
     {"parse_reads_alike_on_every_thread", parse_reads_alike_on_every_thread},
+    {"parse_reads_random_edits_alike", parse_reads_random_edits_alike},
     {"parse_height_follows_the_screen", parse_height_follows_the_screen},
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
     {"parse_every_record_rejects_each_fault", parse_every_record_rejects_each_fault},
