@@ -78,6 +78,18 @@ together() {
     echo $(((end - start) / 1000000)) >>"$DIR/t-together"
 }
 
+# ticks: the machine's CPU time so far, in all and stolen by other guests
+# of its host (/proc/stat; "0 0" where there is none).
+ticks() {
+    awk '$1 == "cpu" { t = 0; for (i = 2; i <= NF; i++) t += $i; print t, $9 + 0; exit }' \
+        /proc/stat 2>/dev/null || echo "0 0"
+}
+
+# stolen BEFORE: the share (%) of CPU time stolen since ticks printed BEFORE.
+stolen() {
+    echo "$1 $(ticks)" | awk '{ d = $3 - $1; s = d > 0 ? 100 * ($4 - $2) / d : 0; printf "%.0f%%", s }'
+}
+
 # measure NAME: renders RUNS times on 1 thread, on all of them, and as ALL
 # one-thread processes at once, run for run alternately, so that all see
 # the machine alike; appends the table rows of the first two, and to
@@ -88,6 +100,7 @@ measure() {
     : >"$DIR/t-1"
     : >"$DIR/t-$ALL"
     : >"$DIR/t-together"
+    before=$(ticks)
     i=0
     while [ $i -lt "$RUNS" ]; do
         run "$1" 1
@@ -104,7 +117,8 @@ measure() {
     render=$(paste -d' ' "$DIR/t-1" "$DIR/t-$ALL" | awk '$2 > 0 { print $4 / $2 }' | median)
     machine=$(paste -d' ' "$DIR/t-1" "$DIR/t-together" |
         awk -v all="$ALL" '$3 > 0 { print all * $1 / $3 }' | median)
-    printf '| %s | %.2f× | %.2f× | %.2f× |\n' "$1" "$whole" "$render" "$machine" >>"$DIR/speedup"
+    printf '| %s | %.2f× | %.2f× | %.2f× | %s |\n' "$1" "$whole" "$render" "$machine" \
+        "$(stolen "$before")" >>"$DIR/speedup"
 }
 
 : >"$DIR/rows"
@@ -260,10 +274,12 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
         echo "and building included), the render's alone (Mrays/s), and the"
         echo "machine's own ($ALL × the time of one run alone over that of $ALL at"
         echo "once: the throughput $ALL processes that share nothing get, which"
-        echo "threads sharing one scene cannot pass)."
+        echo "threads sharing one scene cannot pass). Stolen: the share of the"
+        echo "machine's CPU time its host gave other guests during those runs"
+        echo "(/proc/stat), which none of these figures can see past."
         echo
-        echo "| scene | whole command | render alone | $ALL processes at once |"
-        echo "|-------|---------------|--------------|----------------------|"
+        echo "| scene | whole command | render alone | $ALL processes at once | stolen |"
+        echo "|-------|---------------|--------------|----------------------|--------|"
         cat "$DIR/speedup"
     fi
     if [ -s "$DIR/scale" ]; then
