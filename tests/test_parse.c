@@ -158,13 +158,15 @@ static void parse_accepts_many_spheres(void)
     free(text);
 }
 
-/* Writes into text (room for cap bytes) a course scene of more than 1 MiB,
- * large enough to be read on every thread: the header, then n sphere:
- * records in every accepted form (comments, blank lines, tabs, CRLF,
- * transparency and index); returns its length. */
-static size_t big_course(char *text, size_t cap, int n)
+enum { BIG_ROOM = 3 << 20 }; /* bytes of a big_course() and then some */
+
+/* Writes into text (room for BIG_ROOM bytes) a course scene of more than
+ * 1 MiB, large enough to be read on every thread: the header, then n
+ * sphere: records in every accepted form (comments, blank lines, tabs,
+ * CRLF, transparency and index); returns its length. */
+static size_t big_course(char *text, int n)
 {
-    size_t len = (size_t)snprintf(text, cap, "%s", HEADER);
+    size_t cap = BIG_ROOM, len = (size_t)snprintf(text, cap, "%s", HEADER);
 
     for (int i = 0; i < n && len < cap; i++) {
         const char *form[] = {"sphere: %d.25 -%d 9e1 0.5 1 2 3 0.125\n",
@@ -208,20 +210,13 @@ static int parse_on(int threads, const char *text, size_t len, size_t memory_lim
  * than a sphere sends the reading back to one thread. */
 static void parse_reads_alike_on_every_thread(void)
 {
-    size_t cap = 3 << 20, len;
-    char *text = malloc(cap), *odd = malloc(cap + 64);
+    static char text[BIG_ROOM], odd[BIG_ROOM + 64];
+    size_t len = big_course(text, 40000);
     int before = threads_count();
     Scene one, two;
     Error e1, e2;
 
-    CHECK(text && odd);
-    if (!text || !odd) {
-        free(text);
-        free(odd);
-        return;
-    }
-    len = big_course(text, cap, 40000);
-    CHECK(len > 1 << 20 && len < cap - 1);
+    CHECK(len > 1 << 20 && len < BIG_ROOM - 1);
     CHECK_INT(0, parse_on(1, text, len, 0, &one, &e1));
     CHECK_INT(0, parse_on(2, text, len, 0, &two, &e2));
     CHECK_INT(40000, (long long)one.sphere_count);
@@ -280,8 +275,6 @@ static void parse_reads_alike_on_every_thread(void)
     threads_use(before);
     scene_free(&one);
     scene_free(&two);
-    free(text);
-    free(odd);
 }
 
 /* Random edits of a large field (a few bytes replaced by bytes that matter
@@ -294,17 +287,10 @@ static void parse_reads_random_edits_alike(void)
                                  'x', 's', '\xEF', '\xBB', '\xBF'};
     static const char *const words[] = {"sphere:", "plane: 0 1 0 0 1 0 1 2 3 0", "texture:",
                                         "\r\n", "\n\n#", "ambient: 1 2 3", "1e999"};
-    size_t cap = 3 << 20, len;
-    char *text = malloc(cap), *odd = malloc(cap + 64);
+    static char text[BIG_ROOM], odd[BIG_ROOM + 64];
+    size_t len = big_course(text, 36000);
     int before = threads_count(), fails = 0;
 
-    CHECK(text && odd);
-    if (!text || !odd) {
-        free(text);
-        free(odd);
-        return;
-    }
-    len = big_course(text, cap, 36000);
     CHECK(len > 1 << 20);
     for (int round = 0; round < 24; round++) {
         size_t n = len;
@@ -341,8 +327,6 @@ static void parse_reads_random_edits_alike(void)
     /* Most edits break a record; some must not, or this tests one path. */
     CHECK(fails > 0 && fails < 24);
     threads_use(before);
-    free(text);
-    free(odd);
 }
 
 /* Returns the image height of the screen with the given corners at width
