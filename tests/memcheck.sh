@@ -41,6 +41,15 @@ run "course scene" 0 "$RT" -q -j 2 scenes/course.txt "$T/course.ppm"
 run "keyword scene, mesh and hierarchy" 0 "$RT" -q -j 2 scenes/.memcheck-keyword.txt "$T/keyword.png"
 run "textures, samples, PFM" 0 "$RT" -q -j 1 --spp 2 scenes/.memcheck-textures.txt "$T/textures.pfm"
 run "glass, depth 30, cut-off" 0 "$RT" -q -j 1 -d 30 --cutoff 0.5 scenes/.memcheck-glass.txt "$T/glass.ppm"
+# A field of 1.2 MiB of sphere: records, read on every thread, and the
+# same with a fault near its end, which sends the reading back to one.
+awk 'BEGIN { print "0 0 -10\n-1 1 -9\n1 1 -9\n-1 -1 -9\n8\n0 0 0\n5 9 -20 255 255 255"
+             for (i = 0; i < 34000; i++)
+                 printf "sphere: %d.5 %d -%d 0.25 10 20 30 0.2\n", i % 97 - 48, i % 89 - 44, i % 83 }' \
+    >"$T/field.txt"
+run "a large field read on every thread" 0 "$RT" -q -j 2 "$T/field.txt" "$T/field.ppm"
+sed '33000s/0.25/x/' "$T/field.txt" >"$T/field-bad.txt"
+run "a fault in a large field" 1 "$RT" -q -j 2 "$T/field-bad.txt" "$T/field.ppm"
 run "save a keyword scene" 0 "$RT" --save "$T/saved.txt" scenes/keyword.txt
 run "a scene fault" 1 "$RT" -q tests/hostile/mesh-bad-index.txt "$T/bad.ppm"
 run "a memory limit" 1 "$RT" -q --memory-limit 1K scenes/mirrors.txt "$T/bad.ppm"
