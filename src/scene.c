@@ -371,7 +371,7 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
     size_t others = scene_object_count(scene); /* listed before */
     int rc = scene_reserve_all(scene, (void **)&scene->spheres, &scene->sphere_capacity,
                                first + n, sizeof *scene->spheres), transparent = 0;
-    Sphere *room = scene->spheres + first;
+    Sphere *room = rc == 0 ? scene->spheres + first : NULL;
 
     if (rc != 0 || (rc = fill(room, ctx)) != 0) {
         scene_fit((void **)&scene->spheres, &scene->sphere_capacity, entry,

@@ -69,6 +69,78 @@ static void limits_scene_stops_at_the_element_that_passes(void)
     free(text);
 }
 
+/* scene_add_spheres()'s fill: writes the spheres the context says, sphere
+ * k at x = k and transparent when k == 7; returns the context's code. */
+typedef struct {
+    size_t n;
+    int code;
+} SpheresFill;
+
+static int limits_fill(Sphere *room, void *ctx)
+{
+    const SpheresFill *f = ctx;
+
+    for (size_t k = 0; k < f->n; k++) {
+        room[k].centre = vec3((double)k, 0, 3);
+        room[k].radius = 1;
+        room[k].material = material_plain(colour(1, 2, 3), 0);
+        room[k].material.transparency = k == 7 ? 0.5 : 0;
+    }
+    return f->code;
+}
+
+/* Spheres added at once take the room, positions and flags that adding
+ * them one by one gives, or leave the scene as it was: when the fill
+ * fails, and when the memory limit stops one of them. */
+static void limits_spheres_added_at_once_as_one_by_one(void)
+{
+    Scene one, all;
+    Sphere s = {vec3(0, 0, 3), 1, material_plain(colour(1, 2, 3), 0), 0};
+    Light light = light_point(vec3(0, 5, 0), colour(255, 255, 255));
+    SpheresFill fill = {1000, 0};
+    size_t cap;
+
+    scene_init(&one);
+    scene_init(&all);
+    CHECK_INT(0, scene_add_light(&one, &light));
+    CHECK_INT(0, scene_add_light(&all, &light));
+    for (int k = 0; k < 3; k++) { /* three before: positions 0 to 2 */
+        CHECK_INT(0, scene_add_sphere(&one, &s));
+        CHECK_INT(0, scene_add_sphere(&all, &s));
+    }
+    for (size_t k = 0; k < fill.n; k++) {
+        s.centre.x = (double)k;
+        s.material.transparency = k == 7 ? 0.5 : 0;
+        CHECK_INT(0, scene_add_sphere(&one, &s));
+    }
+    CHECK_INT(0, scene_add_spheres(&all, fill.n, limits_fill, &fill));
+    CHECK_INT((long long)one.sphere_count, (long long)all.sphere_count);
+    CHECK_INT((long long)one.sphere_capacity, (long long)all.sphere_capacity);
+    CHECK_INT(1024, (long long)all.sphere_capacity);
+    CHECK(all.has_transparency);
+    CHECK_INT(3 + 999, all.spheres[3 + 999].order);
+    CHECK_NEAR(999, all.spheres[3 + 999].centre.x, 0);
+    CHECK_INT(one.spheres[500].order, all.spheres[500].order);
+    /* A failing fill: the code back, the scene as it was. */
+    cap = all.sphere_capacity;
+    fill.code = 7;
+    CHECK_INT(7, scene_add_spheres(&all, 2000, limits_fill, &fill));
+    CHECK_INT(1003, (long long)all.sphere_count);
+    CHECK_INT((long long)cap, (long long)all.sphere_capacity);
+    /* The limit: room for 2048 spheres, not for 4096; adding one by one
+     * would stop at the 2049th, so adding 1046 at once stops too, and
+     * nothing is left of the attempt. */
+    fill.code = 0;
+    all.memory_limit = scene_memory(&all) + 1024 * sizeof(Sphere);
+    CHECK_INT(SCENE_OVER_LIMIT, scene_add_spheres(&all, 1046, limits_fill, &fill));
+    CHECK_INT((long long)cap, (long long)all.sphere_capacity);
+    CHECK_INT(1003, (long long)all.sphere_count);
+    CHECK_INT(0, scene_add_spheres(&all, 1045, limits_fill, &fill));
+    CHECK_INT(2048, (long long)all.sphere_capacity);
+    scene_free(&one);
+    scene_free(&all);
+}
+
 static void limits_hierarchy_is_estimated_before_it_is_built(void)
 {
     char *text = limits_spheres(1000);
@@ -163,6 +235,7 @@ const TestCase limits_tests[] = {
     {"limits_sizes_read_for_people", limits_sizes_read_for_people},
     {"limits_scene_stops_at_the_element_that_passes",
      limits_scene_stops_at_the_element_that_passes},
+    {"limits_spheres_added_at_once_as_one_by_one", limits_spheres_added_at_once_as_one_by_one},
     {"limits_hierarchy_is_estimated_before_it_is_built",
      limits_hierarchy_is_estimated_before_it_is_built},
     {"limits_mesh_reading_keeps_to_its_budget", limits_mesh_reading_keeps_to_its_budget},
