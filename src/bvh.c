@@ -216,14 +216,14 @@ static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale)
 
 /* The surface area heuristic's best split of prims[start..end) into the
  * centroid bins of one axis: the cost (traversal 1, intersection 1 a
- * primitive, areas relative to bounds), and the first bin of the right
- * part (-1 when no split leaves both parts non-empty). */
-static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const Box *bounds,
-                           int axis, real lo, real scale, int *split)
+ * primitive, areas relative to the box of them all), and the first bin of
+ * the right part (-1 when no split leaves both parts non-empty). */
+static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int axis, real lo,
+                         real scale, int *split)
 {
     size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
     Box bin[BVH_BINS], acc;
-    real left_area[BVH_BINS], best = INFINITY, per_area = 1 / box_half_area(bounds);
+    real left_area[BVH_BINS], best = INFINITY, per_area;
 
     *split = -1;
     for (int b = 0; b < BVH_BINS; b++)
@@ -233,16 +233,26 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
         count[b]++;
         box_grow(&bin[b], &prims[i].box);
     }
+    /* An empty bin changes neither box nor count: it takes its left
+     * neighbour's area, and a split at it costs what the split at the next
+     * bin costs, which the sweep below meets first and keeps on a tie. */
     box_empty(&acc);
     for (int b = 0, total = 0; b < BVH_BINS; b++) {
-        box_grow(&acc, &bin[b]);
+        if (count[b] == 0) {
+            left_area[b] = b > 0 ? left_area[b - 1] : 0;
+        } else {
+            box_grow(&acc, &bin[b]);
+            left_area[b] = box_half_area(&acc);
+        }
         total += (int)count[b];
-        left_area[b] = box_half_area(&acc);
         left_n[b] = (size_t)total;
     }
+    per_area = 1 / box_half_area(&acc); /* acc holds every bin */
     box_empty(&acc);
     for (int b = BVH_BINS - 1; b > 0; b--) {
         real cost;
+        if (count[b] == 0)
+            continue;
         box_grow(&acc, &bin[b]);
         if (left_n[b - 1] == 0 || left_n[b - 1] == n)
             continue;
@@ -257,12 +267,10 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, const
     return best;
 }
 
-/* Chooses how to split prims[start..end), of box bounds and centroids'
- * box cb (count > BVH_LEAF_MAX or SAH says so); returns the index of the
- * first primitive of the right part, or start when it is better left a
- * leaf. */
-static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *bounds,
-                        const Box *cb, int depth)
+/* Chooses how to split prims[start..end), of centroids' box cb (count >
+ * BVH_LEAF_MAX or SAH says so); returns the index of the first primitive
+ * of the right part, or start when it is better left a leaf. */
+static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *cb, int depth)
 {
     size_t n = end - start, mid;
     real extent[3], scale[3], best = INFINITY;
@@ -292,7 +300,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *b
         real cost;
         if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != axis))
             continue;
-        cost = bvh_sah_axis(prims, start, end, bounds, a, cb->lo[a], scale[a], &split);
+        cost = bvh_sah_axis(prims, start, end, a, cb->lo[a], scale[a], &split);
         if (split >= 0 && cost < best) {
             best = cost;
             best_split = split;
@@ -340,20 +348,18 @@ static void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root
         BuildTask task = stack[--top], left, right;
         BuildNode *node = &nodes[task.node];
         size_t split;
-        Box bounds, cb; /* the primitives' box and their centroids' */
+        Box cb; /* the box of the primitives' centroids */
 
-        box_empty(&bounds);
         box_empty(&cb);
         for (size_t i = task.start; i < task.end; i++) {
             real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
                          bvh_centroid(&prims[i], 2)};
-            box_grow(&bounds, &prims[i].box);
             box_grow_point(&cb, c);
         }
         node->size = (uint32_t)(task.end - task.start);
         split = task.end - task.start <= 1
                     ? task.start
-                    : bvh_split(prims, task.start, task.end, &bounds, &cb, task.depth);
+                    : bvh_split(prims, task.start, task.end, &cb, task.depth);
         if (split == task.start) {
             node->index = (uint32_t)task.start;
             node->count = (uint32_t)(task.end - task.start);
