@@ -21,7 +21,9 @@ enum {
     /* Traversal stack: a node visit pops one entry and pushes at most
      * BVH_WIDTH, and nodes are at most BVH_DEPTH_MAX deep. */
     BVH_STACK = (BVH_WIDTH - 1) * BVH_DEPTH_MAX + BVH_WIDTH,
-    BVH_ALL_AXES = 4096   /* at most this many primitives: SAH on every axis */
+    BVH_ALL_AXES = 4096,  /* at most this many primitives: SAH on every axis */
+    BVH_TASK_MIN = 16384, /* fewer primitives: built by the thread at hand */
+    BVH_FRAME_SAMPLE = 4095 /* centroids the frame's median is taken of */
 };
 
 /* A box, as lo and hi corners. */
@@ -121,22 +123,45 @@ static real bvh_centroid(const BuildPrim *p, int axis)
 #define BVH_PAD_ULPS 0x1p16
 #endif
 
-static real bvh_padding(const Scene *scene)
+/* Returns the larger of m and p's largest coordinate in magnitude, for
+ * finite coordinates (as fmax() would, without its call). */
+static inline real bvh_farther(real m, Vec3 p)
 {
-    real m = fmax(vec3_max_abs(scene->camera.eye),
-                    fmax(vec3_max_abs(scene->camera.top_left),
-                         vec3_max_abs(vec3_add(scene->camera.top_left,
-                                               vec3_add(scene->camera.u, scene->camera.v)))));
+    real x = fabs(p.x), y = fabs(p.y), z = fabs(p.z);
 
+    m = x > m ? x : m;
+    m = y > m ? y : m;
+    return z > m ? z : m;
+}
+
+static real bvh_padding(const Scene *scene, int threads)
+{
+    real m = bvh_farther(bvh_farther(bvh_farther(0, scene->camera.eye), scene->camera.top_left),
+                         vec3_add(scene->camera.top_left,
+                                  vec3_add(scene->camera.u, scene->camera.v)));
+    long spheres = (long)scene->sphere_count, triangles = (long)scene->triangle_count;
+
+    (void)threads;
     for (size_t i = 0; i < scene->light_count; i++)
-        m = fmax(m, vec3_max_abs(scene->lights[i].position));
-    for (size_t i = 0; i < scene->sphere_count; i++)
-        m = fmax(m, vec3_max_abs(scene->spheres[i].centre) + scene->spheres[i].radius);
+        m = bvh_farther(m, scene->lights[i].position);
     for (size_t i = 0; i < scene->plane_count; i++)
-        m = fmax(m, vec3_max_abs(scene->planes[i].point));
-    for (size_t i = 0; i < scene->triangle_count; i++)
+        m = bvh_farther(m, scene->planes[i].point);
+    /* The largest of finite values, whatever the order: the same on any
+     * number of threads. */
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) reduction(max : m) if (spheres >= BVH_TASK_MIN)
+#endif
+    for (long i = 0; i < spheres; i++) {
+        const Sphere *sp = &scene->spheres[i];
+        real r = bvh_farther(0, sp->centre) + sp->radius;
+        m = r > m ? r : m;
+    }
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) reduction(max : m) if (triangles >= BVH_TASK_MIN)
+#endif
+    for (long i = 0; i < triangles; i++)
         for (int k = 0; k < 3; k++)
-            m = fmax(m, vec3_max_abs(scene->triangles[i].v[k]));
+            m = bvh_farther(m, scene->triangles[i].v[k]);
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
 }
 
@@ -234,8 +259,9 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int a
         box_grow(&bin[b], &prims[i].box);
     }
     /* An empty bin changes neither box nor count: it takes its left
-     * neighbour's area, and a split at it costs what the split at the next
-     * bin costs, which the sweep below meets first and keeps on a tie. */
+     * neighbour's area, and a split at it costs exactly what the split at
+     * the next full bin costs, which the sweep below meets first and keeps
+     * on a tie; so it is passed over. */
     box_empty(&acc);
     for (int b = 0, total = 0; b < BVH_BINS; b++) {
         if (count[b] == 0) {
@@ -329,10 +355,6 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
     }
     return mid;
 }
-
-enum {
-    BVH_TASK_MIN = 16384 /* fewer primitives: built by the thread at hand */
-};
 
 /* Builds the binary subtree of task into nodes (see BuildTask), reordering
  * prims[task.start..task.end) by leaf; in an OpenMP parallel region, right
@@ -514,23 +536,35 @@ static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int
     return next - self;
 }
 
-/* Sets bvh's frame: on each axis the median of the n primitives' centroids
- * (reordering prims), as the boxes' rounding margins grow with their
- * distance from it and most boxes are near it (the centre of all the boxes
- * would sit 10^5 away from spheres of radius 0.1 beside a floor sphere of
- * radius 10^5); and the power of two that brings the boxes' half-extent
- * within [1, 2) (within 2^+-1000). */
-static void bvh_frame(Bvh *bvh, BuildPrim *prims, size_t n)
+static int bvh_real_order(const void *a, const void *b)
+{
+    real x = *(const real *)a, y = *(const real *)b;
+
+    return (x > y) - (x < y);
+}
+
+/* Sets bvh's frame: on each axis the median of the centroids of up to
+ * BVH_FRAME_SAMPLE of the n primitives, spread evenly over them (all of
+ * them when there are no more), as the boxes' rounding margins grow with
+ * their distance from it and most boxes are near it (the centre of all
+ * the boxes would sit 10^5 away from spheres of radius 0.1 beside a floor
+ * sphere of radius 10^5); and the power of two that brings the boxes'
+ * half-extent within [1, 2) (within 2^+-1000). */
+static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
 {
     Box all;
     double half = 0;
+    real c[BVH_FRAME_SAMPLE];
+    size_t m = n < BVH_FRAME_SAMPLE ? n : BVH_FRAME_SAMPLE;
 
     box_empty(&all);
     for (size_t i = 0; i < n; i++)
         box_grow(&all, &prims[i].box);
     for (int a = 0; a < 3; a++) {
-        bvh_select(prims, 0, n, n / 2, a);
-        bvh->centre[a] = bvh_centroid(&prims[n / 2], a);
+        for (size_t i = 0; i < m; i++)
+            c[i] = bvh_centroid(&prims[(size_t)((unsigned long long)i * n / m)], a);
+        qsort(c, m, sizeof *c, bvh_real_order);
+        bvh->centre[a] = c[m / 2];
         half = fmax(half, 0.5 * (double)all.hi[a] - 0.5 * (double)all.lo[a]);
     }
     bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;
@@ -541,7 +575,7 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     size_t n = scene->sphere_count + scene->triangle_count;
     BuildPrim *prims;
     BuildNode *nodes;
-    real pad = bvh_padding(scene);
+    real pad = bvh_padding(scene, threads);
 
     memset(bvh, 0, sizeof *bvh);
     /* Binary nodes are numbered below 2n in 32 bits. */
