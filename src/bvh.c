@@ -139,7 +139,7 @@ static real bvh_padding(const Scene *scene, int threads)
     real m = bvh_farther(bvh_farther(bvh_farther(0, scene->camera.eye), scene->camera.top_left),
                          vec3_add(scene->camera.top_left,
                                   vec3_add(scene->camera.u, scene->camera.v)));
-    long spheres = (long)scene->sphere_count, triangles = (long)scene->triangle_count;
+    size_t spheres = scene->sphere_count, triangles = scene->triangle_count;
 
     (void)threads;
     for (size_t i = 0; i < scene->light_count; i++)
@@ -151,7 +151,7 @@ static real bvh_padding(const Scene *scene, int threads)
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) reduction(max : m) if (spheres >= BVH_TASK_MIN)
 #endif
-    for (long i = 0; i < spheres; i++) {
+    for (size_t i = 0; i < spheres; i++) {
         const Sphere *sp = &scene->spheres[i];
         real r = bvh_farther(0, sp->centre) + sp->radius;
         m = r > m ? r : m;
@@ -159,7 +159,7 @@ static real bvh_padding(const Scene *scene, int threads)
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) reduction(max : m) if (triangles >= BVH_TASK_MIN)
 #endif
-    for (long i = 0; i < triangles; i++)
+    for (size_t i = 0; i < triangles; i++)
         for (int k = 0; k < 3; k++)
             m = bvh_farther(m, scene->triangles[i].v[k]);
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
