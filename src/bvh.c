@@ -123,8 +123,8 @@ static real bvh_centroid(const BuildPrim *p, int axis)
 #define BVH_PAD_ULPS 0x1p16
 #endif
 
-/* Returns the larger of m and p's largest coordinate in magnitude, for
- * finite coordinates (as fmax() would, without its call). */
+/* Returns the larger of m and vec3_max_abs(p), for finite coordinates,
+ * by comparisons (fmax() is a library call, once per vertex here). */
 static inline real bvh_farther(real m, Vec3 p)
 {
     real x = fabs(p.x), y = fabs(p.y), z = fabs(p.z);
