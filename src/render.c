@@ -55,6 +55,12 @@ static int render_same_byte(double x, double slack, double eta)
     return colour_quantise(x - eta) == colour_quantise(x + slack + eta);
 }
 
+/* A pass that cannot prove its pixel's bytes is followed by one with a
+ * cut-off RENDER_REFINE times smaller; below RENDER_CUT_FLOOR levels, by
+ * one with every ray. */
+enum { RENDER_REFINE = 16 };
+#define RENDER_CUT_FLOOR 1e-6
+
 /*
  * Returns pixel (x, y), whose bytes are those of a render without the
  * cut-off whatever *proto allows. The rays the cut-off leaves out could
@@ -65,30 +71,38 @@ static int render_same_byte(double x, double slack, double eta)
  * levels of sums of at most 2 weighted terms, against eta = 10^-9 of it).
  * So the uncut colour lies in [x - eta, x + skipped / n + eta]; when that
  * whole interval quantises to one byte, that byte is the uncut render's.
- * Otherwise the pixel is traced again with every ray, which is the uncut
+ * Otherwise the pixel is traced again with a smaller cut-off, which holds
+ * the same argument, and in the end with every ray, which is the uncut
  * render itself.
  */
 RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
                            int x, int y, const TraceCut *proto, RayCounts *counts)
 {
     TraceCut cut;
-    Colour c;
-    double slack, eta;
 
     if (!proto)
         return render_samples(scene, opts, g, x, y, NULL, counts);
     cut = *proto;
-    c = render_samples(scene, opts, g, x, y, &cut, counts);
-    if (cut.cuts == 0)
-        return c;
-    counts->cut += cut.cuts;
-    slack = cut.skipped / g->n;
-    eta = 1e-9 * trace_cut_bound(&cut, opts->max_depth);
-    if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
-        render_same_byte(c.b, slack, eta))
-        return c;
-    counts->retraced++;
-    return render_samples(scene, opts, g, x, y, NULL, counts);
+    for (;;) {
+        Colour c = render_samples(scene, opts, g, x, y, &cut, counts);
+        double slack, eta;
+
+        if (cut.cuts == 0)
+            return c;
+        counts->cut += cut.cuts;
+        slack = cut.skipped / g->n;
+        eta = 1e-9 * trace_cut_bound(&cut, opts->max_depth);
+        if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
+            render_same_byte(c.b, slack, eta))
+            return c;
+        if (cut.cutoff == proto->cutoff)
+            counts->retraced++;
+        cut.cutoff /= RENDER_REFINE;
+        cut.skipped = 0;
+        cut.cuts = 0;
+        if (cut.cutoff < RENDER_CUT_FLOOR)
+            return render_samples(scene, opts, g, x, y, NULL, counts);
+    }
 }
 
 /* Renders row y of the image. */

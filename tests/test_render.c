@@ -503,10 +503,40 @@ static void render_cutoff_keeps_every_byte(void)
     CHECK(retraced > 0);
 }
 
+/* Returns every ray counts holds. */
+static unsigned long long render_rays(const RayCounts *c)
+{
+    return c->primary + c->shadow + c->reflection + c->refraction;
+}
+
+/* A pixel the cut-off cannot prove is traced again with smaller cut-offs
+ * before it is traced in full: even a cut-off of 50 levels, which proves
+ * few pixels at first, casts far fewer rays than the uncut render of these
+ * long ray trees. */
+static void render_cutoff_refines_before_tracing_in_full(void)
+{
+    const char *texts[] = {render_cut_course, render_cut_keyword};
+
+    for (int s = 0; s < 2; s++) {
+        RayCounts none = {0, 0, 0, 0, 0, 0}, big = {0, 0, 0, 0, 0, 0};
+        Image exact = render_with_cutoff(texts[s], 25, 0, &none);
+        Image img = render_with_cutoff(texts[s], 25, 50, &big);
+
+        CHECK(memcmp(exact.rgb, img.rgb, image_size(img.width, img.height)) == 0);
+        CHECK(big.retraced > 0);
+        if (render_rays(&big) * 2 > render_rays(&none))
+            test_fail(__FILE__, __LINE__, "scene %d: %llu rays with a cut-off of 50, %llu without",
+                      s, render_rays(&big), render_rays(&none));
+        image_free(&img);
+        image_free(&exact);
+    }
+}
+
 const TestCase render_tests[] = {
     {"render_cutoff_leaves_out_no_more_than_it_counts",
      render_cutoff_leaves_out_no_more_than_it_counts},
     {"render_cutoff_keeps_every_byte", render_cutoff_keeps_every_byte},
+    {"render_cutoff_refines_before_tracing_in_full", render_cutoff_refines_before_tracing_in_full},
     {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},
     {"render_pixel_centres_map_to_the_screen", render_pixel_centres_map_to_the_screen},
     {"render_sheared_screen", render_sheared_screen},
