@@ -242,7 +242,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "without the cut-off. What it trades is time: rays left out against"
     echo "pixels traced again. \`field\` is the benchmark's 100,000-sphere field"
     echo "at 480 × 270 (reflection 0.3: a ray at depth k weighs 0.3^k). Times are"
-    echo "the whole command's, reading and building included."
+    echo "the whole command's (medians of $RUNS runs), reading and building"
+    echo "included."
     echo
     echo "![cut-off](trade-cutoff.svg)"
     echo
