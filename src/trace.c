@@ -252,6 +252,31 @@ static inline Shade trace_shade(const Scene *scene, const Ray *ray, const Hit *h
     return sh;
 }
 
+/* The largest channel of c. */
+static double trace_max_channel(Colour c)
+{
+    return fmax(c.r, fmax(c.g, c.b));
+}
+
+/* Says whether cut allows leaving out a shadow ray, the light it tests
+ * adding lit (a colour, E = 1) to a ray reached with weight: when weight
+ * times lit's largest channel is below the cut-off, E is taken as 0 and
+ * that product goes to cut->skipped (E is in [0, 1], so the pixel lacks at
+ * most that much; see render.c). */
+static inline int trace_cut_shadow(TraceCut *cut, double weight, Colour lit)
+{
+    double most;
+
+    if (!cut)
+        return 0;
+    most = weight * trace_max_channel(lit);
+    if (!(most < cut->cutoff))
+        return 0;
+    cut->skipped += most;
+    cut->cuts++;
+    return 1;
+}
+
 /* Returns the share E of the light that reaches the shaded point sh (whose
  * surface normal n faces the viewer) from the light in direction to_light
  * (towards a point light: the vector to it; a distant light: its unit
@@ -274,25 +299,46 @@ static inline double trace_visibility(const Scene *scene, const Shade *sh, Vec3 
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
  * shaded point sh: ns is its shading normal and n its surface normal, both
- * facing the viewer. */
+ * facing the viewer; 0 when cut allows leaving out its shadow ray for a
+ * term that reaches the pixel with weight. */
 static inline Colour trace_direct(const Scene *scene, const Light *light, const Shade *sh, Vec3 n,
-                                  Vec3 ns, RayCounts *counts)
+                                  Vec3 ns, double weight, TraceCut *cut, RayCounts *counts)
 {
     Vec3 to_light = vec3_sub(light->position, sh->sp.point);
     double cos_a = vec3_dot(ns, vec3_normalize(to_light)), e;
-    Colour ci = sh->colour;
+    Colour ci = sh->colour, lit;
 
     /* Facing away from the light (or the light on the point: NaN) means no
      * light, whatever E is: no shadow ray needed. */
     if (!(cos_a > 0))
         return colour(0, 0, 0);
+    lit = colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
+                 cos_a * (ci.b * light->colour.b / 255));
+    if (trace_cut_shadow(cut, weight, lit))
+        return colour(0, 0, 0);
     e = trace_visibility(scene, sh, n, light, to_light, counts);
     if (!(e > 0))
         return colour(0, 0, 0);
     if (e != 1)
-        cos_a *= e;
-    return colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
-                  cos_a * (ci.b * light->colour.b / 255));
+        return colour((cos_a * e) * (ci.r * light->colour.r / 255),
+                      (cos_a * e) * (ci.g * light->colour.g / 255),
+                      (cos_a * e) * (ci.b * light->colour.b / 255));
+    return lit;
+}
+
+/* Returns what a light of colour Cs adds to a point of colour ci for
+ * material pm per unit of E i: kd cos_a Ci Cs / 255 + ks max(0, N . H)^alpha
+ * Cs, with ns the shading normal, l and view unit vectors towards the light
+ * and the viewer. */
+static inline Colour trace_phong_light(const PhongMaterial *pm, Colour ci, Colour cs, double cos_a,
+                                       Vec3 ns, Vec3 l, Vec3 view)
+{
+    double nh = vec3_dot(ns, vec3_normalize(vec3_add(l, view)));
+    double spec = nh > 0 ? pm->ks * power(nh < 1 ? nh : 1, pm->shininess) : 0;
+
+    return colour(pm->kd * cos_a * (ci.r * cs.r / 255) + spec * cs.r,
+                  pm->kd * cos_a * (ci.g * cs.g / 255) + spec * cs.g,
+                  pm->kd * cos_a * (ci.b * cs.b / 255) + spec * cs.b);
 }
 
 /* Returns the Blinn-Phong local term of docs/scene-format.md at sh, for
@@ -300,9 +346,11 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
  * facing normals n and ns (see trace_direct()):
  *     ka Ia Ci / 255 + sum over lights of E i (kd max(0, N . L) Ci Cs / 255
  *                                              + ks max(0, N . H)^alpha Cs)
- * with H the unit vector halfway between L and view. */
+ * with H the unit vector halfway between L and view; leaves out the shadow
+ * rays cut allows for a term that reaches the pixel with weight. */
 static inline Colour trace_phong(const Scene *scene, const Shade *sh, const PhongMaterial *pm,
-                                 Vec3 n, Vec3 ns, Vec3 view, RayCounts *counts)
+                                 Vec3 n, Vec3 ns, Vec3 view, double weight, TraceCut *cut,
+                                 RayCounts *counts)
 {
     Colour ci = sh->colour, c;
 
@@ -313,34 +361,38 @@ static inline Colour trace_phong(const Scene *scene, const Shade *sh, const Phon
         Vec3 to_light = light->distant ? light->to_light
                                        : vec3_sub(light->position, sh->sp.point);
         Vec3 l = light->distant ? to_light : vec3_normalize(to_light);
-        double cos_a = vec3_dot(ns, l), e, nh, spec;
+        double cos_a = vec3_dot(ns, l), e;
+        Colour lit;
+        int known = 0;
 
         if (!(cos_a > 0))
             continue;
+        if (cut) {
+            lit = trace_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
+            known = 1;
+            if (trace_cut_shadow(cut, weight, colour_scale(lit, light->intensity)))
+                continue;
+        }
         e = trace_visibility(scene, sh, n, light, to_light, counts) * light->intensity;
         if (!(e > 0))
             continue;
-        nh = vec3_dot(ns, vec3_normalize(vec3_add(l, view)));
-        spec = nh > 0 ? pm->ks * power(nh < 1 ? nh : 1, pm->shininess) : 0;
-        c = colour_add(c, colour(e * (pm->kd * cos_a * (ci.r * light->colour.r / 255) +
-                                      spec * light->colour.r),
-                                 e * (pm->kd * cos_a * (ci.g * light->colour.g / 255) +
-                                      spec * light->colour.g),
-                                 e * (pm->kd * cos_a * (ci.b * light->colour.b / 255) +
-                                      spec * light->colour.b)));
+        if (!known)
+            lit = trace_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
+        c = colour_add(c, colour_scale(lit, e));
     }
     return c;
 }
 
 /* Returns the local term: the ambient light plus every light's direct
- * contribution, at sh with facing normals n and ns (see trace_direct()). */
+ * contribution, at sh with facing normals n and ns (see trace_direct(),
+ * also for weight and cut). */
 static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, Vec3 ns,
-                                 RayCounts *counts)
+                                 double weight, TraceCut *cut, RayCounts *counts)
 {
-    Colour c = trace_direct(scene, &scene->lights[0], sh, n, ns, counts);
+    Colour c = trace_direct(scene, &scene->lights[0], sh, n, ns, weight, cut, counts);
 
     for (size_t i = 1; i < scene->light_count; i++)
-        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n, ns, counts));
+        c = colour_add(c, trace_direct(scene, &scene->lights[i], sh, n, ns, weight, cut, counts));
     if (scene->has_ambient)
         c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
                               scene->ambient.g * sh->colour.g / 255,
@@ -416,9 +468,10 @@ static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_
         /* Whitted's sum: the Blinn-Phong weights already scale the local
          * term. */
         c = trace_phong(scene, &sh, &scene->phong[sh.material->phong], n, ns,
-                        vec3_normalize(vec3_neg(ray->dir)), counts);
+                        vec3_normalize(vec3_neg(ray->dir)), weight, cut, counts);
     else
-        c = colour_scale(trace_local(scene, &sh, n, ns, counts), own > 0 ? own : 0);
+        c = colour_scale(trace_local(scene, &sh, n, ns, weight * (own > 0 ? own : 0), cut, counts),
+                         own > 0 ? own : 0);
     if (depth + 1 > max_depth)
         return c;
     if (t > 0) {
@@ -441,12 +494,6 @@ static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_
                                           depth + 1, max_depth, weight, cut, counts));
     }
     return c;
-}
-
-/* The largest channel of c. */
-static double trace_max_channel(Colour c)
-{
-    return fmax(c.r, fmax(c.g, c.b));
 }
 
 void trace_cut_init(TraceCut *cut, const Scene *scene, double cutoff)

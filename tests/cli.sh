@@ -223,7 +223,11 @@ expect_exit "--check bad scene" 1 "$RT" --check "$T/short.txt"
 expect_grep "--check bad scene position" "short.txt:8:20: error:" "$T/err"
 expect_exit "--check takes one file" 2 "$RT" --check "$scene" "$T/x.ppm"
 expect_exit "-v" 0 "$RT" -v "$scene" "$T/v.ppm"
-expect_grep "-v rays" "raytrace: rays: 160000 primary, 29209 shadow, 47899 reflection, 0 refraction, 237108 in all" "$T/err"
+expect_grep "-v rays" "raytrace: rays: 160000 primary, 29207 shadow, 47899 reflection, 0 refraction, 237106 in all" "$T/err"
+expect_grep "-v cut-off" "raytrace: cut-off 0.02 levels: 2 rays left out, 0 pixels traced again" "$T/err"
+expect_exit "-v --cutoff 0" 0 "$RT" -v --cutoff 0 "$scene" "$T/v0.ppm"
+expect_grep "-v rays, every one" "raytrace: rays: 160000 primary, 29209 shadow, 47899 reflection, 0 refraction, 237108 in all" "$T/err"
+cmp -s "$T/v.ppm" "$T/v0.ppm" && pass || fail "-v --cutoff 0 renders other bytes"
 expect_grep "-v speed" "Mrays/s" "$T/err"
 
 # --- the bounding volume hierarchy changes no byte ---

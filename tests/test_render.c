@@ -426,11 +426,13 @@ static const char render_cut_keyword[] =
 
 /* The colour a cut-off leaves out of a ray is at least 0 and at most what
  * it adds up in skipped (to within rounding): the bound render.c relies on
- * to keep the bytes exact. Many rays, an aggressive cut-off, both rules. */
+ * to keep the bytes exact. Many rays, an aggressive cut-off, both rules;
+ * mirror, refracted and shadow rays are left out. */
 static void render_cutoff_leaves_out_no_more_than_it_counts(void)
 {
     const char *texts[] = {render_cut_course, render_cut_keyword};
     int bad = 0, cuts = 0;
+    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0};
 
     for (int s = 0; s < 2; s++) {
         Scene sc;
@@ -440,13 +442,12 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
         for (int i = 0; i < 4000; i++) {
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
-            RayCounts counts = {0, 0, 0, 0, 0, 0};
             TraceCut cut;
-            Colour full = trace_ray(&sc, &ray, 0, 30, &counts), part;
+            Colour full = trace_ray(&sc, &ray, 0, 30, &all), part;
             double eta;
 
             trace_cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
-            part = trace_ray_cut(&sc, &ray, 30, &cut, &counts);
+            part = trace_ray_cut(&sc, &ray, 30, &cut, &left);
             eta = 1e-9 * trace_cut_bound(&cut, 30);
             cuts += cut.cuts > 0;
             bad += !(full.r - part.r >= -eta && full.r - part.r <= cut.skipped + eta);
@@ -458,6 +459,37 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
     CHECK_INT(0, bad);
     if (cuts < 1000) /* the cut-off must have left rays out */
         test_fail(__FILE__, __LINE__, "only %d rays of 8000 had rays left out", cuts);
+    CHECK(left.reflection < all.reflection && left.refraction < all.refraction);
+}
+
+/* A shadow ray is left out when the light it tests could add less than the
+ * cut-off: on a dark ball (4 4 4, no mirror) lit by a white light, no ray
+ * can add 5 levels, so a cut-off of 5 casts none, and the colour lacks no
+ * more than it counts. */
+static void render_cutoff_leaves_out_shadow_rays(void)
+{
+    static const char text[] = "0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n8\n0 0 0\n"
+                               "5 5 -5 255 255 255\nsphere: 0 0 0 1 4 4 4 0\n";
+    Scene sc;
+    Error err;
+    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0};
+    int bad = 0;
+
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
+    for (int i = 0; i < 100; i++) {
+        Ray ray = {vec3(0, 0, -5),
+                   vec3_normalize(vec3(rng_range(-0.2, 0.2), rng_range(-0.2, 0.2), 1))};
+        TraceCut cut;
+        Colour full = trace_ray(&sc, &ray, 0, 10, &all), part;
+
+        trace_cut_init(&cut, &sc, 5);
+        part = trace_ray_cut(&sc, &ray, 10, &cut, &left);
+        bad += !(full.r - part.r >= 0 && full.r - part.r <= cut.skipped);
+    }
+    scene_free(&sc);
+    CHECK_INT(0, bad);
+    CHECK(all.shadow > 50);
+    CHECK(left.shadow == 0);
 }
 
 /* Renders text with max_depth and cutoff; returns the image (free it). */
@@ -535,6 +567,7 @@ static void render_cutoff_refines_before_tracing_in_full(void)
 const TestCase render_tests[] = {
     {"render_cutoff_leaves_out_no_more_than_it_counts",
      render_cutoff_leaves_out_no_more_than_it_counts},
+    {"render_cutoff_leaves_out_shadow_rays", render_cutoff_leaves_out_shadow_rays},
     {"render_cutoff_keeps_every_byte", render_cutoff_keeps_every_byte},
     {"render_cutoff_refines_before_tracing_in_full", render_cutoff_refines_before_tracing_in_full},
     {"render_tiny_scenes_exactly", render_tiny_scenes_exactly},

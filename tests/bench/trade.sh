@@ -111,7 +111,7 @@ for s in glass keyword field; do
     f=scenes/$s.txt depths="10 30"
     [ $s = field ] && f=$DIR/field-cut.txt depths=10
     for d in $depths; do
-        for c in 0 0.000001 0.0001 0.001 0.01 0.05 0.1 1; do
+        for c in 0 0.000001 0.0001 0.001 0.01 0.02 0.05 0.1 1; do
             t=$(timed "$s-c" --cutoff "$c" -d "$d" "$f") || exit 1
             [ "$c" = 0 ] && cp "$DIR/$s-c.ppm" "$DIR/$s-c0.ppm"
             cmp -s "$DIR/$s-c0.ppm" "$DIR/$s-c.ppm" && same=yes || same=NO
