@@ -22,8 +22,9 @@ typedef void (*RenderProgress)(void *ctx, int rows_done, int rows_total);
 typedef struct {
     int max_depth;           /* deepest secondary ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
     int samples;             /* samples per pixel, 1..SAMPLER_MAX */
-    double cutoff;           /* leave out secondary rays that could bring
-                                less than this many levels (trace.h); the
+    double cutoff;           /* leave out secondary and shadow rays that
+                                could bring less than this many levels
+                                (trace.h); the
                                 bytes stay those of an uncut render (PFM:
                                 no cut-off); 0 for none */
     int threads;             /* worker threads, >= 1; 1 without OpenMP */

@@ -44,7 +44,7 @@ typedef struct {
     unsigned long long shadow;     /* towards a light */
     unsigned long long reflection; /* mirror rays */
     unsigned long long refraction; /* refracted rays */
-    unsigned long long cut;        /* secondary rays the cut-off left out */
+    unsigned long long cut;        /* secondary and shadow rays the cut-off left out */
     unsigned long long retraced;   /* pixels traced again without it */
 } RayCounts;
 
@@ -71,7 +71,8 @@ double trace_transmittance(const Scene *scene, const Ray *ray, real tmax);
 /* How much of a pixel's ray tree may be left out, and what was: a
  * secondary ray whose weight (the product of the mirror and transparency
  * weights down to it) times the most any ray at its depth can see falls
- * below `cutoff` levels is not traced. */
+ * below `cutoff` levels is not traced, nor a shadow ray whose light, lit,
+ * would add less than that. */
 typedef struct {
     double cutoff;    /* levels; 0 traces every ray */
     double base;      /* the most a ray with no levels left below it can see */
