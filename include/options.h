@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-#define OPTIONS_DEFAULT_CUTOFF 0.02 /* levels */
+#define OPTIONS_DEFAULT_CUTOFF 0.1 /* levels */
 #define OPTIONS_DEFAULT_MEMORY_LIMIT ((size_t)4 << 30) /* bytes: 4 GiB */
 
 typedef struct {

@@ -44,8 +44,9 @@ typedef struct {
     unsigned long long shadow;     /* towards a light */
     unsigned long long reflection; /* mirror rays */
     unsigned long long refraction; /* refracted rays */
-    unsigned long long cut;        /* secondary and shadow rays the cut-off left out */
-    unsigned long long retraced;   /* pixels traced again without it */
+    unsigned long long cut;        /* secondary and shadow rays the cut-off left
+                                      out, and no later pass traced */
+    unsigned long long refined;    /* pixels whose left-out rays were traced */
 } RayCounts;
 
 typedef struct {
@@ -68,11 +69,28 @@ int trace_occluded(const Scene *scene, const Ray *ray, real tmax);
  * the product of the transparency T of every surface crossing there. */
 double trace_transmittance(const Scene *scene, const Ray *ray, real tmax);
 
+/* The kinds of ray the cut-off leaves out. */
+typedef enum { TRACE_SHADOW, TRACE_REFLECTION, TRACE_REFRACTION } TraceRayKind;
+
+/* A ray the cut-off left out, kept so that it can be traced later: a
+ * mirror or refracted ray of depth `depth`, whose colour the sample's sum
+ * takes times weight, or a shadow ray (up to t = tmax), which adds weight x
+ * E x lit. */
+typedef struct {
+    Ray ray;
+    TraceRayKind kind;
+    int depth;
+    real tmax;
+    double weight;
+    Colour lit;
+} TraceDeferred;
+
 /* How much of a pixel's ray tree may be left out, and what was: a
  * secondary ray whose weight (the product of the mirror and transparency
  * weights down to it) times the most any ray at its depth can see falls
  * below `cutoff` levels is not traced, nor a shadow ray whose light, lit,
- * would add less than that. */
+ * would add less than that; each is kept in deferred (unless there is no
+ * memory for it: then it is traced). */
 typedef struct {
     double cutoff;    /* levels; 0 traces every ray */
     double base;      /* the most a ray with no levels left below it can see */
@@ -80,11 +98,24 @@ typedef struct {
     double skipped;   /* sum of weight x bound over the rays left out: the
                          most the colour lacks because of them */
     unsigned long long cuts; /* rays left out */
+    TraceDeferred *deferred; /* the rays left out, in the order met */
+    size_t deferred_count;
+    size_t deferred_capacity;
 } TraceCut;
 
 /* Sets up *cut for scene with the given cutoff (levels, >= 0), the bounds
- * proved in trace.c, nothing skipped yet. */
+ * proved in trace.c, nothing skipped or kept yet; trace_cut_free()
+ * releases what it comes to hold. */
 void trace_cut_init(TraceCut *cut, const struct Scene *scene, double cutoff);
+
+/* Releases the rays cut keeps. */
+void trace_cut_free(TraceCut *cut);
+
+/* Traces the ray d that a cut-off left out, leaving out in turn what cut
+ * allows (and keeping it in cut, which may move its deferred array);
+ * returns what it adds to its sample's colour. */
+Colour trace_deferred(const struct Scene *scene, TraceDeferred d, int max_depth, TraceCut *cut,
+                      RayCounts *counts);
 
 /* The most a ray with `levels` levels of secondary rays left below it can
  * see, in any channel. */

@@ -188,8 +188,8 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, int th
             c->primary, c->shadow, c->reflection, c->refraction, all);
     if (ropts->cutoff > 0)
         fprintf(stderr,
-                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels traced again\n",
-                ropts->cutoff, c->cut, c->retraced);
+                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels refined\n",
+                ropts->cutoff, c->cut, c->refined);
     fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
             seconds > 0 ? all / seconds / 1e6 : 0.0);
     fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);

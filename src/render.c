@@ -55,64 +55,79 @@ static int render_same_byte(double x, double slack, double eta)
     return colour_quantise(x - eta) == colour_quantise(x + slack + eta);
 }
 
-/* A pass that cannot prove its pixel's bytes is followed by one with a
- * cut-off RENDER_REFINE times smaller; below RENDER_CUT_FLOOR levels, by
- * one with every ray. */
+/* A pass that cannot prove its pixel's bytes is followed by one that
+ * traces the rays it left out with a cut-off RENDER_REFINE times smaller;
+ * below RENDER_CUT_FLOOR levels, the pixel is traced anew with every ray. */
 enum { RENDER_REFINE = 16 };
 #define RENDER_CUT_FLOOR 1e-6
 
 /*
  * Returns pixel (x, y), whose bytes are those of a render without the
- * cut-off whatever *proto allows. The rays the cut-off leaves out could
- * have added at most cut.skipped / n to each channel of the mean (each is
- * weight x colour, the colour within the bound trace_cut_init() proves);
- * leaving them out also changes the rounding of the sums that would have
- * held them, by far less than eta (under 10^-12 of the bound after 1,000
- * levels of sums of at most 2 weighted terms, against eta = 10^-9 of it).
- * So the uncut colour lies in [x - eta, x + skipped / n + eta]; when that
- * whole interval quantises to one byte, that byte is the uncut render's.
- * Otherwise the pixel is traced again with a smaller cut-off, which holds
- * the same argument, and in the end with every ray, which is the uncut
- * render itself.
+ * cut-off whatever cutoff (levels, > 0) allows; cut is the thread's, set up
+ * by trace_cut_init(). The rays the cut-off leaves out could have added at
+ * most cut->skipped / n to each channel of the mean (each is weight x
+ * colour, the colour within the bound trace_cut_init() proves, or weight x
+ * E x lit for a shadow ray); leaving them out, or adding them in later,
+ * also changes the rounding of the sums that would have held them, by far
+ * less than eta (under 10^-12 of the bound after 1,000 levels of sums of at
+ * most 2 weighted terms, against eta = 10^-9 of it). So the uncut colour
+ * lies in [x - eta, x + skipped / n + eta]; when that whole interval
+ * quantises to one byte, that byte is the uncut render's. Otherwise the
+ * rays left out are traced, with a smaller cut-off whose own left-out rays
+ * hold the same argument, and in the end the pixel is traced with every
+ * ray, which is the uncut render itself.
  */
 RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                           int x, int y, const TraceCut *proto, RayCounts *counts)
+                           int x, int y, double cutoff, TraceCut *cut, RayCounts *counts)
 {
-    TraceCut cut;
+    Colour c;
+    double level = cutoff; /* this pass's cut-off */
+    size_t done = 0;       /* deferred rays traced so far */
 
-    if (!proto)
+    if (!cut)
         return render_samples(scene, opts, g, x, y, NULL, counts);
-    cut = *proto;
-    for (;;) {
-        Colour c = render_samples(scene, opts, g, x, y, &cut, counts);
-        double slack, eta;
+    cut->cutoff = level;
+    cut->skipped = 0;
+    cut->cuts = 0;
+    cut->deferred_count = 0;
+    c = render_samples(scene, opts, g, x, y, cut, counts);
+    for (int pass = 0;; pass++) {
+        double slack = cut->skipped / g->n, eta;
+        size_t end = cut->deferred_count;
 
-        if (cut.cuts == 0)
+        if (cut->cuts == 0 && pass == 0)
             return c;
-        counts->cut += cut.cuts;
-        slack = cut.skipped / g->n;
-        eta = 1e-9 * trace_cut_bound(&cut, opts->max_depth);
+        eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
         if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
-            render_same_byte(c.b, slack, eta))
+            render_same_byte(c.b, slack, eta)) {
+            counts->cut += end - done; /* left out for good */
             return c;
-        if (cut.cutoff == proto->cutoff)
-            counts->retraced++;
-        cut.cutoff /= RENDER_REFINE;
-        cut.skipped = 0;
-        cut.cuts = 0;
-        if (cut.cutoff < RENDER_CUT_FLOOR)
+        }
+        if (pass == 0)
+            counts->refined++;
+        level /= RENDER_REFINE;
+        if (level < RENDER_CUT_FLOOR)
             return render_samples(scene, opts, g, x, y, NULL, counts);
+        /* What this pass left out, traced; what that leaves out is the
+         * next pass's. */
+        cut->cutoff = level;
+        cut->skipped = 0;
+        cut->cuts = 0;
+        for (; done < end; done++)
+            c = colour_add(c, colour_scale(trace_deferred(scene, cut->deferred[done],
+                                                          opts->max_depth, cut, counts),
+                                           1.0 / g->n));
     }
 }
 
-/* Renders row y of the image. */
+/* Renders row y of the image (cut as in render_pixel()). */
 static void render_row(const Scene *scene, const RenderOptions *opts, Image *img, int y,
-                       const TraceCut *proto, RayCounts *counts)
+                       TraceCut *cut, RayCounts *counts)
 {
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
 
     for (int x = 0; x < img->width; x++)
-        image_set(img, x, y, render_pixel(scene, opts, &g, x, y, proto, counts));
+        image_set(img, x, y, render_pixel(scene, opts, &g, x, y, opts->cutoff, cut, counts));
 }
 
 /* Adds the counts of b to a. */
@@ -123,13 +138,13 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
     a->reflection += b->reflection;
     a->refraction += b->refraction;
     a->cut += b->cut;
-    a->retraced += b->retraced;
+    a->refined += b->refined;
 }
 
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
 {
     int done = 0, used = 1;
-    TraceCut proto;
+    TraceCut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
 
@@ -141,6 +156,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #endif
     {
         RayCounts mine = {0, 0, 0, 0, 0, 0};
+        TraceCut cut = proto; /* the thread's own: it keeps the rays left out */
 
 #ifdef _OPENMP
 #pragma omp single
@@ -149,7 +165,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (int y = 0; y < img->height; y++) {
-            render_row(scene, opts, img, y, cutting ? &proto : NULL, &mine);
+            render_row(scene, opts, img, y, cutting ? &cut : NULL, &mine);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)
@@ -163,6 +179,8 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #endif
             render_add_counts(counts, &mine);
         }
+        if (cutting)
+            trace_cut_free(&cut);
     }
     return used;
 }

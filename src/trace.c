@@ -2,6 +2,8 @@
 #include "trace.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
 
 #include "bvh.h"
 #include "power.h"
@@ -258,13 +260,73 @@ static double trace_max_channel(Colour c)
     return fmax(c.r, fmax(c.g, c.b));
 }
 
-/* Says whether cut allows leaving out a shadow ray, the light it tests
- * adding lit (a colour, E = 1) to a ray reached with weight: when weight
- * times lit's largest channel is below the cut-off, E is taken as 0 and
- * that product goes to cut->skipped (E is in [0, 1], so the pixel lacks at
- * most that much; see render.c). */
-static inline int trace_cut_shadow(TraceCut *cut, double weight, Colour lit)
+/* Keeps d in cut; returns 1, or 0 when there is no memory for it. */
+static int trace_defer(TraceCut *cut, const TraceDeferred *d)
 {
+    if (cut->deferred_count == cut->deferred_capacity) {
+        size_t capacity = cut->deferred_capacity ? 2 * cut->deferred_capacity : 64;
+        TraceDeferred *grown;
+
+        if (capacity > SIZE_MAX / sizeof *grown ||
+            !(grown = realloc(cut->deferred, capacity * sizeof *grown)))
+            return 0;
+        cut->deferred = grown;
+        cut->deferred_capacity = capacity;
+    }
+    cut->deferred[cut->deferred_count++] = *d;
+    return 1;
+}
+
+/* Says whether cut allows leaving out d, a ray whose colour adds at most
+ * most to its sample: when most is below the cut-off and d could be kept,
+ * most goes to cut->skipped (see render.c for how the pixel's bytes stay
+ * exact). */
+static int trace_cut_ray(TraceCut *cut, double most, const TraceDeferred *d)
+{
+    if (!cut || !(most < cut->cutoff) || !trace_defer(cut, d))
+        return 0;
+    cut->skipped += most;
+    cut->cuts++;
+    return 1;
+}
+
+/* Returns the shadow ray from the shaded point sh (whose surface normal n
+ * faces the viewer) to the light in direction to_light (towards a point
+ * light: the vector to it; a distant light: its unit to_light), and in
+ * *tmax where it ends. */
+static inline Ray trace_shadow_ray(const Shade *sh, Vec3 n, const Light *light, Vec3 to_light,
+                                   real *tmax)
+{
+    Ray shadow;
+
+    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
+    /* To a point light, the segment ends at the light (t = 1); towards a
+     * distant one, the ray is unbounded. */
+    shadow.dir = light->distant ? to_light : vec3_sub(light->position, shadow.origin);
+    *tmax = light->distant ? INFINITY : 1;
+    return shadow;
+}
+
+/* Returns the share E of the light that passes along shadow up to tmax,
+ * casting it: 1 or 0 in opaque scenes, the product of the transparencies
+ * crossed in others. */
+static inline double trace_light_share(const Scene *scene, const Ray *shadow, real tmax,
+                                       RayCounts *counts)
+{
+    counts->shadow++;
+    if (scene->has_transparency)
+        return trace_transmittance(scene, shadow, tmax);
+    return trace_occluded(scene, shadow, tmax) ? 0 : 1;
+}
+
+/* Says whether cut allows leaving out the shadow ray from sh towards light
+ * (see trace_shadow_ray()), the light adding lit (a colour, E = 1) to a ray
+ * reached with weight: E is then taken as 0, and weight times lit's largest
+ * channel is what the pixel may lack (E is in [0, 1]). */
+static inline int trace_cut_shadow(TraceCut *cut, double weight, Colour lit, const Shade *sh,
+                                   Vec3 n, const Light *light, Vec3 to_light)
+{
+    TraceDeferred d;
     double most;
 
     if (!cut)
@@ -272,29 +334,23 @@ static inline int trace_cut_shadow(TraceCut *cut, double weight, Colour lit)
     most = weight * trace_max_channel(lit);
     if (!(most < cut->cutoff))
         return 0;
-    cut->skipped += most;
-    cut->cuts++;
-    return 1;
+    d.ray = trace_shadow_ray(sh, n, light, to_light, &d.tmax);
+    d.kind = TRACE_SHADOW;
+    d.depth = 0;
+    d.weight = weight;
+    d.lit = lit;
+    return trace_cut_ray(cut, most, &d);
 }
 
-/* Returns the share E of the light that reaches the shaded point sh (whose
- * surface normal n faces the viewer) from the light in direction to_light
- * (towards a point light: the vector to it; a distant light: its unit
- * to_light), casting one shadow ray: 1 or 0 in opaque scenes, the product
- * of the transparencies crossed in others. */
+/* Returns the share E of the light that reaches the shaded point sh from
+ * light (see trace_shadow_ray()), casting one shadow ray. */
 static inline double trace_visibility(const Scene *scene, const Shade *sh, Vec3 n,
                                       const Light *light, Vec3 to_light, RayCounts *counts)
 {
-    Ray shadow;
+    real tmax;
+    Ray shadow = trace_shadow_ray(sh, n, light, to_light, &tmax);
 
-    counts->shadow++;
-    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
-    /* To a point light, the segment ends at the light (t = 1); towards a
-     * distant one, the ray is unbounded. */
-    shadow.dir = light->distant ? to_light : vec3_sub(light->position, shadow.origin);
-    if (scene->has_transparency)
-        return trace_transmittance(scene, &shadow, light->distant ? INFINITY : 1);
-    return trace_occluded(scene, &shadow, light->distant ? INFINITY : 1) ? 0 : 1;
+    return trace_light_share(scene, &shadow, tmax, counts);
 }
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
@@ -314,7 +370,7 @@ static inline Colour trace_direct(const Scene *scene, const Light *light, const 
         return colour(0, 0, 0);
     lit = colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
                  cos_a * (ci.b * light->colour.b / 255));
-    if (trace_cut_shadow(cut, weight, lit))
+    if (trace_cut_shadow(cut, weight, lit, sh, n, light, to_light))
         return colour(0, 0, 0);
     e = trace_visibility(scene, sh, n, light, to_light, counts);
     if (!(e > 0))
@@ -370,7 +426,8 @@ static inline Colour trace_phong(const Scene *scene, const Shade *sh, const Phon
         if (cut) {
             lit = trace_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
             known = 1;
-            if (trace_cut_shadow(cut, weight, colour_scale(lit, light->intensity)))
+            if (trace_cut_shadow(cut, weight, colour_scale(lit, light->intensity), sh, n, light,
+                                 to_light))
                 continue;
         }
         e = trace_visibility(scene, sh, n, light, to_light, counts) * light->intensity;
@@ -407,29 +464,46 @@ static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, Ve
 static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_depth,
                          double weight, TraceCut *cut, RayCounts *counts);
 
-/* Returns share times the colour seen along the ray leaving sh in direction
- * dir at depth `depth`, reached with weight times share, or 0 when cut
- * allows leaving it out: its colour is at most the bound for its depth, so
- * the pixel lacks at most weight x share x bound of it, which cut->skipped
- * adds up (see render.c for how the pixel's bytes stay exact). */
+/* Returns share times the colour seen along the ray of kind `kind` leaving
+ * sh in direction dir at depth `depth`, reached with weight times share, or
+ * 0 when cut allows leaving it out: its colour is at most the bound for its
+ * depth, so the pixel lacks at most weight x share x bound of it. */
 static inline Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n, Vec3 dir,
-                                     double share, int depth, int max_depth, double weight,
-                                     TraceCut *cut, RayCounts *counts)
+                                     TraceRayKind kind, double share, int depth, int max_depth,
+                                     double weight, TraceCut *cut, RayCounts *counts)
 {
-    Ray r;
+    TraceDeferred d;
 
     weight *= share;
+    d.ray.dir = dir;
+    d.ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
     if (cut) {
-        double most = weight * trace_cut_bound(cut, max_depth - depth);
-        if (most < cut->cutoff) {
-            cut->skipped += most;
-            cut->cuts++;
+        d.kind = kind;
+        d.depth = depth;
+        d.tmax = INFINITY;
+        d.weight = weight;
+        d.lit = colour(0, 0, 0);
+        if (trace_cut_ray(cut, weight * trace_cut_bound(cut, max_depth - depth), &d))
             return colour(0, 0, 0);
-        }
     }
-    r.dir = dir;
-    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
-    return colour_scale(trace_path(scene, &r, depth, max_depth, weight, cut, counts), share);
+    if (kind == TRACE_REFRACTION)
+        counts->refraction++;
+    else
+        counts->reflection++;
+    return colour_scale(trace_path(scene, &d.ray, depth, max_depth, weight, cut, counts), share);
+}
+
+Colour trace_deferred(const Scene *scene, TraceDeferred d, int max_depth, TraceCut *cut,
+                      RayCounts *counts)
+{
+    if (d.kind == TRACE_SHADOW)
+        return colour_scale(d.lit, d.weight * trace_light_share(scene, &d.ray, d.tmax, counts));
+    if (d.kind == TRACE_REFRACTION)
+        counts->refraction++;
+    else
+        counts->reflection++;
+    return colour_scale(trace_path(scene, &d.ray, d.depth, max_depth, d.weight, cut, counts),
+                        d.weight);
 }
 
 Colour trace_ray(const Scene *scene, const Ray *ray, int depth, int max_depth,
@@ -481,18 +555,16 @@ static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_
         Vec3 bent;
 
         if (ray_refract(ray->dir, ns, eta, &bent)) {
-            counts->refraction++;
-            c = colour_add(c, trace_secondary(scene, &sh, n, bent, t, depth + 1, max_depth,
-                                              weight, cut, counts));
+            c = colour_add(c, trace_secondary(scene, &sh, n, bent, TRACE_REFRACTION, t, depth + 1,
+                                              max_depth, weight, cut, counts));
         } else {
             r += t; /* total internal reflection: the share T is mirrored */
         }
     }
-    if (r > 0) {
-        counts->reflection++;
-        c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, ns), r,
-                                          depth + 1, max_depth, weight, cut, counts));
-    }
+    if (r > 0)
+        c = colour_add(c, trace_secondary(scene, &sh, n, ray_reflect(ray->dir, ns),
+                                          TRACE_REFLECTION, r, depth + 1, max_depth, weight, cut,
+                                          counts));
     return c;
 }
 
@@ -503,6 +575,9 @@ void trace_cut_init(TraceCut *cut, const Scene *scene, double cutoff)
     cut->cutoff = cutoff;
     cut->skipped = 0;
     cut->cuts = 0;
+    cut->deferred = NULL;
+    cut->deferred_count = 0;
+    cut->deferred_capacity = 0;
     for (size_t i = 0; i < scene->light_count; i++)
         lights += trace_max_channel(scene->lights[i].colour) *
                   (scene->phong_count > 0 ? scene->lights[i].intensity : 1);
@@ -527,4 +602,12 @@ void trace_cut_init(TraceCut *cut, const Scene *scene, double cutoff)
     }
     cut->base = fmax(bg, local);
     cut->per_level = local;
+}
+
+void trace_cut_free(TraceCut *cut)
+{
+    free(cut->deferred);
+    cut->deferred = NULL;
+    cut->deferred_count = 0;
+    cut->deferred_capacity = 0;
 }

@@ -147,7 +147,7 @@ for s in keyword mesh; do
     "$RT" -d 30 --cutoff 0 "scenes/$s.txt" "$T/cut0.ppm" &&
         "$RT" -v -d 30 --cutoff 0.5 "scenes/$s.txt" "$T/cut.ppm" 2>"$T/err" &&
         cmp -s "$T/cut0.ppm" "$T/cut.ppm" && pass || fail "--cutoff 0.5 changes scenes/$s.txt at depth 30"
-    expect_grep "--cutoff statistics" "pixels traced again" "$T/err"
+    expect_grep "--cutoff statistics" "pixels refined" "$T/err"
 done
 expect_exit "--cutoff bad" 2 "$RT" --cutoff -1 "$scene" "$T/x.ppm"
 expect_grep "--cutoff bad message" "option '--cutoff' takes a number from 0 to 255, found '-1'" "$T/err"
@@ -223,8 +223,8 @@ expect_exit "--check bad scene" 1 "$RT" --check "$T/short.txt"
 expect_grep "--check bad scene position" "short.txt:8:20: error:" "$T/err"
 expect_exit "--check takes one file" 2 "$RT" --check "$scene" "$T/x.ppm"
 expect_exit "-v" 0 "$RT" -v "$scene" "$T/v.ppm"
-expect_grep "-v rays" "raytrace: rays: 160000 primary, 29207 shadow, 47899 reflection, 0 refraction, 237106 in all" "$T/err"
-expect_grep "-v cut-off" "raytrace: cut-off 0.02 levels: 2 rays left out, 0 pixels traced again" "$T/err"
+expect_grep "-v rays" "raytrace: rays: 160000 primary, 29186 shadow, 47899 reflection, 0 refraction, 237085 in all" "$T/err"
+expect_grep "-v cut-off" "raytrace: cut-off 0.1 levels: 23 rays left out, 0 pixels refined" "$T/err"
 expect_exit "-v --cutoff 0" 0 "$RT" -v --cutoff 0 "$scene" "$T/v0.ppm"
 expect_grep "-v rays, every one" "raytrace: rays: 160000 primary, 29209 shadow, 47899 reflection, 0 refraction, 237108 in all" "$T/err"
 cmp -s "$T/v.ppm" "$T/v0.ppm" && pass || fail "-v --cutoff 0 renders other bytes"

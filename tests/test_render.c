@@ -426,13 +426,15 @@ static const char render_cut_keyword[] =
 
 /* The colour a cut-off leaves out of a ray is at least 0 and at most what
  * it adds up in skipped (to within rounding): the bound render.c relies on
- * to keep the bytes exact. Many rays, an aggressive cut-off, both rules;
- * mirror, refracted and shadow rays are left out. */
+ * to keep the bytes exact; tracing the rays it kept, without a cut-off,
+ * gives back the uncut colour (to within rounding). Many rays, an
+ * aggressive cut-off, both rules; mirror, refracted and shadow rays are
+ * left out. */
 static void render_cutoff_leaves_out_no_more_than_it_counts(void)
 {
     const char *texts[] = {render_cut_course, render_cut_keyword};
-    int bad = 0, cuts = 0;
-    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0};
+    int bad = 0, cuts = 0, lost = 0;
+    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0}, later = {0, 0, 0, 0, 0, 0};
 
     for (int s = 0; s < 2; s++) {
         Scene sc;
@@ -453,13 +455,24 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
             bad += !(full.r - part.r >= -eta && full.r - part.r <= cut.skipped + eta);
             bad += !(full.g - part.g >= -eta && full.g - part.g <= cut.skipped + eta);
             bad += !(full.b - part.b >= -eta && full.b - part.b <= cut.skipped + eta);
+            cut.cutoff = 0; /* the kept rays, traced in full */
+            for (size_t k = 0, kept = cut.deferred_count; k < kept; k++)
+                part = colour_add(part, trace_deferred(&sc, cut.deferred[k], 30, &cut, &later));
+            lost += !(fabs(full.r - part.r) <= eta && fabs(full.g - part.g) <= eta &&
+                      fabs(full.b - part.b) <= eta);
+            trace_cut_free(&cut);
         }
         scene_free(&sc);
     }
     CHECK_INT(0, bad);
+    CHECK_INT(0, lost);
     if (cuts < 1000) /* the cut-off must have left rays out */
         test_fail(__FILE__, __LINE__, "only %d rays of 8000 had rays left out", cuts);
     CHECK(left.reflection < all.reflection && left.refraction < all.refraction);
+    /* Every ray is cast once, then or later. */
+    CHECK(left.shadow + later.shadow == all.shadow &&
+          left.reflection + later.reflection == all.reflection &&
+          left.refraction + later.refraction == all.refraction);
 }
 
 /* A shadow ray is left out when the light it tests could add less than the
@@ -485,6 +498,7 @@ static void render_cutoff_leaves_out_shadow_rays(void)
         trace_cut_init(&cut, &sc, 5);
         part = trace_ray_cut(&sc, &ray, 10, &cut, &left);
         bad += !(full.r - part.r >= 0 && full.r - part.r <= cut.skipped);
+        trace_cut_free(&cut);
     }
     scene_free(&sc);
     CHECK_INT(0, bad);
@@ -509,30 +523,30 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
 }
 
 /* Whatever the cut-off, the bytes are those of the render without it; a
- * large one makes pixels be traced again, a small one leaves rays out. */
+ * large one makes pixels be refined, a small one leaves rays out. */
 static void render_cutoff_keeps_every_byte(void)
 {
     const char *texts[] = {render_cut_course, render_cut_keyword};
     static const double cutoffs[] = {1e-6, 1e-3, 0.5, 50};
-    unsigned long long cut = 0, retraced = 0;
+    unsigned long long cut = 0, refined = 0;
 
     for (int s = 0; s < 2; s++) {
         RayCounts none = {0, 0, 0, 0, 0, 0};
         Image exact = render_with_cutoff(texts[s], 25, 0, &none);
 
-        CHECK(none.cut == 0 && none.retraced == 0);
+        CHECK(none.cut == 0 && none.refined == 0);
         for (int k = 0; k < 4; k++) {
             RayCounts c = {0, 0, 0, 0, 0, 0};
             Image img = render_with_cutoff(texts[s], 25, cutoffs[k], &c);
             CHECK(memcmp(exact.rgb, img.rgb, image_size(img.width, img.height)) == 0);
             cut += c.cut;
-            retraced += c.retraced;
+            refined += c.refined;
             image_free(&img);
         }
         image_free(&exact);
     }
     CHECK(cut > 0);
-    CHECK(retraced > 0);
+    CHECK(refined > 0);
 }
 
 /* Returns every ray counts holds. */
@@ -541,10 +555,10 @@ static unsigned long long render_rays(const RayCounts *c)
     return c->primary + c->shadow + c->reflection + c->refraction;
 }
 
-/* A pixel the cut-off cannot prove is traced again with smaller cut-offs
- * before it is traced in full: even a cut-off of 50 levels, which proves
- * few pixels at first, casts far fewer rays than the uncut render of these
- * long ray trees. */
+/* In a pixel the cut-off cannot prove, the rays it left out are traced with
+ * smaller cut-offs before the pixel is traced in full: even a cut-off of 50
+ * levels, which proves few pixels at first, casts far fewer rays than the
+ * uncut render of these long ray trees. */
 static void render_cutoff_refines_before_tracing_in_full(void)
 {
     const char *texts[] = {render_cut_course, render_cut_keyword};
@@ -555,7 +569,7 @@ static void render_cutoff_refines_before_tracing_in_full(void)
         Image img = render_with_cutoff(texts[s], 25, 50, &big);
 
         CHECK(memcmp(exact.rgb, img.rgb, image_size(img.width, img.height)) == 0);
-        CHECK(big.retraced > 0);
+        CHECK(big.refined > 0);
         if (render_rays(&big) * 2 > render_rays(&none))
             test_fail(__FILE__, __LINE__, "scene %d: %llu rays with a cut-off of 50, %llu without",
                       s, render_rays(&big), render_rays(&none));

@@ -117,7 +117,7 @@ for s in glass keyword field; do
             cmp -s "$DIR/$s-c0.ppm" "$DIR/$s-c.ppm" && same=yes || same=NO
             "$RT" -v --cutoff "$c" -d "$d" "$f" "$DIR/$s-v.ppm" 2>"$DIR/v"
             left=$(sed -n 's/.*: \([0-9]*\) rays left out.*/\1/p' "$DIR/v")
-            again=$(sed -n 's/.*, \([0-9]*\) pixels traced again/\1/p' "$DIR/v")
+            again=$(sed -n 's/.*, \([0-9]*\) pixels refined/\1/p' "$DIR/v")
             printf '| %s | %d | %s | %.3f s | %s | %s | %s |\n' "$s" "$d" "$c" "$t" "${left:-0}" \
                 "${again:-0}" "$same" >>"$DIR/cut.rows"
             [ "$c" = 0 ] || echo "$s-depth-$d $c $t" >>"$DIR/cut.plot"
@@ -235,19 +235,20 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo
     echo "## The cut-off"
     echo
-    echo "\`--cutoff L\` leaves out rays that could add less than L levels, and"
-    echo "traces again the pixels it cannot prove unchanged, with cut-offs 16"
-    echo "times smaller and at last in full (docs/design.md), so the error is"
-    echo "always 0: the last column checks that the bytes equal the render"
-    echo "without the cut-off. What it trades is time: rays left out against"
-    echo "pixels traced again. \`field\` is the benchmark's 100,000-sphere field"
+    echo "\`--cutoff L\` leaves out rays that could add less than L levels; in the"
+    echo "pixels it cannot prove unchanged it traces them after all, with"
+    echo "cut-offs 16 times smaller, and at last traces the pixel in full"
+    echo "(docs/design.md), so the error is always 0: the last column checks"
+    echo "that the bytes equal the render without the cut-off. What it trades is"
+    echo "time: rays left out for good against pixels refined (whose left-out"
+    echo "rays were traced). \`field\` is the benchmark's 100,000-sphere field"
     echo "at 480 × 270 (reflection 0.3: a ray at depth k weighs 0.3^k). Times are"
     echo "the whole command's (medians of $RUNS runs), reading and building"
     echo "included."
     echo
     echo "![cut-off](trade-cutoff.svg)"
     echo
-    echo "| scene | depth | cut-off | time | rays left out | pixels traced again | same bytes |"
+    echo "| scene | depth | cut-off | time | rays left out | pixels refined | same bytes |"
     echo "|-------|-------|---------|------|---------------|---------------------|------------|"
     cat "$DIR/cut.rows"
     echo
