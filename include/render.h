@@ -24,9 +24,8 @@ typedef struct {
     int samples;             /* samples per pixel, 1..SAMPLER_MAX */
     double cutoff;           /* leave out secondary and shadow rays that
                                 could bring less than this many levels
-                                (trace.h); the
-                                bytes stay those of an uncut render (PFM:
-                                no cut-off); 0 for none */
+                                (trace.h); the bytes stay those of an uncut
+                                render (PFM: no cut-off); 0 for none */
     int threads;             /* worker threads, >= 1; 1 without OpenMP */
     RenderProgress progress; /* called after each row, or NULL */
     void *progress_ctx;      /* passed to progress */

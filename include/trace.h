@@ -97,7 +97,6 @@ typedef struct {
     double per_level; /* and what each level left below adds to that */
     double skipped;   /* sum of weight x bound over the rays left out: the
                          most the colour lacks because of them */
-    unsigned long long cuts; /* rays left out */
     TraceDeferred *deferred; /* the rays left out, in the order met */
     size_t deferred_count;
     size_t deferred_capacity;

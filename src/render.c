@@ -63,8 +63,8 @@ enum { RENDER_REFINE = 16 };
 
 /*
  * Returns pixel (x, y), whose bytes are those of a render without the
- * cut-off whatever cutoff (levels, > 0) allows; cut is the thread's, set up
- * by trace_cut_init(). The rays the cut-off leaves out could have added at
+ * cut-off whatever opts->cutoff allows; cut is the thread's, set up by
+ * trace_cut_init() (NULL: no cut-off). The rays the cut-off leaves out could have added at
  * most cut->skipped / n to each channel of the mean (each is weight x
  * colour, the colour within the bound trace_cut_init() proves, or weight x
  * E x lit for a shadow ray); leaving them out, or adding them in later,
@@ -79,32 +79,31 @@ enum { RENDER_REFINE = 16 };
  * ray, which is the uncut render itself.
  */
 RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                           int x, int y, double cutoff, TraceCut *cut, RayCounts *counts)
+                           int x, int y, TraceCut *cut, RayCounts *counts)
 {
     Colour c;
-    double level = cutoff; /* this pass's cut-off */
-    size_t done = 0;       /* deferred rays traced so far */
+    double level = opts->cutoff, eta; /* this pass's cut-off */
+    size_t done = 0;                  /* deferred rays traced so far */
 
     if (!cut)
         return render_samples(scene, opts, g, x, y, NULL, counts);
     cut->cutoff = level;
     cut->skipped = 0;
-    cut->cuts = 0;
     cut->deferred_count = 0;
     c = render_samples(scene, opts, g, x, y, cut, counts);
-    for (int pass = 0;; pass++) {
-        double slack = cut->skipped / g->n, eta;
+    if (cut->deferred_count == 0) /* nothing left out */
+        return c;
+    eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
+    for (;;) {
+        double slack = cut->skipped / g->n;
         size_t end = cut->deferred_count;
 
-        if (cut->cuts == 0 && pass == 0)
-            return c;
-        eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
         if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
             render_same_byte(c.b, slack, eta)) {
             counts->cut += end - done; /* left out for good */
             return c;
         }
-        if (pass == 0)
+        if (done == 0) /* the first pass */
             counts->refined++;
         level /= RENDER_REFINE;
         if (level < RENDER_CUT_FLOOR)
@@ -113,7 +112,6 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
          * next pass's. */
         cut->cutoff = level;
         cut->skipped = 0;
-        cut->cuts = 0;
         for (; done < end; done++)
             c = colour_add(c, colour_scale(trace_deferred(scene, cut->deferred[done],
                                                           opts->max_depth, cut, counts),
@@ -128,7 +126,7 @@ static void render_row(const Scene *scene, const RenderOptions *opts, Image *img
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
 
     for (int x = 0; x < img->width; x++)
-        image_set(img, x, y, render_pixel(scene, opts, &g, x, y, opts->cutoff, cut, counts));
+        image_set(img, x, y, render_pixel(scene, opts, &g, x, y, cut, counts));
 }
 
 /* Adds the counts of b to a. */

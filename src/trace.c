@@ -286,7 +286,6 @@ static int trace_cut_ray(TraceCut *cut, double most, const TraceDeferred *d)
     if (!cut || !(most < cut->cutoff) || !trace_defer(cut, d))
         return 0;
     cut->skipped += most;
-    cut->cuts++;
     return 1;
 }
 
@@ -574,7 +573,6 @@ void trace_cut_init(TraceCut *cut, const Scene *scene, double cutoff)
 
     cut->cutoff = cutoff;
     cut->skipped = 0;
-    cut->cuts = 0;
     cut->deferred = NULL;
     cut->deferred_count = 0;
     cut->deferred_capacity = 0;

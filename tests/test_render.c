@@ -451,7 +451,7 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
             trace_cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
             part = trace_ray_cut(&sc, &ray, 30, &cut, &left);
             eta = 1e-9 * trace_cut_bound(&cut, 30);
-            cuts += cut.cuts > 0;
+            cuts += cut.deferred_count > 0;
             bad += !(full.r - part.r >= -eta && full.r - part.r <= cut.skipped + eta);
             bad += !(full.g - part.g >= -eta && full.g - part.g <= cut.skipped + eta);
             bad += !(full.b - part.b >= -eta && full.b - part.b <= cut.skipped + eta);
