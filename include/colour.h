@@ -33,7 +33,17 @@ static inline Colour colour_scale(Colour a, double s)
 }
 
 /* Clamps one channel to [0, 255] and rounds it half up: floor(x + 0.5);
- * NaN maps to 0. This is the only place where values become bytes. */
-unsigned char colour_quantise(double x);
+ * NaN maps to 0. This is the only place where values become bytes. Inline:
+ * every pixel's three channels pass here (with the cut-off, several times);
+ * x + 0.5 is then in (0.5, 255.5), where the conversion's truncation is
+ * floor(). */
+static inline unsigned char colour_quantise(double x)
+{
+    if (!(x > 0)) /* also catches NaN */
+        return 0;
+    if (x >= 255)
+        return 255;
+    return (unsigned char)(x + 0.5);
+}
 
 #endif

@@ -19,6 +19,15 @@ static void ppm_quantise_clamps_and_rounds_half_up(void)
     CHECK_INT(255, colour_quantise(254.5));
     CHECK_INT(255, colour_quantise(1e300));
     CHECK_INT(255, colour_quantise(INFINITY));
+    /* floor(x + 0.5) at and beside every half level, and between. */
+    for (int k = 0; k <= 256; k++) {
+        double half = k - 0.5, xs[] = {nextafter(half, -1), half, nextafter(half, 300), k,
+                                       k + 0.25, nextafter(k, 300)};
+        for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+            double x = xs[i], want = x > 0 ? floor(x + 0.5) : 0;
+            CHECK_INT((long long)(want > 255 ? 255 : want), colour_quantise(x));
+        }
+    }
 }
 
 /* A 6 x 5 test card: red on blue, with one distinct pixel per corner, so a
