@@ -78,6 +78,32 @@ int camera_set_lens(Camera *cam, double aperture, double focus);
  * a unit direction (all zero if the point is the eye itself). */
 Ray camera_ray(const Camera *cam, double x, double y);
 
+/* The screen point camera_ray() aims at, TL + (x / W) u + (y / H) v, in
+ * doubles, as the sum of a part that depends on x alone and one that
+ * depends on y alone, so that a pixel loop can make each once. */
+typedef struct {
+    double x, y, z;
+} CameraStep;
+
+/* Returns TL + (x / W) u: the point of the top edge above image position x. */
+CameraStep camera_column(const Camera *cam, double x);
+
+/* Returns (y / H) v: the step down from the top edge to image position y. */
+CameraStep camera_row(const Camera *cam, double y);
+
+/* Returns camera_ray(cam, x, y), bit for bit, from column =
+ * camera_column(cam, x) and row = camera_row(cam, y). */
+static inline Ray camera_ray_through(const Camera *cam, CameraStep column, CameraStep row)
+{
+    Vec3 d = vec3_sub(vec3(column.x + row.x, column.y + row.y, column.z + row.z), cam->eye);
+    double len = vec3_length(d);
+    Ray ray;
+
+    ray.origin = cam->eye;
+    ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
+    return ray;
+}
+
 /* Returns the primary ray through image position (x, y) that leaves the
  * lens at disk point lens (a point of the unit disk, scaled by half the
  * aperture): it starts there and passes through the point of the focal

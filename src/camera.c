@@ -50,19 +50,26 @@ double camera_height(Vec3 u, Vec3 v, int width)
     return h < 1 ? 1 : h;
 }
 
+CameraStep camera_column(const Camera *cam, double x)
+{
+    double fx = x / cam->width;
+    CameraStep c = {cam->top_left.x + fx * cam->u.x, cam->top_left.y + fx * cam->u.y,
+                    cam->top_left.z + fx * cam->u.z};
+
+    return c;
+}
+
+CameraStep camera_row(const Camera *cam, double y)
+{
+    double fy = y / cam->height;
+    CameraStep r = {fy * cam->v.x, fy * cam->v.y, fy * cam->v.z};
+
+    return r;
+}
+
 Ray camera_ray(const Camera *cam, double x, double y)
 {
-    double fx = x / cam->width, fy = y / cam->height;
-    Vec3 p = vec3(cam->top_left.x + fx * cam->u.x + fy * cam->v.x,
-                  cam->top_left.y + fx * cam->u.y + fy * cam->v.y,
-                  cam->top_left.z + fx * cam->u.z + fy * cam->v.z);
-    Vec3 d = vec3_sub(p, cam->eye);
-    double len = vec3_length(d);
-    Ray ray;
-
-    ray.origin = cam->eye;
-    ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
-    return ray;
+    return camera_ray_through(cam, camera_column(cam, x), camera_row(cam, y));
 }
 
 CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,

@@ -1,6 +1,8 @@
 /* render.c: the pixel loop (see render.h). */
 #include "render.h"
 
+#include <stdlib.h>
+
 #include "camera.h"
 #include "sampler.h"
 #include "trace.h"
@@ -17,18 +19,27 @@
 #define RENDER_INLINE static inline
 #endif
 
-/* Returns the mean colour of the grid's samples of pixel (x, y), leaving
- * out what cut allows (cut NULL: nothing). One sample is the pixel's centre
- * through the lens's centre. */
-RENDER_INLINE Colour render_samples(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                             int x, int y, TraceCut *cut, RayCounts *counts)
+/* What a row's pixels share: camera_column() of every pixel's centre (NULL
+ * when not made: camera_ray() then) and camera_row() of the row's. */
+typedef struct {
+    const CameraStep *columns;
+    CameraStep row;
+} RenderRow;
+
+/* Returns the mean colour of the grid's samples of pixel (x, y) of row,
+ * leaving out what cut allows (cut NULL: nothing). One sample is the
+ * pixel's centre through the lens's centre. */
+RENDER_INLINE Colour render_samples(const Scene *scene, const RenderOptions *opts,
+                                    const SamplerGrid *g, const RenderRow *row, int x, int y,
+                                    TraceCut *cut, RayCounts *counts)
 {
     const Camera *cam = &scene->camera;
     Colour sum = colour(0, 0, 0);
 
     counts->primary += g->n;
     if (g->n == 1) {
-        Ray ray = camera_ray(cam, x + 0.5, y + 0.5);
+        Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
+                               : camera_ray(cam, x + 0.5, y + 0.5);
         return cut ? trace_ray_cut(scene, &ray, opts->max_depth, cut, counts)
                    : trace_ray(scene, &ray, 0, opts->max_depth, counts);
     }
@@ -78,19 +89,20 @@ enum { RENDER_REFINE = 16 };
  * hold the same argument, and in the end the pixel is traced with every
  * ray, which is the uncut render itself.
  */
-RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                           int x, int y, TraceCut *cut, RayCounts *counts)
+RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
+                                  const SamplerGrid *g, const RenderRow *row, int x, int y,
+                                  TraceCut *cut, RayCounts *counts)
 {
     Colour c;
     double level = opts->cutoff, eta; /* this pass's cut-off */
     size_t done = 0;                  /* deferred rays traced so far */
 
     if (!cut)
-        return render_samples(scene, opts, g, x, y, NULL, counts);
+        return render_samples(scene, opts, g, row, x, y, NULL, counts);
     cut->cutoff = level;
     cut->skipped = 0;
     cut->deferred_count = 0;
-    c = render_samples(scene, opts, g, x, y, cut, counts);
+    c = render_samples(scene, opts, g, row, x, y, cut, counts);
     if (cut->deferred_count == 0) /* nothing left out */
         return c;
     eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
@@ -107,7 +119,7 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
             counts->refined++;
         level /= RENDER_REFINE;
         if (level < RENDER_CUT_FLOOR)
-            return render_samples(scene, opts, g, x, y, NULL, counts);
+            return render_samples(scene, opts, g, row, x, y, NULL, counts);
         /* What this pass left out, traced; what that leaves out is the
          * next pass's. */
         cut->cutoff = level;
@@ -119,14 +131,16 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
     }
 }
 
-/* Renders row y of the image (cut as in render_pixel()). */
+/* Renders row y of the image (columns and cut as in render_samples() and
+ * render_pixel()). */
 static void render_row(const Scene *scene, const RenderOptions *opts, Image *img, int y,
-                       TraceCut *cut, RayCounts *counts)
+                       const CameraStep *columns, TraceCut *cut, RayCounts *counts)
 {
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
+    RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
 
     for (int x = 0; x < img->width; x++)
-        image_set(img, x, y, render_pixel(scene, opts, &g, x, y, cut, counts));
+        image_set(img, x, y, render_pixel(scene, opts, &g, &row, x, y, cut, counts));
 }
 
 /* Adds the counts of b to a. */
@@ -146,9 +160,16 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     TraceCut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
+    /* One sample a pixel: the columns' part of the primary rays, made once
+     * (without the room, each pixel makes its own). */
+    CameraStep *columns = sampler_grid((unsigned)opts->samples).n == 1
+                              ? malloc((size_t)img->width * sizeof *columns)
+                              : NULL;
 
     if (cutting)
         trace_cut_init(&proto, scene, opts->cutoff);
+    for (int x = 0; columns && x < img->width; x++)
+        columns[x] = camera_column(&scene->camera, x + 0.5);
 
 #ifdef _OPENMP
 #pragma omp parallel num_threads(opts->threads)
@@ -164,7 +185,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (int y = 0; y < img->height; y++) {
-            render_row(scene, opts, img, y, cutting ? &cut : NULL, &mine);
+            render_row(scene, opts, img, y, columns, cutting ? &cut : NULL, &mine);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)
@@ -181,5 +202,6 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         if (cutting)
             trace_cut_free(&cut);
     }
+    free(columns);
     return used;
 }
