@@ -58,6 +58,57 @@ static void render_eye_on_the_screen_sees_background(void)
     CHECK_NEAR(0, vec3_length(r.dir), 0);
 }
 
+/* Checks that every pixel of a render of text is the course format's
+ * primary ray traced: P = TL + ((i + 0.5) / W) u + ((j + 0.5) / H) v,
+ * summed left to right, its direction normalize(P - eye), to the bit. */
+static void check_pixels_are_their_rays(const char *text)
+{
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
+    RayCounts counts = {0, 0, 0, 0, 0, 0};
+    Scene sc;
+    Error err;
+    Image img;
+
+    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
+    render(&sc, &opts, &img, NULL);
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            const Camera *c = &sc.camera;
+            double fx = (i + 0.5) / c->width, fy = (j + 0.5) / c->height;
+            Vec3 p = vec3(c->top_left.x + fx * c->u.x + fy * c->v.x,
+                          c->top_left.y + fx * c->u.y + fy * c->v.y,
+                          c->top_left.z + fx * c->u.z + fy * c->v.z);
+            Ray ray = {c->eye, vec3_normalize(vec3_sub(p, c->eye))};
+            Ray got = camera_ray(c, i + 0.5, j + 0.5);
+            Colour want = trace_ray(&sc, &ray, 0, opts.max_depth, &counts);
+            const unsigned char *px = img.rgb + 3 * ((size_t)j * (size_t)img.width + (size_t)i);
+            if (memcmp(&got.dir, &ray.dir, sizeof ray.dir) != 0 ||
+                px[0] != colour_quantise(want.r) || px[1] != colour_quantise(want.g) ||
+                px[2] != colour_quantise(want.b)) {
+                test_fail(__FILE__, __LINE__, "pixel (%d, %d) is not its ray traced", i, j);
+                j = img.height;
+                break;
+            }
+        }
+    image_free(&img);
+    scene_free(&sc);
+}
+
+static void render_pixels_are_their_camera_rays_traced(void)
+{
+    /* A square screen, and a sheared one far from the origin whose
+     * corners' coordinates are not round (every sum rounds). */
+    check_pixels_are_their_rays("0 0 -10\n-1 1 -9\n1 1 -9\n-1 -1 -9\n37\n10 20 30\n"
+                                "10 10 -10 255 255 255\n"
+                                "sphere: 0 0 0 1 200 100 50 0.5\n"
+                                "sphere: 0.7 0.4 -1 0.3 50 200 100 0.2\n");
+    check_pixels_are_their_rays("1e6 2e6 -3.1e6\n1000000.123 2000000.7 -3099999.1\n"
+                                "1000002.9 2000000.3 -3099999.3\n1000000.7 1999998.1 -3099998.9\n"
+                                "53\n0 0 0\n1e6 3e6 -3e6 255 255 255\n"
+                                "sphere: 1000004 1999996 -3099990 3 200 100 50 0.5\n");
+}
+
 static void render_bytes_do_not_depend_on_threads(void)
 {
     Scene sc;
@@ -594,6 +645,7 @@ const TestCase render_tests[] = {
     {"render_one_sample_is_a_pinhole_render", render_one_sample_is_a_pinhole_render},
     {"render_samples_average_a_half_covered_pixel", render_samples_average_a_half_covered_pixel},
     {"camera_lens_rays_meet_in_the_focal_plane", camera_lens_rays_meet_in_the_focal_plane},
+    {"render_pixels_are_their_camera_rays_traced", render_pixels_are_their_camera_rays_traced},
     {"render_tiny_scenes_with_every_shape_exactly", render_tiny_scenes_with_every_shape_exactly},
     {"render_matches_exact_image_at_any_scale_and_place",
      render_matches_exact_image_at_any_scale_and_place},
