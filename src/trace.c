@@ -463,6 +463,15 @@ static inline Colour trace_local(const Scene *scene, const Shade *sh, Vec3 n, Ve
 static Colour trace_path(const Scene *scene, const Ray *ray, int depth, int max_depth,
                          double weight, TraceCut *cut, RayCounts *counts);
 
+/* Counts a mirror or refracted ray (kind) as cast. */
+static inline void trace_count_secondary(TraceRayKind kind, RayCounts *counts)
+{
+    if (kind == TRACE_REFRACTION)
+        counts->refraction++;
+    else
+        counts->reflection++;
+}
+
 /* Returns share times the colour seen along the ray of kind `kind` leaving
  * sh in direction dir at depth `depth`, reached with weight times share, or
  * 0 when cut allows leaving it out: its colour is at most the bound for its
@@ -485,10 +494,7 @@ static inline Colour trace_secondary(const Scene *scene, const Shade *sh, Vec3 n
         if (trace_cut_ray(cut, weight * trace_cut_bound(cut, max_depth - depth), &d))
             return colour(0, 0, 0);
     }
-    if (kind == TRACE_REFRACTION)
-        counts->refraction++;
-    else
-        counts->reflection++;
+    trace_count_secondary(kind, counts);
     return colour_scale(trace_path(scene, &d.ray, depth, max_depth, weight, cut, counts), share);
 }
 
@@ -497,10 +503,7 @@ Colour trace_deferred(const Scene *scene, TraceDeferred d, int max_depth, TraceC
 {
     if (d.kind == TRACE_SHADOW)
         return colour_scale(d.lit, d.weight * trace_light_share(scene, &d.ray, d.tmax, counts));
-    if (d.kind == TRACE_REFRACTION)
-        counts->refraction++;
-    else
-        counts->reflection++;
+    trace_count_secondary(d.kind, counts);
     return colour_scale(trace_path(scene, &d.ray, d.depth, max_depth, d.weight, cut, counts),
                         d.weight);
 }
