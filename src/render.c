@@ -75,19 +75,19 @@ enum { RENDER_REFINE = 16 };
 /*
  * Returns pixel (x, y), whose bytes are those of a render without the
  * cut-off whatever opts->cutoff allows; cut is the thread's, set up by
- * trace_cut_init() (NULL: no cut-off). The rays the cut-off leaves out could have added at
- * most cut->skipped / n to each channel of the mean (each is weight x
- * colour, the colour within the bound trace_cut_init() proves, or weight x
- * E x lit for a shadow ray); leaving them out, or adding them in later,
- * also changes the rounding of the sums that would have held them, by less
- * than eta (a term k levels down carries some 2k ulps of rounding, and the
- * weights at one level add up to at most 1: under 1.2 x 10^-10 of the bound
- * after 1,000 levels, against eta = 10^-9 of it). So the uncut colour
- * lies in [x - eta, x + skipped / n + eta]; when that whole interval
- * quantises to one byte, that byte is the uncut render's. Otherwise the
- * rays left out are traced, with a smaller cut-off whose own left-out rays
- * hold the same argument, and in the end the pixel is traced with every
- * ray, which is the uncut render itself.
+ * trace_cut_init() (NULL: no cut-off). The rays the cut-off leaves out
+ * could have added at most cut->skipped / n to each channel of the mean
+ * (each is weight x colour, the colour within the bound trace_cut_init()
+ * proves, or weight x E x lit for a shadow ray); leaving them out, or
+ * adding them in later, also changes the rounding of the sums that would
+ * have held them, by less than eta (a term k levels down carries some 2k
+ * ulps of rounding, and the weights at one level add up to at most 1: under
+ * 1.2 x 10^-10 of the bound after 1,000 levels, against eta = 10^-9 of it).
+ * So the uncut colour lies in [x - eta, x + skipped / n + eta]; when that
+ * whole interval quantises to one byte, that byte is the uncut render's.
+ * Otherwise the rays left out are traced, with a smaller cut-off whose own
+ * left-out rays hold the same argument, and in the end the pixel is traced
+ * with every ray, which is the uncut render itself.
  */
 RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
                                   const SamplerGrid *g, const RenderRow *row, int x, int y,
