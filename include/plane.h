@@ -23,9 +23,10 @@ typedef struct {
     unsigned order;    /* position among the scene's objects, for ties */
 } Plane;
 
-/* Makes the plane through point with normal direction n (any non-zero
- * length) and material m, its texture repeating every tile units. */
-Plane plane_make(Vec3 point, Vec3 n, double tile, Material m);
+/* Makes *pl the plane through point with normal direction n (any length)
+ * and material m, its texture repeating every tile units; returns -1 when n
+ * is the zero vector (no direction), else 0. */
+int plane_make(Plane *pl, Vec3 point, Vec3 n, double tile, Material m);
 
 /* Finds where the ray crosses the plane with tmin < t < tmax; returns 1 and
  * stores t, or returns 0 (a ray parallel to the plane never crosses it). */

@@ -361,12 +361,11 @@ static int keyword_plane_record(Keyword *K, const Record *rec, Scene *scene)
 
     if (keyword_numbers_and_material(K, rec, 1, &keyword_plane, scene, v, &m) != 0)
         return -1;
-    if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
+    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
         keyword_fail(K, &rec->line, rec->tok[4].column,
                      "the plane's normal is the zero vector: it must give a direction");
         return -1;
     }
-    pl = plane_make(vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m);
     {
         int rc = scene_add_plane(scene, &pl);
         return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;

@@ -374,12 +374,11 @@ static int parse_plane_record(Parser *P, const Record *rec, Scene *scene)
 
     if (n < 0 || parse_material(P, rec, &parse_plane, 1, 6, v, n, &m) != 0)
         return -1;
-    if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
+    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
         parse_fail(P, &rec->line, rec->tok[4].column,
                    "the plane's normal is the zero vector: it must give a direction");
         return -1;
     }
-    pl = plane_make(vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m);
     rc = scene_add_plane(scene, &pl);
     if (rc != 0)
         return parse_fail_memory(P, rec, scene, rc);

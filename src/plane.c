@@ -14,23 +14,24 @@
  */
 #define PLANE_ERROR_ULPS 16.0
 
-Plane plane_make(Vec3 point, Vec3 n, double tile, Material m)
+int plane_make(Plane *pl, Vec3 point, Vec3 n, double tile, Material m)
 {
-    Plane pl;
     /* The world axis least aligned with n seeds a tangent frame. */
     Vec3 a = fabs(n.x) <= fabs(n.y) && fabs(n.x) <= fabs(n.z) ? vec3(1, 0, 0)
              : fabs(n.y) <= fabs(n.z)                         ? vec3(0, 1, 0)
                                                               : vec3(0, 0, 1);
 
-    pl.point = point;
-    pl.given = n;
-    pl.normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
-    pl.axis_u = vec3_normalize(vec3_cross(a, pl.normal));
-    pl.axis_v = vec3_cross(pl.normal, pl.axis_u);
-    pl.tile = tile;
-    pl.material = m;
-    pl.order = 0;
-    return pl;
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        return -1;
+    pl->point = point;
+    pl->given = n;
+    pl->normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
+    pl->axis_u = vec3_normalize(vec3_cross(a, pl->normal));
+    pl->axis_v = vec3_cross(pl->normal, pl->axis_u);
+    pl->tile = tile;
+    pl->material = m;
+    pl->order = 0;
+    return 0;
 }
 
 int plane_intersect(const Plane *pl, const Ray *ray, real tmin, real tmax, real *t)

@@ -42,7 +42,9 @@ static void random_scene(Scene *sc, int n, double s)
         }
     }
     {
-        Plane pl = plane_make(vec3(0, -s, 0), vec3(0, 1, 0), 1, material_plain(colour(1, 2, 3), 0));
+        Plane pl;
+        CHECK_INT(0, plane_make(&pl, vec3(0, -s, 0), vec3(0, 1, 0), 1,
+                                material_plain(colour(1, 2, 3), 0)));
         CHECK_INT(0, scene_add_plane(sc, &pl));
     }
 }

@@ -18,10 +18,11 @@ static Triangle triangle_of(Vec3 a, Vec3 b, Vec3 c)
 
 static void plane_hits_both_sides_and_misses_parallel(void)
 {
-    Plane pl = plane_make(vec3(0, 0, 0), vec3(0, 2, 0), 1, white);
+    Plane pl;
     Ray down = {{1, 5, 2}, {0, -1, 0}}, up = {{1, -3, 2}, {0, 0.5, 0}}, flat = {{0, 1, 0}, {1, 0, 0}};
     double t;
 
+    CHECK_INT(0, plane_make(&pl, vec3(0, 0, 0), vec3(0, 2, 0), 1, white));
     CHECK_NEAR(1, vec3_length(pl.normal), 1e-15);
     CHECK(plane_intersect(&pl, &down, 0, INFINITY, &t));
     CHECK_NEAR(5, t, 0);
@@ -33,11 +34,25 @@ static void plane_hits_both_sides_and_misses_parallel(void)
     CHECK(!plane_intersect(&pl, &down, 0, INFINITY, &t));
 }
 
+static void plane_make_rejects_only_the_zero_normal(void)
+{
+    Plane pl;
+
+    CHECK_INT(-1, plane_make(&pl, vec3(1, 2, 3), vec3(0, 0, 0), 1, white));
+    CHECK_INT(-1, plane_make(&pl, vec3(1, 2, 3), vec3(-0.0, 0, -0.0), 1, white));
+    /* The least and the largest lengths still give a unit normal. */
+    CHECK_INT(0, plane_make(&pl, vec3(0, 0, 0), vec3(0, -0x1p-1074, 0), 1, white));
+    CHECK_NEAR(-1, pl.normal.y, 0);
+    CHECK_INT(0, plane_make(&pl, vec3(0, 0, 0), vec3(1e308, 1e308, 0), 1, white));
+    CHECK_NEAR(1, vec3_dot(pl.normal, pl.normal), 1e-15);
+}
+
 static void plane_texture_axes_are_orthonormal(void)
 {
-    Plane pl = plane_make(vec3(1, 2, 3), vec3(1, -2, 0.5), 2, white);
+    Plane pl;
     double uv[2];
 
+    CHECK_INT(0, plane_make(&pl, vec3(1, 2, 3), vec3(1, -2, 0.5), 2, white));
     CHECK_NEAR(0, vec3_dot(pl.normal, pl.axis_u), 1e-15);
     CHECK_NEAR(0, vec3_dot(pl.normal, pl.axis_v), 1e-15);
     CHECK_NEAR(0, vec3_dot(pl.axis_u, pl.axis_v), 1e-15);
@@ -232,7 +247,7 @@ static void flat_spawned_rays_never_rehit_their_surface(void)
             a.y = b.y = d.y = i % 2 ? c.y : 0;
         aim = vec3_scale(vec3_add(vec3_add(a, b), d), 1.0 / 3);
         from = vec3_add(aim, vec3_scale(rng_unit_vector(), s * rng_log_scale(-1, 3)));
-        pl = plane_make(a, i % 3 == 0 ? vec3(0, 1, 0) : rng_unit_vector(), 1, white);
+        CHECK_INT(0, plane_make(&pl, a, i % 3 == 0 ? vec3(0, 1, 0) : rng_unit_vector(), 1, white));
         ray.origin = from;
         ray.dir = vec3_normalize(vec3_sub(aim, from));
         double t, uv[2];
@@ -256,6 +271,7 @@ static void flat_spawned_rays_never_rehit_their_surface(void)
 
 const TestCase shape_tests[] = {
     {"plane_hits_both_sides_and_misses_parallel", plane_hits_both_sides_and_misses_parallel},
+    {"plane_make_rejects_only_the_zero_normal", plane_make_rejects_only_the_zero_normal},
     {"plane_texture_axes_are_orthonormal", plane_texture_axes_are_orthonormal},
     {"triangle_hit_gives_point_and_barycentric_uv", triangle_hit_gives_point_and_barycentric_uv},
     {"triangle_edges_and_vertices_count_as_hits", triangle_edges_and_vertices_count_as_hits},

@@ -253,8 +253,10 @@ static void trace_shadow_through_glass_is_attenuated_per_crossing(void)
      * ray crosses its surface twice, E = 0.25. With T = 0 the shadow is
      * black; the ball moved aside, the floor is fully lit. */
     Scene sc = scene_lit_from(vec3(0, 10, 0));
-    Plane floor = plane_make(vec3(0, 0, 0), vec3(0, 1, 0), 1, material_plain(colour(200, 100, 40), 0));
+    Plane floor;
 
+    CHECK_INT(0, plane_make(&floor, vec3(0, 0, 0), vec3(0, 1, 0), 1,
+                            material_plain(colour(200, 100, 40), 0)));
     CHECK_INT(0, scene_add_plane(&sc, &floor));
     add_sphere_of(&sc, vec3(0, 5, 0), 1, glass(colour(255, 255, 255), 0, 0.5, 1.5));
     CHECK(sc.has_transparency);
@@ -299,9 +301,11 @@ static void trace_total_internal_reflection_mirrors_the_transmitted_share(void)
      * meeting the surface at 60 degrees (beyond the critical 41.8) cannot
      * leave: its share T follows the mirror ray down to a red floor. */
     Scene sc = scene_lit_from(vec3(0, 100, 0));
-    Plane top = plane_make(vec3(0, 0, 0), vec3(0, 1, 0), 1, glass(colour(0, 0, 0), 0, 1, 1.5));
-    Plane floor = plane_make(vec3(0, -10, 0), vec3(0, 1, 0), 1, material_plain(colour(255, 0, 0), 0));
+    Plane top, floor;
 
+    CHECK_INT(0, plane_make(&top, vec3(0, 0, 0), vec3(0, 1, 0), 1, glass(colour(0, 0, 0), 0, 1, 1.5)));
+    CHECK_INT(0, plane_make(&floor, vec3(0, -10, 0), vec3(0, 1, 0), 1,
+                            material_plain(colour(255, 0, 0), 0)));
     sc.lights[0].colour = colour(0, 0, 0);
     sc.ambient = colour(255, 255, 255);
     sc.has_ambient = 1;
@@ -341,10 +345,11 @@ static void trace_exact_tie_across_kinds_keeps_the_first_listed(void)
     /* A plane tangent to a sphere at the point the ray meets both: the
      * object listed first wins, whatever its kind. */
     Scene sc = scene_lit_from(vec3(0, 0, 10));
-    Plane pl = plane_make(vec3(0, 0, -4), vec3(0, 0, 1), 1, material_plain(colour(0, 255, 0), 0));
+    Plane pl;
     Ray r = {{0, 0, 0}, {0, 0, -1}};
     Hit hit;
 
+    CHECK_INT(0, plane_make(&pl, vec3(0, 0, -4), vec3(0, 0, 1), 1, material_plain(colour(0, 255, 0), 0)));
     CHECK_INT(0, scene_add_plane(&sc, &pl));
     add_sphere(&sc, vec3(0, 0, -5), 1, colour(255, 0, 0), 0);
     CHECK(trace_nearest(&sc, &r, INFINITY, &hit));
