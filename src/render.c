@@ -131,16 +131,16 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
     }
 }
 
-/* Renders row y of the image (columns and cut as in render_samples() and
- * render_pixel()). */
-static void render_row(const Scene *scene, const RenderOptions *opts, Image *img, int y,
-                       const CameraStep *columns, TraceCut *cut, RayCounts *counts)
+/* Renders row y of the image with the pixels' sample grid g (columns and
+ * cut as in render_samples() and render_pixel()). */
+static void render_row(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
+                       Image *img, int y, const CameraStep *columns, TraceCut *cut,
+                       RayCounts *counts)
 {
-    SamplerGrid g = sampler_grid((unsigned)opts->samples);
     RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
 
     for (int x = 0; x < img->width; x++)
-        image_set(img, x, y, render_pixel(scene, opts, &g, &row, x, y, cut, counts));
+        image_set(img, x, y, render_pixel(scene, opts, g, &row, x, y, cut, counts));
 }
 
 /* Adds the counts of b to a. */
@@ -160,11 +160,10 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     TraceCut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
+    SamplerGrid g = sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
-    CameraStep *columns = sampler_grid((unsigned)opts->samples).n == 1
-                              ? malloc((size_t)img->width * sizeof *columns)
-                              : NULL;
+    CameraStep *columns = g.n == 1 ? malloc((size_t)img->width * sizeof *columns) : NULL;
 
     if (cutting)
         trace_cut_init(&proto, scene, opts->cutoff);
@@ -185,7 +184,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (int y = 0; y < img->height; y++) {
-            render_row(scene, opts, img, y, columns, cutting ? &cut : NULL, &mine);
+            render_row(scene, opts, &g, img, y, columns, cutting ? &cut : NULL, &mine);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)
