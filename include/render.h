@@ -1,8 +1,8 @@
 /*
- * render.h: turning a scene into an image, rows shared among threads.
+ * render.h: turning a scene into an image, tiles shared among threads.
  *
  * Each pixel is traced on its own from its own primary rays, so the bytes do
- * not depend on the number of threads or on how rows are scheduled. With one
+ * not depend on the number of threads or on how tiles are scheduled. With one
  * sample per pixel the ray goes through the pixel's centre (and the lens's
  * centre); with n, through n points of the pixel (and of the lens) placed by
  * sampler.h, and the pixel is the mean of their colours, taken before the
@@ -15,9 +15,9 @@
 #include "scene.h"
 #include "trace.h"
 
-/* Told, one call at a time, that rows_done of rows_total rows are finished;
- * ctx is RenderOptions' progress_ctx. */
-typedef void (*RenderProgress)(void *ctx, int rows_done, int rows_total);
+/* Told, one call at a time, that done of the image's total parts (tiles)
+ * are finished; ctx is RenderOptions' progress_ctx. */
+typedef void (*RenderProgress)(void *ctx, int done, int total);
 
 typedef struct {
     int max_depth;           /* deepest secondary ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
@@ -27,7 +27,7 @@ typedef struct {
                                 (trace.h); the bytes stay those of an uncut
                                 render (PFM: no cut-off); 0 for none */
     int threads;             /* worker threads, >= 1; 1 without OpenMP */
-    RenderProgress progress; /* called after each row, or NULL */
+    RenderProgress progress; /* called after each tile, or NULL */
     void *progress_ctx;      /* passed to progress */
 } RenderOptions;
 

@@ -144,14 +144,14 @@ typedef struct {
 
 /* Draws "  42% [#########...........] 1.2 s, 1.6 s left" at most 5 times a
  * second (RenderProgress). */
-static void main_progress(void *ctx, int rows_done, int rows_total)
+static void main_progress(void *ctx, int done, int total)
 {
     MainProgress *p = ctx;
-    double now = main_now(), elapsed = now - p->start, frac = (double)rows_done / rows_total;
+    double now = main_now(), elapsed = now - p->start, frac = (double)done / total;
     char bar[31];
     int filled = (int)(frac * 30);
 
-    if (now - p->last_draw < 0.2 || rows_done == rows_total)
+    if (now - p->last_draw < 0.2 || done == total)
         return;
     p->last_draw = now;
     p->drawn = 1;

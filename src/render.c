@@ -11,7 +11,7 @@
 #include <omp.h>
 #endif
 
-/* The pixel's steps, folded into the row loop: measured, 3% of the course
+/* The pixel's steps, folded into the tile loop: measured, 3% of the course
  * scene's instructions were their calls (docs/benchmarks.md). */
 #if defined(__GNUC__)
 #define RENDER_INLINE static inline __attribute__((always_inline))
@@ -131,16 +131,37 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
     }
 }
 
-/* Renders row y of the image with the pixels' sample grid g (columns and
- * cut as in render_samples() and render_pixel()). */
-static void render_row(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                       Image *img, int y, const CameraStep *columns, TraceCut *cut,
-                       RayCounts *counts)
-{
-    RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
+/* The image is cut into square tiles of RENDER_TILE pixels a side (those
+ * on the right and bottom edges smaller), handed to threads one at a time:
+ * a tile's neighbouring rays visit the same tree nodes and shapes, which a
+ * row's far ends do not (32: the 100,000-sphere field's cache misses fell
+ * by half, docs/design.md). */
+enum { RENDER_TILE = 32 };
 
-    for (int x = 0; x < img->width; x++)
-        image_set(img, x, y, render_pixel(scene, opts, g, &row, x, y, cut, counts));
+/* Returns the number of tiles across img. */
+static int render_tiles_across(const Image *img)
+{
+    return (img->width + RENDER_TILE - 1) / RENDER_TILE;
+}
+
+/* Renders tile t of the image (numbered left to right, then top to
+ * bottom) with the pixels' sample grid g (columns and cut as in
+ * render_samples() and render_pixel()). */
+static void render_tile(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
+                        Image *img, int t, const CameraStep *columns, TraceCut *cut,
+                        RayCounts *counts)
+{
+    int across = render_tiles_across(img);
+    int x0 = t % across * RENDER_TILE, y0 = t / across * RENDER_TILE;
+    int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
+    int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
+
+    for (int y = y0; y < y1; y++) {
+        RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
+
+        for (int x = x0; x < x1; x++)
+            image_set(img, x, y, render_pixel(scene, opts, g, &row, x, y, cut, counts));
+    }
 }
 
 /* Adds the counts of b to a. */
@@ -157,6 +178,7 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
 {
     int done = 0, used = 1;
+    int tiles = render_tiles_across(img) * ((img->height + RENDER_TILE - 1) / RENDER_TILE);
     TraceCut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
@@ -180,16 +202,16 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #ifdef _OPENMP
 #pragma omp single
         used = omp_get_num_threads();
-        /* Rows are handed out one at a time: their costs differ widely. */
+        /* Tiles are handed out one at a time: their costs differ widely. */
 #pragma omp for schedule(dynamic, 1)
 #endif
-        for (int y = 0; y < img->height; y++) {
-            render_row(scene, opts, &g, img, y, columns, cutting ? &cut : NULL, &mine);
+        for (int t = 0; t < tiles; t++) {
+            render_tile(scene, opts, &g, img, t, columns, cutting ? &cut : NULL, &mine);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)
 #endif
-                opts->progress(opts->progress_ctx, ++done, img->height);
+                opts->progress(opts->progress_ctx, ++done, tiles);
             }
         }
         if (counts) {

@@ -105,6 +105,10 @@ static void render_pixels_are_their_camera_rays_traced(void)
                                 "1000002.9 2000000.3 -3099999.3\n1000000.7 1999998.1 -3099998.9\n"
                                 "53\n0 0 0\n1e6 3e6 -3e6 255 255 255\n"
                                 "sphere: 1000004 1999996 -3099990 3 200 100 50 0.5\n");
+    /* Wider than two tiles and lower than one: every edge tile cut short. */
+    check_pixels_are_their_rays("0 0 -10\n-3 0.1 -9\n3 0.1 -9\n-3 -0.1 -9\n70\n10 20 30\n"
+                                "10 10 -10 255 255 255\n"
+                                "sphere: 0 0 0 1 200 100 50 0.5\n");
 }
 
 static void render_bytes_do_not_depend_on_threads(void)
