@@ -138,10 +138,10 @@ RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
  * by half, docs/design.md). */
 enum { RENDER_TILE = 32 };
 
-/* Returns the number of tiles across img. */
-static int render_tiles_across(const Image *img)
+/* Returns the number of tiles that cover n pixels in a line. */
+static int render_tiles_over(int n)
 {
-    return (img->width + RENDER_TILE - 1) / RENDER_TILE;
+    return (n + RENDER_TILE - 1) / RENDER_TILE;
 }
 
 /* Renders tile t of the image (numbered left to right, then top to
@@ -151,7 +151,7 @@ static void render_tile(const Scene *scene, const RenderOptions *opts, const Sam
                         Image *img, int t, const CameraStep *columns, TraceCut *cut,
                         RayCounts *counts)
 {
-    int across = render_tiles_across(img);
+    int across = render_tiles_over(img->width);
     int x0 = t % across * RENDER_TILE, y0 = t / across * RENDER_TILE;
     int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
@@ -178,7 +178,7 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
 {
     int done = 0, used = 1;
-    int tiles = render_tiles_across(img) * ((img->height + RENDER_TILE - 1) / RENDER_TILE);
+    int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
     TraceCut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
