@@ -12,7 +12,7 @@
 #endif
 
 /* The pixel's steps, folded into the tile loop: measured, 3% of the course
- * scene's instructions were their calls (docs/benchmarks.md). */
+ * scene's instructions were their calls (docs/design.md). */
 #if defined(__GNUC__)
 #define RENDER_INLINE static inline __attribute__((always_inline))
 #else
