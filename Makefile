@@ -137,8 +137,25 @@ $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/bench/scenegen.c $(RT_LDLIBS) $(LDLIBS)
 
+# raytrace with Embree 3's traversal in place of ours (tests/bench/embree_bvh.c),
+# which the benchmark races against ours when libembree-dev is installed.
+EMBREE_OBJ := $(BUILD)/main.o $(filter-out $(BUILD)/bvh.o,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
+EMBREE_PROBE = printf '$(HASH)include <embree3/rtcore.h>\nint main(void){return !rtcNewDevice(0);}\n' \
+	| $(CC) -x c - -o /dev/null -lembree3 >/dev/null 2>&1
+
+$(BUILD)/embree/embree_bvh.o: tests/bench/embree_bvh.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/raytrace-embree: $(EMBREE_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ -lembree3 $(RT_LDLIBS) $(LDLIBS)
+
 bench: raytrace raytrace-diff $(BUILD)/scenegen
-	sh tests/bench/bench.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
+	@if $(EMBREE_PROBE); then $(MAKE) --no-print-directory $(BUILD)/raytrace-embree; \
+	else rm -f $(BUILD)/raytrace-embree; \
+	echo "bench: no Embree 3 (libembree-dev): no race against its traversal" >&2; fi
+	BENCH_EMBREE=$(BUILD)/raytrace-embree sh tests/bench/bench.sh ./raytrace ./raytrace-diff \
+		$(BUILD)/scenegen
 
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
@@ -176,4 +193,4 @@ check: test
 clean:
 	rm -rf $(BUILD) raytrace raytrace-diff
 
--include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/float/*.d)
+-include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/float/*.d $(BUILD)/embree/*.d)

@@ -7,7 +7,9 @@
 # the scene and building the hierarchy included), rays by kind, Mrays/s
 # (render only), peak memory, the speed-up from 1 thread to all. When
 # POV-Ray is installed, it renders the two sphere fields with it too, side
-# by side in the same run, and compares the pixels.
+# by side in the same run, and compares the pixels. When BENCH_EMBREE names
+# an executable (raytrace with Embree 3's traversal in place of ours:
+# tests/bench/embree_bvh.c), it races the sphere fields with it too.
 #
 # Usage: sh tests/bench/bench.sh RAYTRACE RAYTRACE-DIFF SCENEGEN [OUT.md]
 # Environment: BENCH_RUNS (runs per measure), BENCH_ONLY (a space-separated
@@ -207,39 +209,81 @@ if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/
     done
 fi
 
-# POV-Ray on the sphere fields, alternating with raytrace run for run.
+# race NAME BIN OUT: renders NAME on all threads with BIN into OUT; appends
+# the wall time (ms) and the render's alone (ms, from -v) to $DIR/t-OUT.
+race() {
+    start=$(now)
+    "$2" -v -j "$ALL" "$DIR/$1.txt" "$DIR/$3.ppm" 2>"$DIR/log-race" ||
+        { cat "$DIR/log-race" >&2; exit 1; }
+    end=$(now)
+    echo "$(((end - start) / 1000000)) $(sed -n \
+        's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log-race" |
+        awk '{ printf "%d", $1 * 1000 + 0.5 }')" >>"$DIR/t-$3"
+}
+
+# seconds MS: MS milliseconds in seconds, two decimals.
+seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
+
+# The sphere fields raced on all threads, run for run alternately: POV-Ray
+# (the fields of 1,000 and 100,000 spheres) when it is installed, raytrace,
+# and raytrace with Embree's traversal when there is one.
+EMBREE=${BENCH_EMBREE:-}
+[ -n "$EMBREE" ] && [ -x "$EMBREE" ] || EMBREE=
+command -v povray >/dev/null 2>&1 && POV=yes || POV=
 : >"$DIR/pov"
-if command -v povray >/dev/null 2>&1; then
-    for s in $ONLY; do
-        case $s in spheres-1000 | spheres-100000) ;; *) continue ;; esac
-        n=${s#spheres-}
-        [ -s "$DIR/$s.pov" ] || "$GEN" spheres "$n" pov >"$DIR/$s.pov"
-        : >"$DIR/t-pov"
-        : >"$DIR/t-rt"
-        i=0
-        while [ $i -lt "$RUNS" ]; do
+: >"$DIR/embree"
+for s in $ONLY; do
+    case $s in spheres-1000 | spheres-100000) pov=$POV ;; spheres-*) pov= ;; *) continue ;; esac
+    [ -n "$pov$EMBREE" ] || continue
+    scene "$s"
+    n=${s#spheres-}
+    [ -z "$pov" ] || [ -s "$DIR/$s.pov" ] || "$GEN" spheres "$n" pov >"$DIR/$s.pov"
+    : >"$DIR/t-pov"
+    : >"$DIR/t-rt"
+    : >"$DIR/t-eb"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        if [ -n "$pov" ]; then
             start=$(now)
             povray +I"$DIR/$s.pov" +O"$DIR/$s-pov.ppm" +W1920 +H1080 -A +FP File_Gamma=1.0 \
                 +WT"$ALL" -D -V >/dev/null 2>"$DIR/pov.log" || { cat "$DIR/pov.log" >&2; exit 1; }
             end=$(now)
             echo $(((end - start) / 1000000)) >>"$DIR/t-pov"
-            start=$(now)
-            "$RT" -q -j "$ALL" "$DIR/$s.txt" "$DIR/$s.ppm" || exit 1
-            end=$(now)
-            echo $(((end - start) / 1000000)) >>"$DIR/t-rt"
-            i=$((i + 1))
-        done
-        pov=$(median <"$DIR/t-pov")
-        rt=$(median <"$DIR/t-rt")
-        "$DIFF" --tolerance 1 "$DIR/$s-pov.ppm" "$DIR/$s.ppm" >"$DIR/diff.log" 2>&1
+        fi
+        race "$s" "$RT" rt
+        [ -z "$EMBREE" ] || race "$s" "$EMBREE" eb
+        i=$((i + 1))
+    done
+    rt=$(cut -d' ' -f1 "$DIR/t-rt" | median)
+    rt_alone=$(cut -d' ' -f2 "$DIR/t-rt" | median)
+    if [ -n "$EMBREE" ]; then
+        eb=$(cut -d' ' -f1 "$DIR/t-eb" | median)
+        eb_alone=$(cut -d' ' -f2 "$DIR/t-eb" | median)
+        cmp -s "$DIR/rt.ppm" "$DIR/eb.ppm" && same=yes || same=NO
+        printf '| %s | %s s | %s s | %.2f | %s s | %s s | %.2f | %s |\n' "$s" \
+            "$(seconds "$rt")" "$(seconds "$eb")" "$(echo "$rt / $eb" | bc -l)" \
+            "$(seconds "$rt_alone")" "$(seconds "$eb_alone")" \
+            "$(echo "$rt_alone / $eb_alone" | bc -l)" "$same" >>"$DIR/embree"
+        echo "bench: $s: raytrace $rt ms, with Embree's traversal $eb ms" >&2
+    fi
+    if [ -n "$pov" ]; then
+        pov_ms=$(median <"$DIR/t-pov")
+        "$DIFF" --tolerance 1 "$DIR/$s-pov.ppm" "$DIR/rt.ppm" >"$DIR/diff.log" 2>&1
         over=$(sed -n 's/^over tolerance 1: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
         maxerr=$(sed -n 's/^max error: \([0-9]*\).*/\1/p' "$DIR/diff.log")
-        printf '| %s | %.2f s | %.2f s | %.1f× | %s | %s |\n' "$s" \
-            "$(echo "$pov / 1000" | bc -l)" "$(echo "$rt / 1000" | bc -l)" \
-            "$(echo "$pov / $rt" | bc -l)" "$over" "$maxerr" >>"$DIR/pov"
-        echo "bench: $s: POV-Ray $pov ms, raytrace $rt ms" >&2
-    done
-fi
+        ebcol=
+        [ -z "$EMBREE" ] || ebcol=$(printf ' %s s (%.1f×) |' "$(seconds "$eb")" "$(echo "$pov_ms / $eb" | bc -l)")
+        printf '| %s | %s s | %s s | %.1f× |%s %s | %s |\n' "$s" "$(seconds "$pov_ms")" \
+            "$(seconds "$rt")" "$(echo "$pov_ms / $rt" | bc -l)" "$ebcol" "$over" "$maxerr" >>"$DIR/pov"
+        echo "bench: $s: POV-Ray $pov_ms ms, raytrace $rt ms" >&2
+    fi
+done
+
+# embree_version: the version of the Embree library raytrace-embree loads.
+embree_version() {
+    lib=$(ldd "$EMBREE" 2>/dev/null | sed -n 's/.*libembree3[^ ]* => \([^ ]*\) .*/\1/p' | head -1)
+    readlink -f "$lib" 2>/dev/null | sed -n 's/.*libembree3\.so\.\([0-9.]*\)$/\1/p'
+}
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -1)
 {
@@ -321,9 +365,33 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
         echo "command). Pixels over 1 level: pixels where some channel differs by more"
         echo "than one level (stricter than counting channels)."
         echo
-        echo "| scene | POV-Ray | raytrace | speed-up | pixels over 1 level | max difference |"
-        echo "|-------|---------|----------|----------|---------------------|----------------|"
+        if [ -n "$EMBREE" ]; then
+            echo "Raytrace with Embree's traversal (below) raced in the same runs; its"
+            echo "speed-up over POV-Ray in brackets."
+            echo
+            echo "| scene | POV-Ray | raytrace | speed-up | with Embree's traversal | pixels over 1 level | max difference |"
+            echo "|-------|---------|----------|----------|-------------------------|---------------------|----------------|"
+        else
+            echo "| scene | POV-Ray | raytrace | speed-up | pixels over 1 level | max difference |"
+            echo "|-------|---------|----------|----------|---------------------|----------------|"
+        fi
         cat "$DIR/pov"
+    fi
+    if [ -s "$DIR/embree" ]; then
+        echo
+        echo "## Against Embree's traversal"
+        echo
+        echo "Raytrace built with Intel's Embree ($(embree_version)) in place of our"
+        echo "hierarchy (tests/bench/embree_bvh.c: Embree builds its tree over the"
+        echo "spheres' boxes and traverses it; every sphere it reaches gets our own"
+        echo "double-precision test and tie rule), so that only the structure and"
+        echo "its traversal differ: the same reading, tiles, threads, shading and"
+        echo "cut-off. $ALL threads each, run for run alternately; medians of $RUNS runs."
+        echo "Same bytes: whether the two renders are identical."
+        echo
+        echo "| scene | raytrace | with Embree's | ours over Embree's | render alone: raytrace | with Embree's | ours over Embree's | same bytes |"
+        echo "|-------|----------|---------------|--------------------|------------------------|---------------|--------------------|------------|"
+        cat "$DIR/embree"
     fi
 } >"$OUT"
 echo "bench: wrote $OUT" >&2
