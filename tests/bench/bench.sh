@@ -27,6 +27,9 @@ mkdir -p "$DIR" || exit 2
 
 . tests/lib.sh
 
+# seconds MS: MS milliseconds in seconds, two decimals.
+seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
+
 # scene NAME: generates build/bench/NAME.txt once.
 scene() {
     f="$DIR/$1.txt"
@@ -56,8 +59,8 @@ row() {
     rays=$(sed -n 's/^raytrace: rays: //p' "$log")
     mem=$(sed -n 's/^raytrace: peak memory: \(.*\) MB$/\1/p' "$log")
     size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$log")
-    printf '| %s | %s | %s | %s | %.2f s | %.2f | %s MB |\n' "$1" "$size" "$2" "$rays" \
-        "$(echo "$wall / 1000" | bc -l)" "$speed" "$mem" >>"$DIR/rows"
+    printf '| %s | %s | %s | %s | %s s | %.2f | %s MB |\n' "$1" "$size" "$2" "$rays" \
+        "$(seconds "$wall")" "$speed" "$mem" >>"$DIR/rows"
     echo "bench: $1, $2 thread(s): median $wall ms ($(cut -d' ' -f1 "$DIR/t-$2" | tr '\n' ' '))" >&2
 }
 
@@ -202,8 +205,8 @@ if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/
         cmp -s "$DIR/course-base.ppm" "$DIR/course-now.ppm" && same=yes || same=NO
         tb=$(median <"$DIR/t-base")
         tn=$(median <"$DIR/t-now")
-        printf '| course 3840 x 3840 | %s | %.2f s | %.2f s | %+.1f%% | %s |\n' "$j" \
-            "$(echo "$tb / 1000" | bc -l)" "$(echo "$tn / 1000" | bc -l)" \
+        printf '| course 3840 x 3840 | %s | %s s | %s s | %+.1f%% | %s |\n' "$j" \
+            "$(seconds "$tb")" "$(seconds "$tn")" \
             "$(echo "($tn - $tb) * 100 / $tb" | bc -l)" "$same" >>"$DIR/unused"
         echo "bench: unused features, $j thread(s): course-only $tb ms, now $tn ms" >&2
     done
@@ -220,9 +223,6 @@ race() {
         's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log-race" |
         awk '{ printf "%d", $1 * 1000 + 0.5 }')" >>"$DIR/t-$3"
 }
-
-# seconds MS: MS milliseconds in seconds, two decimals.
-seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
 
 # The sphere fields raced on all threads, run for run alternately: POV-Ray
 # (the fields of 1,000 and 100,000 spheres) when it is installed, raytrace,

@@ -137,6 +137,9 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
+/* Embree allocates on its own: neither figure below counts it (make bench
+ * reports the process's peak instead); n * 64 keeps the memory-limit check
+ * of scene.c in use with a rough size of its nodes. */
 size_t bvh_build_memory(size_t n)
 {
     return n * 64;
