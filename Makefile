@@ -58,7 +58,7 @@ ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
 
-LIB_SRC := src/angle.c src/bvh.c src/camera.c src/compare.c src/deflate.c src/error.c src/file.c src/image.c src/keyword.c src/lex.c src/load.c \
+LIB_SRC := src/angle.c src/bvh.c src/bvh_query.c src/camera.c src/compare.c src/deflate.c src/error.c src/file.c src/image.c src/keyword.c src/lex.c src/load.c \
 	src/number.c src/obj.c src/options.c src/outfile.c src/parse.c src/pfm.c src/plane.c src/png.c src/power.c src/ppm.c src/ray.c src/save.c \
 	src/render.c src/sampler.c src/scene.c src/sphere.c src/texture.c src/threads.c src/trace.c \
 	src/triangle.c src/writer.c
@@ -139,7 +139,7 @@ $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 
 # raytrace with Embree 3's traversal in place of ours (tests/bench/embree_bvh.c),
 # which the benchmark races against ours when libembree-dev is installed.
-EMBREE_OBJ := $(BUILD)/main.o $(filter-out $(BUILD)/bvh.o,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
+EMBREE_OBJ := $(BUILD)/main.o $(filter-out $(BUILD)/bvh%.o,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
 EMBREE_PROBE = printf '$(HASH)include <embree3/rtcore.h>\nint main(void){return !rtcNewDevice(0);}\n' \
 	| $(CC) -x c - -o /dev/null -lembree3 >/dev/null 2>&1
 
