@@ -63,6 +63,15 @@ LIB_SRC := src/angle.c src/bvh.c src/bvh_query.c src/camera.c src/compare.c src/
 	src/render.c src/sampler.c src/scene.c src/sphere.c src/texture.c src/threads.c src/trace.c \
 	src/triangle.c src/writer.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
+
+# On x86, the hierarchy's queries are built a second time for processors
+# with AVX2 and FMA (include/bvh_query.h); bvh.c runs that build on those.
+X86 := $(if $(filter x86_64-% i386-% i486-% i586-% i686-%,$(shell $(CC) -dumpmachine)),1)
+ifeq ($(X86),1)
+RT_CPPFLAGS += -DRAYTRACE_AVX2
+LIB_OBJ += $(BUILD)/bvh_query_avx2.o
+endif
+AVX2_FLAGS := -mavx2 -mfma -DBVH_QUERY_AVX2
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
 FUZZ_TARGETS := course keyword obj ppm picture
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
@@ -91,6 +100,10 @@ raytrace-diff: $(BUILD)/diff_main.o $(LIB_OBJ)
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/bvh_query_avx2.o: src/bvh_query.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(AVX2_FLAGS) -c -o $@ $<
 
 $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
@@ -123,11 +136,16 @@ docs/gallery/%.png: scenes/%.txt raytrace
 	./raytrace -q $< $@
 
 # The single-precision build beside the double one, for `make trade`.
-FLOAT_OBJ := $(BUILD)/float/main.o $(LIB_SRC:src/%.c=$(BUILD)/float/%.o)
+FLOAT_OBJ := $(BUILD)/float/main.o $(LIB_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o)
 
 $(BUILD)/float/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) -DRAYTRACE_REAL_FLOAT $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/float/bvh_query_avx2.o: src/bvh_query.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) -DRAYTRACE_REAL_FLOAT $(CFLAGS) $(AVX2_FLAGS) \
+		-c -o $@ $<
 
 $(BUILD)/raytrace-float: $(FLOAT_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)

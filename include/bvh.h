@@ -57,6 +57,9 @@ typedef struct Bvh {
     double centre[3];    /* the frame: a node's box coordinate is that of */
     double scale;        /* the scene less centre, times scale (a power of
                             two that brings the scene within +-4) */
+    int avx2;            /* queries run their AVX2 and FMA build
+                            (bvh_query.h): bvh_build() sets it when the
+                            processor has them; 0 runs the other */
 } Bvh;
 
 /* Builds the hierarchy of scene's spheres and triangles into *bvh in

@@ -538,6 +538,17 @@ static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
     bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;
 }
 
+/* Returns 1 when this program has the queries' AVX2 build and the
+ * processor (and its system) runs AVX2 and FMA instructions. */
+static int bvh_has_avx2(void)
+{
+#if defined(RAYTRACE_AVX2)
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+    return 0;
+#endif
+}
+
 int bvh_build(Bvh *bvh, const Scene *scene, int threads)
 {
     size_t n = scene->sphere_count + scene->triangle_count;
@@ -546,6 +557,7 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     real pad = bvh_padding(scene, threads);
 
     memset(bvh, 0, sizeof *bvh);
+    bvh->avx2 = bvh_has_avx2();
     /* Binary nodes are numbered below 2n in 32 bits. */
     if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0 ||
         n > UINT32_MAX / 2)
@@ -658,18 +670,29 @@ void bvh_free(Bvh *bvh)
     memset(bvh, 0, sizeof *bvh);
 }
 
+/* The queries go to the build bvh->avx2 names; without the AVX2 build,
+ * bvh->avx2 stays 0 and its functions are never called. */
+#if !defined(RAYTRACE_AVX2)
+#define bvh_nearest_avx2 bvh_nearest_base
+#define bvh_occluded_avx2 bvh_occluded_base
+#define bvh_crossings_avx2 bvh_crossings_base
+#endif
+
 int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
 {
-    return bvh_nearest_base(bvh, scene, ray, tmax, hit);
+    return bvh->avx2 ? bvh_nearest_avx2(bvh, scene, ray, tmax, hit)
+                     : bvh_nearest_base(bvh, scene, ray, tmax, hit);
 }
 
 int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
 {
-    return bvh_occluded_base(bvh, scene, ray, tmax);
+    return bvh->avx2 ? bvh_occluded_avx2(bvh, scene, ray, tmax)
+                     : bvh_occluded_base(bvh, scene, ray, tmax);
 }
 
 int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
                   BvhCrossing *out, int max)
 {
-    return bvh_crossings_base(bvh, scene, ray, tmax, out, max);
+    return bvh->avx2 ? bvh_crossings_avx2(bvh, scene, ray, tmax, out, max)
+                     : bvh_crossings_base(bvh, scene, ray, tmax, out, max);
 }

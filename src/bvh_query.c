@@ -1,5 +1,6 @@
-/* bvh_query.c: the hierarchy's queries (bvh.h), built once a kernel
- * (bvh_query.h): the names of this build's functions end in BVH_KERNEL. */
+/* bvh_query.c: the hierarchy's queries (bvh.h), in the build bvh_query.h
+ * names: BVH_QUERY_AVX2 defined (with -mavx2 -mfma) for the AVX2 and FMA
+ * one, whose functions end in _avx2; else _base. */
 #include "bvh_query.h"
 
 #include <float.h>
@@ -12,17 +13,28 @@
 #include <immintrin.h>
 #endif
 
-#define BVH_KERNEL base
-#define BVH_JOIN(name, kernel) name##_##kernel
-#define BVH_NAME(name, kernel) BVH_JOIN(name, kernel)
-#define BVH_QUERY(name) BVH_NAME(name, BVH_KERNEL)
-
-/* A vector of one coordinate of BVH_LANES children's boxes (SSE on x86-64,
- * NEON on AArch64: every 64-bit processor has them), and a lane mask; a
- * row of a node's boxes is BVH_VECTORS of them. */
+/* A vector of one coordinate of BVH_LANES children's boxes, and a lane
+ * mask; a row of a node's boxes is BVH_VECTORS of them. The base build
+ * takes four lanes (SSE on x86-64, NEON on AArch64: every 64-bit processor
+ * has them), the AVX2 one eight, and fuses the slab tests' multiply and
+ * subtract (BVH_FMA: see below). */
+#if defined(BVH_QUERY_AVX2)
+#if !defined(__AVX2__) || !defined(__FMA__)
+#error "bvh_query.c: BVH_QUERY_AVX2 needs -mavx2 -mfma"
+#endif
+#define BVH_QUERY(name) name##_avx2
+#define BVH_FMA 1
+typedef float BvhLanes __attribute__((vector_size(32)));
+typedef int32_t BvhMask __attribute__((vector_size(32)));
+enum { BVH_LANES = 8 };
+#else
+#define BVH_QUERY(name) name##_base
+#define BVH_FMA 0
 typedef float BvhLanes __attribute__((vector_size(16)));
 typedef int32_t BvhMask __attribute__((vector_size(16)));
-enum { BVH_LANES = 4, BVH_VECTORS = BVH_WIDTH / BVH_LANES };
+enum { BVH_LANES = 4 };
+#endif
+enum { BVH_VECTORS = BVH_WIDTH / BVH_LANES };
 
 /*
  * The box tests run in floats, in the hierarchy's frame, with ray
@@ -50,22 +62,53 @@ enum { BVH_LANES = 4, BVH_VECTORS = BVH_WIDTH / BVH_LANES };
  * Rays that would leave floats' range (an origin 2^100 beyond the scene's
  * size, or direction components 2^100 apart: a component that small is
  * not zero, yet its slab distances are not floats) enter every box.
+ *
+ * The AVX2 build computes a slab distance in one fused operation, b * inv
+ * - oi, where oi is o * inv rounded once to a float (Embree's form, one
+ * dependent step fewer), for rays with no zero direction component (o *
+ * inv is NaN or infinite there: those take the form above). With P the
+ * largest |o * inv| of the three axes, u as above:
+ * - oi is o * inv (1 + e), |e| <= u + 2^-52 (the double product, the
+ *   float, the frame's own double rounding of o), plus 2^-150 if
+ *   subnormal; the result rounds once more. So the computed n is S (1 + d)
+ *   + a with |d| <= u and |a| <= A = u (1 + 2^-20) P + 2^-149, where S =
+ *   (b - o) * inv is the slab distance with the float reciprocal, which is
+ *   within a relative u + 2^-53 of the true one.
+ * - The true ray meets the box at some t* in [0, limit]. Then the entry t0
+ *   <= r t* + A and the exit t1 >= q t* - A, with r = 1 + 2.01u and q = 1 -
+ *   2.01u (the reciprocal's rounding and the result's; the limit is above
+ *   t*), so t* <= (t1 + A) / q with t1 + A >= 0, and t0 <= R (t1 + A) + A,
+ *   R = r / q < 1 + 4.1u.
+ * - The widened exit fma(t1, BVH_WIDEN, C), one rounding, is at least
+ *   (1 + 8u)(1 - u) s + (C - (1 + 8u) A)(1 - u) - 2^-150 for t1 = s - A, s
+ *   >= 0; with (1 + 8u)(1 - u) > R and C >= (2 + 2^-20) A + 2^-149 that is
+ *   at least R s + A >= t0. bvh_ray() takes C = P 2^-23 (1 + 2^-16) +
+ *   2^-147, rounded up: about 2u P, a few units of a float from an origin
+ *   within the frame.
+ * The other rays' exit is widened by the same fused step with C =
+ *   BVH_TINY, which rounds once instead of twice.
  */
 #define BVH_WIDEN (1 + 4 * FLT_EPSILON)
 #define BVH_TINY 0x1p-140f
 #define BVH_FAR 0x1p100 /* the farthest origin and the widest ratio */
 
 /* The ray, prepared for box tests: for each axis, the origins the near and
- * the far planes are measured from and the reciprocal direction (+-inf for
- * a zero component, by the sign of that zero) in every lane, where the
- * row of a node's boxes the ray meets first starts (lo: a, or hi: 3 + a)
- * and the other (in floats from box[0][0]); sigma; whether every box is
- * entered. */
+ * the far planes are measured from, the reciprocal direction (+-inf for
+ * a zero component, by the sign of that zero) and, in the AVX2 build, the
+ * origin times it (oi) in every lane, where the row of a node's boxes the
+ * ray meets first starts (lo: a, or hi: 3 + a) and the other (in floats
+ * from box[0][0]); sigma; whether every box is entered; whether the slab
+ * tests take the fused form; the exit's widening term C, in every lane. */
 typedef struct {
     BvhLanes near_o[3], far_o[3], inv[3];
+#if BVH_FMA
+    BvhLanes oi[3];
+#endif
+    BvhLanes grows;
     int near[3], far[3];
     double sigma;
-    int all;
+    int all, fused;
+    float grow;
 } BvhRay;
 
 /* Returns 2^e, for |e| <= 1022, from its bits. */
@@ -87,20 +130,25 @@ static inline int bvh_exponent(double x)
     return (int)(bits >> 52 & 0x7ff) - 1023;
 }
 
-/* Returns x in every lane (four of them: one shuffle). */
+/* Returns x in every lane (one shuffle). */
 static inline BvhLanes bvh_splat(float x)
 {
+#if defined(BVH_QUERY_AVX2)
+    return (BvhLanes){x, x, x, x, x, x, x, x};
+#else
     _Static_assert(BVH_LANES == 4, "bvh_splat() fills four lanes");
     return (BvhLanes){x, x, x, x};
+#endif
 }
 
 static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
 {
     BvhRay b;
     double o[3] = {r->origin.x, r->origin.y, r->origin.z};
-    double d[3] = {r->dir.x, r->dir.y, r->dir.z}, inv[3], most = 0, down;
+    double d[3] = {r->dir.x, r->dir.y, r->dir.z}, inv[3], most = 0, down, p = 0;
     int e, ok;
 
+    b.fused = BVH_FMA && d[0] != 0 && d[1] != 0 && d[2] != 0;
     for (int a = 0; a < 3; a++) {
         double m;
         inv[a] = 1 / d[a];
@@ -116,15 +164,28 @@ static BvhRay bvh_ray(const Bvh *bvh, const Ray *r)
     ok &= b.sigma >= 0x1p-1000 && b.sigma <= 0x1p1000;
     for (int a = 0; a < 3; a++) {
         double oa = (o[a] - bvh->centre[a]) * bvh->scale, ia = inv[a] * down;
-        float lo = bvh_float_below(oa), hi = bvh_float_above(oa);
+        float inv_a = (float)ia;
         ok &= fabs(oa) <= BVH_FAR && (d[a] == 0 || fabs(ia) >= 1 / BVH_FAR);
-        b.near_o[a] = bvh_splat(ia > 0 ? hi : lo);
-        b.far_o[a] = bvh_splat(ia > 0 ? lo : hi);
-        b.inv[a] = bvh_splat((float)ia);
+        b.inv[a] = bvh_splat(inv_a);
         b.near[a] = (ia < 0 ? 3 + a : a) * BVH_WIDTH;
         b.far[a] = (ia < 0 ? a : 3 + a) * BVH_WIDTH;
+#if BVH_FMA
+        if (b.fused) {
+            double oi = oa * (double)inv_a;
+            b.oi[a] = bvh_splat((float)oi);
+            p = fabs(oi) > p ? fabs(oi) : p;
+            continue;
+        }
+#endif
+        {
+            float lo = bvh_float_below(oa), hi = bvh_float_above(oa);
+            b.near_o[a] = bvh_splat(ia > 0 ? hi : lo);
+            b.far_o[a] = bvh_splat(ia > 0 ? lo : hi);
+        }
     }
     b.all = !ok;
+    b.grow = b.fused ? bvh_float_above(p * 0x1.0001p-23 + 0x1p-147) : BVH_TINY;
+    b.grows = bvh_splat(b.grow);
     return b;
 }
 
@@ -136,7 +197,11 @@ static float bvh_limit(const BvhRay *r, double t)
 
 /* Lane by lane, a > b ? a : b and a < b ? a : b (b when either is NaN):
  * what SSE's max and min instructions do. */
-#if defined(__SSE2__)
+#if defined(BVH_QUERY_AVX2)
+#define bvh_max(a, b) ((BvhLanes)_mm256_max_ps((a), (b)))
+#define bvh_min(a, b) ((BvhLanes)_mm256_min_ps((a), (b)))
+#define bvh_mask_bits(m) ((unsigned)_mm256_movemask_ps((__m256)(m)))
+#elif defined(__SSE2__)
 #define bvh_max(a, b) ((BvhLanes)_mm_max_ps((a), (b)))
 #define bvh_min(a, b) ((BvhLanes)_mm_min_ps((a), (b)))
 #define bvh_mask_bits(m) ((unsigned)_mm_movemask_ps((__m128)(m)))
@@ -166,6 +231,56 @@ static inline BvhLanes bvh_row(const BvhNode *node, int offset)
     return x;
 }
 
+/* Returns x * BVH_WIDEN + the ray's C lane by lane, rounded once (AVX2 build)
+ * or twice: the widened exit (above), monotonic in x. */
+static inline BvhLanes bvh_widen(BvhLanes x, const BvhRay *r)
+{
+#if BVH_FMA
+    return (BvhLanes)_mm256_fmadd_ps(x, bvh_splat(BVH_WIDEN), r->grows);
+#else
+    return x * BVH_WIDEN + r->grows;
+#endif
+}
+
+/* bvh_children_enter() for a ray not entering every box, its slab tests
+ * in the fused form or not (a constant where it is called). */
+static inline __attribute__((always_inline)) unsigned
+bvh_rows_enter(const BvhNode *node, const BvhRay *r, BvhLanes limit, float enter[BVH_WIDTH],
+               int fused)
+{
+    unsigned bits = 0;
+
+    (void)fused;
+    /* Unrolled: the loops are short and the body is a few instructions. */
+#pragma GCC unroll 2
+    for (int v = 0; v < BVH_VECTORS; v++) {
+        int first = v * BVH_LANES;
+        BvhLanes t0 = {0}, t1 = limit, n, f;
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            BvhLanes lo = bvh_row(node, r->near[a] + first), hi = bvh_row(node, r->far[a] + first);
+#if BVH_FMA
+            if (fused) {
+                n = (BvhLanes)_mm256_fmsub_ps(lo, r->inv[a], r->oi[a]);
+                f = (BvhLanes)_mm256_fmsub_ps(hi, r->inv[a], r->oi[a]);
+            } else
+#endif
+            {
+                n = (lo - r->near_o[a]) * r->inv[a];
+                f = (hi - r->far_o[a]) * r->inv[a];
+            }
+            t0 = bvh_max(n, t0);
+            t1 = bvh_min(f, t1);
+        }
+        /* Widened once: the widening is monotonic, so the least of the
+         * widened ends is the least end widened. */
+        t1 = bvh_widen(t1, r);
+        memcpy(enter + first, &t0, sizeof t0);
+        bits |= bvh_mask_bits((BvhMask)(t0 <= t1)) << first;
+    }
+    return bits;
+}
+
 /* Says which of node's children's boxes the ray meets at some t' in [0,
  * limit] (a bvh_limit(), in every lane): bit k for child k; stores in
  * enter[k] where the ray enters child k's box (t', never later than the
@@ -185,32 +300,22 @@ static inline unsigned bvh_children_enter(const BvhNode *node, const BvhRay *r, 
                     << v * BVH_LANES;
         return bits;
     }
-    /* Unrolled: the loops are short and the body is a few instructions. */
-#pragma GCC unroll 2
-    for (int v = 0; v < BVH_VECTORS; v++) {
-        int first = v * BVH_LANES;
-        BvhLanes t0 = {0}, t1 = limit, n, f;
-#pragma GCC unroll 3
-        for (int a = 0; a < 3; a++) {
-            n = (bvh_row(node, r->near[a] + first) - r->near_o[a]) * r->inv[a];
-            f = (bvh_row(node, r->far[a] + first) - r->far_o[a]) * r->inv[a];
-            t0 = bvh_max(n, t0);
-            t1 = bvh_min(f, t1);
-        }
-        /* Widened once: rounding x * BVH_WIDEN is monotonic in x, so the
-         * least of the widened ends is the least end widened. */
-        t1 = t1 * BVH_WIDEN + BVH_TINY;
-        memcpy(enter + first, &t0, sizeof t0);
-        bits |= bvh_mask_bits((BvhMask)(t0 <= t1)) << first;
-    }
-    return bits;
+#if BVH_FMA
+    if (r->fused)
+        return bvh_rows_enter(node, r, limit, enter, 1);
+#endif
+    return bvh_rows_enter(node, r, limit, enter, 0);
 }
 
 /* Returns the entry beyond which no box is entered before limit: as in
  * bvh_children_enter(). */
-static float bvh_cull(float limit)
+static float bvh_cull(const BvhRay *r, float limit)
 {
-    return limit * BVH_WIDEN + BVH_TINY;
+#if BVH_FMA
+    return fmaf(limit, BVH_WIDEN, r->grow);
+#else
+    return limit * BVH_WIDEN + r->grow;
+#endif
 }
 
 /* Tests the primitive bvh->prims[k] for a crossing at tmin < t < tmax;
@@ -247,7 +352,7 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Scene *scene, const Ray *ray, r
     int top = 0, found = 0;
     uint32_t id = 0;
     real bound = tmax; /* primitives are tested below bound */
-    float limit = bvh_limit(&r, tmax), cull = bvh_cull(limit);
+    float limit = bvh_limit(&r, tmax), cull = bvh_cull(&r, limit);
     BvhLanes limits = bvh_splat(limit);
 
     for (;;) {
@@ -307,7 +412,7 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Scene *scene, const Ray *ray, r
                     bound = real_next(t, 1);
                     limit = bvh_limit(&r, t);
                     limits = bvh_splat(limit);
-                    cull = bvh_cull(limit);
+                    cull = bvh_cull(&r, limit);
                 }
             }
         }

@@ -366,8 +366,9 @@ static int main_render(const Options *opts)
         fprintf(stderr, "raytrace: read the scene in %.3f s\n", accel_start - start);
         if (scene.accel)
             fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
-                            "%.3f s\n",
-                    scene.accel->node_count, scene.accel->depth, accel_time);
+                            "%.3f s%s\n",
+                    scene.accel->node_count, scene.accel->depth, accel_time,
+                    scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
         main_statistics(&img, &ropts, threads, &counts, render_time);
     }
     else if (!opts->quiet && tty)
