@@ -6,7 +6,7 @@
  * (its functions end in _base) and, on x86, once more for processors with
  * AVX2 and FMA (_avx2: the Makefile then defines RAYTRACE_AVX2). The two
  * builds test boxes differently (docs/design.md) and find the same hits;
- * bvh.c answers each query with the one Bvh.kernel names.
+ * bvh.c answers each query with the one Bvh.avx2 names.
  */
 #ifndef RAYTRACE_BVH_QUERY_H
 #define RAYTRACE_BVH_QUERY_H
