@@ -242,7 +242,11 @@ awk 'BEGIN {
         printf "triangle: %d %d %d %d %d %d %d %d %d 80 200 80 0.2\n", x, y, z + 1, x + 1, y, z + 1, x, y + 1, z + 1;
     }
 }' >"$T/many.txt"
-expect_exit "many objects, hierarchy" 0 "$RT" "$T/many.txt" "$T/many-bvh.ppm"
+expect_exit "many objects, hierarchy" 0 "$RT" -v "$T/many.txt" "$T/many-bvh.ppm"
+# On an x86-64 processor with AVX2 and FMA the queries run their AVX2 build.
+if [ "$(uname -m)" = x86_64 ] && grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
+    expect_grep "AVX2 box tests where the processor has them" "box tests in AVX2 and FMA" "$T/err"
+fi
 expect_exit "many objects, every object" 0 "$RT" --no-accel "$T/many.txt" "$T/many-all.ppm"
 cmp -s "$T/many-bvh.ppm" "$T/many-all.ppm" && pass || fail "--no-accel changes the picture of 4,000 objects"
 for s in mesh keyword; do
