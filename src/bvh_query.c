@@ -24,17 +24,15 @@
 #endif
 #define BVH_QUERY(name) name##_avx2
 #define BVH_FMA 1
-typedef float BvhLanes __attribute__((vector_size(32)));
-typedef int32_t BvhMask __attribute__((vector_size(32)));
-enum { BVH_LANES = 8 };
+#define BVH_VECTOR_BYTES 32
 #else
 #define BVH_QUERY(name) name##_base
 #define BVH_FMA 0
-typedef float BvhLanes __attribute__((vector_size(16)));
-typedef int32_t BvhMask __attribute__((vector_size(16)));
-enum { BVH_LANES = 4 };
+#define BVH_VECTOR_BYTES 16
 #endif
-enum { BVH_VECTORS = BVH_WIDTH / BVH_LANES };
+typedef float BvhLanes __attribute__((vector_size(BVH_VECTOR_BYTES)));
+typedef int32_t BvhMask __attribute__((vector_size(BVH_VECTOR_BYTES)));
+enum { BVH_LANES = BVH_VECTOR_BYTES / 4, BVH_VECTORS = BVH_WIDTH / BVH_LANES };
 
 /*
  * The box tests run in floats, in the hierarchy's frame, with ray
@@ -133,7 +131,7 @@ static inline int bvh_exponent(double x)
 /* Returns x in every lane (one shuffle). */
 static inline BvhLanes bvh_splat(float x)
 {
-#if defined(BVH_QUERY_AVX2)
+#if BVH_VECTOR_BYTES == 32
     return (BvhLanes){x, x, x, x, x, x, x, x};
 #else
     _Static_assert(BVH_LANES == 4, "bvh_splat() fills four lanes");
