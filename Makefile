@@ -36,7 +36,7 @@ else
 RT_OMP :=
 endif
 
-# The geometry's floating-point type (include/real.h): double, or float to
+# The geometry's floating-point type (include/math/real.h): double, or float to
 # measure what single precision costs (docs/trade.md).
 REAL ?= double
 ifeq ($(REAL),float)
@@ -58,18 +58,18 @@ ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
 
-LIB_SRC := src/angle.c src/bvh.c src/bvh_query.c src/camera.c src/compare.c src/deflate.c src/error.c src/file.c src/image.c src/keyword.c src/lex.c src/load.c \
-	src/number.c src/obj.c src/options.c src/outfile.c src/parse.c src/pfm.c src/plane.c src/png.c src/power.c src/ppm.c src/ray.c src/save.c \
-	src/render.c src/sampler.c src/scene.c src/sphere.c src/texture.c src/threads.c src/trace.c \
-	src/triangle.c src/writer.c
+# One folder per layer (docs/design.md): src/LAYER/NAME.c, its header
+# include/LAYER/NAME.h. The commands' own files are in src/cli.
+LIB_SRC := $(sort $(filter-out src/cli/%,$(wildcard src/*/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
+RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o
 
 # On x86, the hierarchy's queries are built a second time for processors
-# with AVX2 and FMA (include/bvh_query.h); bvh.c runs that build on those.
+# with AVX2 and FMA (src/accel/bvh_query.h); bvh.c runs that build on those.
 X86 := $(if $(filter x86_64-% i386-% i486-% i586-% i686-%,$(shell $(CC) -dumpmachine)),1)
 ifeq ($(X86),1)
 RT_CPPFLAGS += -DRAYTRACE_AVX2
-LIB_OBJ += $(BUILD)/bvh_query_avx2.o
+LIB_OBJ += $(BUILD)/accel/bvh_query_avx2.o
 endif
 AVX2_FLAGS := -mavx2 -mfma -DBVH_QUERY_AVX2
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
@@ -88,20 +88,20 @@ GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
 
 all: raytrace raytrace-diff
 
-raytrace: $(BUILD)/main.o $(LIB_OBJ)
+raytrace: $(RAYTRACE_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(BUILD)/unit: $(TEST_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-raytrace-diff: $(BUILD)/diff_main.o $(LIB_OBJ)
+raytrace-diff: $(BUILD)/cli/diff_main.o $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
-$(BUILD)/bvh_query_avx2.o: src/bvh_query.c $(FLAGS_STAMP)
+$(BUILD)/accel/bvh_query_avx2.o: src/accel/bvh_query.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(AVX2_FLAGS) -c -o $@ $<
 
@@ -136,13 +136,13 @@ docs/gallery/%.png: scenes/%.txt raytrace
 	./raytrace -q $< $@
 
 # The single-precision build beside the double one, for `make trade`.
-FLOAT_OBJ := $(BUILD)/float/main.o $(LIB_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o)
+FLOAT_OBJ := $(RAYTRACE_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o) $(LIB_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o)
 
 $(BUILD)/float/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) -DRAYTRACE_REAL_FLOAT $(CFLAGS) -c -o $@ $<
 
-$(BUILD)/float/bvh_query_avx2.o: src/bvh_query.c $(FLAGS_STAMP)
+$(BUILD)/float/accel/bvh_query_avx2.o: src/accel/bvh_query.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) -DRAYTRACE_REAL_FLOAT $(CFLAGS) $(AVX2_FLAGS) \
 		-c -o $@ $<
@@ -157,7 +157,7 @@ $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 
 # raytrace with Embree 3's traversal in place of ours (tests/bench/embree_bvh.c),
 # which the benchmark races against ours when libembree-dev is installed.
-EMBREE_OBJ := $(BUILD)/main.o $(filter-out $(BUILD)/bvh%.o,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
+EMBREE_OBJ := $(RAYTRACE_OBJ) $(filter-out $(BUILD)/accel/%,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
 EMBREE_PROBE = printf '$(HASH)include <embree3/rtcore.h>\nint main(void){return !rtcNewDevice(0);}\n' \
 	| $(CC) -x c - -o /dev/null -lembree3 >/dev/null 2>&1
 
@@ -188,7 +188,7 @@ FUZZ_CFLAGS := -std=c11 -g -O1 -ffp-contract=off -fsanitize=address,undefined \
 FUZZ_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/fuzz/%.o)
 .SECONDARY: $(FUZZ_OBJ)
 
-$(BUILD)/fuzz/%.o: src/%.c $(wildcard include/*.h)
+$(BUILD)/fuzz/%.o: src/%.c $(wildcard include/*/*.h src/*/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
 
@@ -211,4 +211,4 @@ check: test
 clean:
 	rm -rf $(BUILD) raytrace raytrace-diff
 
--include $(wildcard $(BUILD)/*.d $(BUILD)/tests/*.d $(BUILD)/float/*.d $(BUILD)/embree/*.d)
+-include $(wildcard $(BUILD)/*/*.d $(BUILD)/tests/*.d $(BUILD)/float/*/*.d $(BUILD)/embree/*.d)

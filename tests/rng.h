@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "vec3.h"
+#include "math/vec3.h"
 
 static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
 

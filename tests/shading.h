@@ -5,7 +5,7 @@
 #ifndef RAYTRACE_TEST_SHADING_H
 #define RAYTRACE_TEST_SHADING_H
 
-#include "scene.h"
+#include "scene/scene.h"
 
 /* Returns triangle i's shading in sc, a plain one's made up. */
 static inline TriangleShading shading_of(const Scene *sc, size_t i)

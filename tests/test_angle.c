@@ -1,8 +1,8 @@
 /* test_angle.c: the deterministic trigonometry and power against libm. */
 #include <math.h>
 
-#include "angle.h"
-#include "power.h"
+#include "math/angle.h"
+#include "math/power.h"
 #include "rng.h"
 #include "test.h"
 

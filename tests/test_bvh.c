@@ -4,11 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bvh.h"
+#include "accel/bvh.h"
 #include "rng.h"
-#include "scene.h"
+#include "scene/scene.h"
 #include "test.h"
-#include "trace.h"
+#include "render/trace.h"
 
 /* Adds n random spheres and n random triangles (some transparent, some
  * exact duplicates, for ties) around the origin at scale s, and a plane. */

@@ -5,15 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bvh.h"
-#include "deflate.h"
-#include "file.h"
-#include "number.h"
-#include "obj.h"
-#include "parse.h"
-#include "scene.h"
+#include "accel/bvh.h"
+#include "image/deflate.h"
+#include "base/file.h"
+#include "math/number.h"
+#include "scenefile/obj.h"
+#include "scenefile/parse.h"
+#include "scene/scene.h"
 #include "test.h"
-#include "writer.h"
+#include "image/writer.h"
 
 static void limits_sizes_read_for_people(void)
 {

@@ -4,11 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "obj.h"
-#include "parse.h"
+#include "scenefile/obj.h"
+#include "scenefile/parse.h"
 #include "shading.h"
 #include "test.h"
-#include "threads.h"
+#include "base/threads.h"
 
 /* Writes text (len bytes) to build/t.obj and loads it. */
 static int load(const char *text, size_t len, ObjMesh *m, Error *err)

@@ -4,12 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "load.h"
-#include "number.h"
-#include "parse.h"
+#include "scenefile/load.h"
+#include "math/number.h"
+#include "scenefile/parse.h"
 #include "rng.h"
 #include "test.h"
-#include "threads.h"
+#include "base/threads.h"
 
 /* A valid header: the screen is 2 x 2 at z = 1, so 4 x 4 pixels. */
 #define CAMERA "0 0 0\n"

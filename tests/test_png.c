@@ -3,10 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "deflate.h"
-#include "pfm.h"
-#include "png.h"
-#include "ppm.h"
+#include "image/deflate.h"
+#include "image/pfm.h"
+#include "image/png.h"
+#include "image/ppm.h"
 #include "test.h"
 
 static void checksums_match_known_values(void)

@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "ppm.h"
+#include "image/image.h"
+#include "image/ppm.h"
 #include "test.h"
 
 static void ppm_quantise_clamps_and_rounds_half_up(void)

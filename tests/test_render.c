@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "camera.h"
-#include "load.h"
-#include "parse.h"
-#include "render.h"
+#include "scene/camera.h"
+#include "scenefile/load.h"
+#include "scenefile/parse.h"
+#include "render/render.h"
 #include "rng.h"
-#include "trace.h"
+#include "render/trace.h"
 #include "test.h"
 
 static Camera camera_square(void)

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "sampler.h"
+#include "render/sampler.h"
 #include "test.h"
 
 static void sampler_grid_is_the_squarest_factoring(void)

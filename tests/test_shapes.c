@@ -1,11 +1,11 @@
 /* test_shapes.c: planes and triangles: hits, edges, and safe secondary rays. */
 #include <math.h>
 
-#include "plane.h"
-#include "ray.h"
+#include "geometry/plane.h"
+#include "geometry/ray.h"
 #include "rng.h"
 #include "test.h"
-#include "triangle.h"
+#include "geometry/triangle.h"
 
 static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1};
 

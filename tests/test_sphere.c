@@ -1,9 +1,9 @@
 /* test_sphere.c: ray/sphere intersection and safe secondary-ray origins. */
 #include <math.h>
 
-#include "ray.h"
+#include "geometry/ray.h"
 #include "rng.h"
-#include "sphere.h"
+#include "geometry/sphere.h"
 #include "test.h"
 
 #define PI 3.14159265358979323846

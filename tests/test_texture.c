@@ -3,11 +3,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "parse.h"
+#include "scenefile/parse.h"
 #include "shading.h"
-#include "sphere.h"
+#include "geometry/sphere.h"
 #include "test.h"
-#include "texture.h"
+#include "scene/texture.h"
 
 /* Writes text (len bytes) to path. */
 static void write_file(const char *path, const char *text, size_t len)

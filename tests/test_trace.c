@@ -1,10 +1,10 @@
 /* test_trace.c: shading on tiny scenes whose colours are known exactly. */
 #include <math.h>
 
-#include "scene.h"
+#include "scene/scene.h"
 #include "shading.h"
 #include "test.h"
-#include "trace.h"
+#include "render/trace.h"
 
 #define PI 3.14159265358979323846
 

@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "error.h"
+#include "base/error.h"
 #include "test.h"
 
 extern const TestCase sphere_tests[], shape_tests[], parse_tests[], trace_tests[],

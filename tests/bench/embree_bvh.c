@@ -13,7 +13,7 @@
  * padded for that; make bench compares the bytes). Spheres only: the
  * benchmark's fields. One scene a process.
  */
-#include "bvh.h"
+#include "accel/bvh.h"
 
 #include <embree3/rtcore.h>
 #include <math.h>
@@ -21,8 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene.h"
-#include "sphere.h"
+#include "scene/scene.h"
+#include "geometry/sphere.h"
 
 static RTCDevice eb_device;
 static RTCScene eb_scene;

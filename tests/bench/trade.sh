@@ -256,7 +256,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo
     echo "\`make REAL=float\` computes the geometry (points, directions, ray"
     echo "parameters, intersections, error bounds, the hierarchy's boxes) in"
-    echo "single precision; colours stay double (include/real.h). Each scene is"
+    echo "single precision; colours stay double (include/math/real.h). Each scene is"
     echo "rendered by both builds, run for run alternately; the error is the float"
     echo "render's against the double one. The course scene is also shown"
     echo "scaled by 10^-4 and 10^6, moved 10^7 away on each axis, and both shrunk"

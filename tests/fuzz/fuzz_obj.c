@@ -3,7 +3,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "obj.h"
+#include "scenefile/obj.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

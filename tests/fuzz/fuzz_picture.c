@@ -2,7 +2,7 @@
  * (compare.c: PPM, PFM, PNG and the inflater behind it). */
 #include <stdint.h>
 
-#include "compare.h"
+#include "image/compare.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

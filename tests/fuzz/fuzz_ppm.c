@@ -3,7 +3,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "ppm.h"
+#include "image/ppm.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -1,0 +1,41 @@
+/*
+ * outfile.h: writing an output file all at once or not at all.
+ *
+ * A regular output file is written to a new temporary file beside it, which
+ * replaces it (rename) only when everything was written and flushed: a
+ * failed or interrupted render leaves an existing file untouched. "-" means
+ * standard output, and an existing file that is not a regular file (a
+ * device such as /dev/null, a FIFO) is written in place, since it cannot be
+ * replaced.
+ */
+#ifndef RAYTRACE_OUTFILE_H
+#define RAYTRACE_OUTFILE_H
+
+#include <stdio.h>
+
+#include "base/error.h"
+
+enum { OUTFILE_PATH_MAX = 4096 }; /* longest path handled, bytes */
+
+typedef struct {
+    FILE *fp;                    /* where to write; NULL when not open */
+    char path[OUTFILE_PATH_MAX]; /* the file to produce, as named by the user */
+    char dest[OUTFILE_PATH_MAX]; /* what the rename replaces (links resolved) */
+    char temp[OUTFILE_PATH_MAX]; /* temporary file, "" when writing in place */
+    int is_stdout;               /* 1 when writing to standard output */
+} OutFile;
+
+/* Opens path ("-": standard output) for writing as described above; returns
+ * 0, or -1 with *err saying why and nothing created. */
+int outfile_open(OutFile *out, const char *path, Error *err);
+
+/* Finishes the file: flushes and syncs it, closes it and renames the
+ * temporary file onto the destination. Returns 0, or -1 with *err filled
+ * and the temporary file removed. */
+int outfile_commit(OutFile *out, Error *err);
+
+/* Abandons the file: closes it and removes the temporary file, leaving any
+ * existing output as it was. */
+void outfile_abort(OutFile *out);
+
+#endif

@@ -1,0 +1,48 @@
+/*
+ * material.h: how a surface answers light: its colour, mirror and
+ * transparency weights, refractive index and texture.
+ *
+ * Every shape carries one. The shading rules that use it are in trace.h.
+ */
+#ifndef RAYTRACE_MATERIAL_H
+#define RAYTRACE_MATERIAL_H
+
+#include "math/colour.h"
+
+/* How a texture is read between texel centres. */
+typedef enum {
+    TEXTURE_NEAREST, /* the texel the point falls in */
+    TEXTURE_BILINEAR /* the four nearest texels, weighted by distance */
+} TextureFilter;
+
+typedef struct {
+    Colour colour;         /* diffuse colour Ci, 0..255 per channel */
+    double reflection;     /* mirror weight R, 0..1 */
+    double transparency;   /* transmitted weight T, 0..1, R + T <= 1 */
+    double ior;            /* refractive index n, > 0 (1 when T = 0) */
+    int texture;           /* index in the scene's textures, or -1: Ci is
+                              then the colour above */
+    TextureFilter filter;  /* lookup used with the texture */
+    int phong;             /* index in the scene's Blinn-Phong materials, or
+                              -1: the course's shading rule (trace.h) */
+} Material;
+
+/* A material of seed 002's keyword format: a named Material (its colour,
+ * rho_r as the mirror weight, tau as the transparency, eta_r as the index),
+ * shaded by Blinn-Phong with the weights below (docs/scene-format.md). */
+typedef struct {
+    char *name;        /* as written; owned by the scene */
+    Material base;     /* what the shapes that use it copy */
+    double ka, kd, ks; /* ambient, diffuse and specular weights, >= 0 */
+    double shininess;  /* the Blinn-Phong exponent alpha, >= 0 */
+    int line;          /* line of its definition, for messages */
+} PhongMaterial;
+
+/* Returns the opaque, untextured material of colour c and mirror weight r. */
+static inline Material material_plain(Colour c, double r)
+{
+    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST, -1};
+    return m;
+}
+
+#endif

@@ -1,0 +1,88 @@
+/*
+ * sphere.h: the sphere, its ray intersection and its surface geometry.
+ *
+ * Intersection follows Haines, Günther and Akenine-Möller, "Precision
+ * Improvements for Ray/Sphere Intersection" (Ray Tracing Gems, ch. 7): the
+ * discriminant is computed from the centre's distance to the ray's line,
+ * which does not cancel catastrophically for small or distant spheres, and
+ * the two roots come from the cancellation-free pair q / a and c / q.
+ */
+#ifndef RAYTRACE_SPHERE_H
+#define RAYTRACE_SPHERE_H
+
+#include "geometry/material.h"
+#include "geometry/ray.h"
+#include "math/vec3.h"
+
+typedef struct {
+    Vec3 centre;       /* scene units */
+    real radius;     /* scene units, > 0 */
+    Material material; /* what the surface looks like */
+    unsigned order;    /* position among the scene's objects, for ties */
+} Sphere;
+
+/*
+ * Finds where the ray first crosses the surface of the sphere of centre and
+ * radius with tmin < t < tmax (an open interval); returns 1 and stores that
+ * t in *t, or returns 0. The ray's direction may have any non-zero length; a
+ * tangent ray counts as crossing. Inline: the hierarchy calls it on its own
+ * compact copy of the spheres.
+ */
+static inline int sphere_hit(Vec3 centre, real radius, const Ray *ray, real tmin, real tmax,
+                             real *t)
+{
+    Vec3 f = vec3_sub(ray->origin, centre);
+    Vec3 d = ray->dir;
+    real a = vec3_dot(d, d);
+    real h = vec3_dot(f, d); /* half of the quadratic's b */
+    real r2 = radius * radius;
+    /* l is f minus its projection on d: its length is the centre's distance
+     * to the line, so r2 - |l|^2 = (h^2 - a c) / a without cancellation. */
+    Vec3 l = vec3_sub(f, vec3_scale(d, h / a));
+    real disc = r2 - vec3_dot(l, l);
+    real c, q, t0, t1;
+
+    if (!(disc >= 0))
+        return 0;
+    c = vec3_dot(f, f) - r2;
+    q = -(h + copysign(sqrt(a * disc), h));
+    if (q == 0) {
+        /* h = 0 and disc = 0: the origin is the tangent point, t = 0 twice. */
+        t0 = t1 = 0;
+    } else {
+        t0 = q / a;
+        t1 = c / q;
+        if (t0 > t1) {
+            real tmp = t0;
+            t0 = t1;
+            t1 = tmp;
+        }
+    }
+    if (t0 > tmin && t0 < tmax) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > tmin && t1 < tmax) {
+        *t = t1;
+        return 1;
+    }
+    return 0;
+}
+
+/* sphere_hit() on sphere s. */
+int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t);
+
+/* Returns how many times the ray crosses s's surface with tmin < t < tmax:
+ * 0, 1 or 2. */
+int sphere_crossings(const Sphere *s, const Ray *ray, real tmin, real tmax);
+
+/* Re-projects p, a point near s's surface, onto the surface and returns it
+ * with its outward normal and error bound. */
+SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p);
+
+/* Returns in uv the texture coordinates of the point of outward normal n:
+ * u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the y axis (0.5 facing -z), and
+ * v = 1 - acos(n.y) / pi from the south pole (v = 0) to the north (v = 1). */
+void sphere_uv(Vec3 n, double uv[2]);
+
+#endif

@@ -1,0 +1,55 @@
+/*
+ * image.h: the rendered picture, as 8-bit RGB bytes.
+ *
+ * Layout contract: rows top to bottom, pixels left to right within a row,
+ * three interleaved bytes per pixel (red, green, blue); pixel (x, y) starts at
+ * byte 3 * (y * width + x). Colours enter through image_set(), which
+ * quantises with colour_quantise(). An image may also keep the colours
+ * before quantising (image_keep_linear()), for formats that store them:
+ * three floats per pixel, the same layout, on the scale 1.0 = 255.
+ */
+#ifndef RAYTRACE_IMAGE_H
+#define RAYTRACE_IMAGE_H
+
+#include <stddef.h>
+
+#include "math/colour.h"
+
+typedef struct {
+    int width;          /* pixels per row, >= 1 */
+    int height;         /* rows, >= 1 */
+    unsigned char *rgb; /* 3 * width * height bytes, owned */
+    float *linear;      /* 3 * width * height unclamped colours / 255, owned;
+                           NULL unless image_keep_linear() was called */
+} Image;
+
+/* Allocates a black width x height image; returns 0, or -1 when memory runs
+ * out (the image is then empty and needs no image_free()). */
+int image_init(Image *img, int width, int height);
+
+/* Makes img also keep its colours before quantising; returns 0, or -1 when
+ * memory runs out (the image is unchanged). */
+int image_keep_linear(Image *img);
+
+/* Releases the pixels and leaves the image empty. */
+void image_free(Image *img);
+
+/* Returns the bytes the image needs: 3 * width * height. */
+size_t image_size(int width, int height);
+
+/* Stores colour c, quantised, at pixel (x, y). */
+static inline void image_set(Image *img, int x, int y, Colour c)
+{
+    unsigned char *p = img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
+    p[0] = colour_quantise(c.r);
+    p[1] = colour_quantise(c.g);
+    p[2] = colour_quantise(c.b);
+    if (img->linear) {
+        float *f = img->linear + (p - img->rgb);
+        f[0] = (float)(c.r / 255);
+        f[1] = (float)(c.g / 255);
+        f[2] = (float)(c.b / 255);
+    }
+}
+
+#endif

@@ -1,0 +1,39 @@
+/*
+ * render.h: turning a scene into an image, tiles shared among threads.
+ *
+ * Each pixel is traced on its own from its own primary rays, so the bytes do
+ * not depend on the number of threads or on how tiles are scheduled. With one
+ * sample per pixel the ray goes through the pixel's centre (and the lens's
+ * centre); with n, through n points of the pixel (and of the lens) placed by
+ * sampler.h, and the pixel is the mean of their colours, taken before the
+ * colour is clamped and rounded.
+ */
+#ifndef RAYTRACE_RENDER_H
+#define RAYTRACE_RENDER_H
+
+#include "image/image.h"
+#include "scene/scene.h"
+#include "render/trace.h"
+
+/* Told, one call at a time, that done of the image's total parts (tiles)
+ * are finished; ctx is RenderOptions' progress_ctx. */
+typedef void (*RenderProgress)(void *ctx, int done, int total);
+
+typedef struct {
+    int max_depth;           /* deepest secondary ray traced, 0..TRACE_MAX_DEPTH_LIMIT */
+    int samples;             /* samples per pixel, 1..SAMPLER_MAX */
+    double cutoff;           /* leave out secondary and shadow rays that
+                                could bring less than this many levels
+                                (trace.h); the bytes stay those of an uncut
+                                render (PFM: no cut-off); 0 for none */
+    int threads;             /* worker threads, >= 1; 1 without OpenMP */
+    RenderProgress progress; /* called after each tile, or NULL */
+    void *progress_ctx;      /* passed to progress */
+} RenderOptions;
+
+/* Renders scene into img, which must already be sized to the scene's
+ * camera width and height; cannot fail. Adds the rays cast to *counts (may
+ * be NULL). Returns the number of threads used. */
+int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts);
+
+#endif

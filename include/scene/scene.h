@@ -1,0 +1,208 @@
+/*
+ * scene.h: everything a render needs, as the parser builds it.
+ *
+ * A Scene owns its arrays of lights, shapes and textures; scene_free()
+ * releases them. Shapes keep the order of the scene file within their kind,
+ * and each records its position among all objects, which decides exact ties
+ * between hits. Flags say which optional features the scene uses, so that
+ * the renderer spends nothing on the others.
+ */
+#ifndef RAYTRACE_SCENE_H
+#define RAYTRACE_SCENE_H
+
+#include <stddef.h>
+
+#include "scene/camera.h"
+#include "math/colour.h"
+#include "geometry/plane.h"
+#include "geometry/sphere.h"
+#include "scene/texture.h"
+#include "geometry/triangle.h"
+#include "math/vec3.h"
+
+typedef struct {
+    Vec3 position;    /* a point light: where it is, scene units; a distant
+                         light: the direction its light travels, as written */
+    Colour colour;    /* Cs, 0..255 per channel */
+    int distant;      /* 1: a distant light (keyword format) */
+    double intensity; /* i, the distant light's intensity */
+    Vec3 to_light;    /* a distant light: unit vector towards it */
+} Light;
+
+/* Returns the point light at position of colour c. */
+static inline Light light_point(Vec3 position, Colour c)
+{
+    Light light = {position, c, 0, 0, {0, 0, 0}};
+    return light;
+}
+
+/* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
+ * them apart by content. */
+typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD } SceneFormat;
+
+/* A keyword-format mesh line, kept so that the scene can be saved. */
+typedef struct {
+    char *path;   /* the OBJ path as written in the scene file */
+    char *opened; /* the path it was read from */
+    size_t first; /* its first triangle in the scene's triangles */
+    size_t count; /* how many triangles it gave */
+} SceneMesh;
+
+struct Bvh;
+struct ObjMesh;
+
+typedef struct Scene {
+    Camera camera;          /* eye, screen, image size and lens */
+    Colour background;      /* seen where a ray hits nothing, 0..255 */
+    Colour ambient;         /* course: Ca, added to every lit surface, 0 by
+                               default; keyword: Ia, the ambient record or
+                               else the sum of i Cs over the lights */
+    int has_ambient;        /* an ambient record set it */
+    Light *lights;          /* course: lights[0] is the header's light */
+    size_t light_count;     /* lights in use, >= 1 once a course scene is
+                               parsed */
+    size_t light_capacity;  /* lights allocated */
+    Sphere *spheres;        /* file order; NULL when there are none */
+    size_t sphere_count;    /* spheres in use */
+    size_t sphere_capacity; /* spheres allocated */
+    Plane *planes;          /* file order; NULL when there are none */
+    size_t plane_count;
+    size_t plane_capacity;
+    Triangle *triangles;    /* file order; NULL when there are none */
+    size_t triangle_count;
+    size_t triangle_capacity;
+    Material *materials;    /* the triangles' (spheres and planes hold
+                               their own) */
+    size_t material_count;
+    size_t material_capacity;
+    TriangleShading *shading; /* the triangles' that have texture
+                               coordinates or vertex normals */
+    size_t shading_count;
+    size_t shading_capacity;
+    Texture *textures;      /* one per distinct texture file */
+    size_t texture_count;
+    size_t texture_capacity;
+    PhongMaterial *phong;   /* the keyword format's named materials */
+    size_t phong_count;
+    size_t phong_capacity;
+    SceneMesh *meshes;      /* the keyword format's mesh lines */
+    size_t mesh_count;
+    size_t mesh_capacity;
+    SceneFormat format;     /* the format it was read from */
+    Vec3 look_from;         /* keyword: the camera line as written */
+    Vec3 look_at;
+    double fov;
+    struct Bvh *accel;      /* hierarchy over spheres and triangles, or NULL:
+                               every ray then tests every object */
+    int has_transparency;   /* some object has T > 0 */
+    int samples;            /* samples per pixel a samples: record asks for,
+                               0 when the scene does not say */
+    int length_exponent;    /* every length above is the scene file's times
+                               2^length_exponent: 0 unless scene_fit_scale()
+                               enlarged a tiny scene */
+    size_t memory_limit;    /* bytes the scene's arrays, meshes being read and
+                               hierarchy may take together; 0: no limit */
+} Scene;
+
+/* What scene_add_*() and scene_build_accel() return when the memory limit
+ * would be passed (-1 is for memory running out). */
+#define SCENE_OVER_LIMIT (-2)
+
+/* Makes *scene an empty scene that owns nothing. */
+void scene_init(Scene *scene);
+
+/* Releases what *scene owns and leaves it empty. */
+void scene_free(Scene *scene);
+
+/* Each scene_add_*() appends a copy of its argument, giving a shape its
+ * position among the scene's objects (and a triangle a material of its own,
+ * a copy of *m, and no shading: scene_shade_triangle() gives it some);
+ * returns 0, or -1 when memory runs out or SCENE_OVER_LIMIT when it would
+ * pass the memory limit, the scene unchanged. */
+int scene_add_light(Scene *scene, const Light *light);
+int scene_add_sphere(Scene *scene, const Sphere *s);
+int scene_add_plane(Scene *scene, const Plane *p);
+int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
+
+/* Appends n >= 1 spheres at once, as n calls of scene_add_sphere() would (the
+ * same room; their positions among the objects set here): fill(room, ctx)
+ * writes them into room, on any threads, and returns 0. Returns 0, or
+ * what fill() returned (non-zero), -1 or SCENE_OVER_LIMIT, with the scene
+ * as it was, when fill() or one of those calls would fail. */
+int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx);
+
+/* Gives triangle i the shading *sh (in an entry of the scene's shading of
+ * its own); returns 0, -1 when memory runs out or SCENE_OVER_LIMIT, the
+ * triangle unchanged. */
+int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh);
+
+/* Returns the material of tri, a triangle of scene (writable: the parser's
+ * texture records set it). */
+static inline Material *scene_material_of(const Scene *scene, const Triangle *tri)
+{
+    return &scene->materials[tri->material];
+}
+
+/* Returns tri's shading, a triangle of scene, or NULL when it is plain. */
+static inline const TriangleShading *scene_shading_of(const Scene *scene, const Triangle *tri)
+{
+    return tri->shading == TRIANGLE_PLAIN ? NULL : &scene->shading[tri->shading];
+}
+
+/* Appends the triangles of OBJ mesh m with material mat, smooth where all
+ * three corners have a non-zero normal, with the texture coordinates of
+ * their corners when all three have some (every triangle of a mesh with
+ * normals or texture coordinates has a shading entry; of one without,
+ * none); triangles without area are left out. Returns how many it added,
+ * -1 when memory runs out (those added stay), or SCENE_OVER_LIMIT (none
+ * added) when the triangles and the mesh together would pass the memory
+ * limit. */
+long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
+
+/* Appends *m, taking ownership of its name (freed on failure); returns its
+ * index, or -1 when memory runs out. */
+int scene_add_phong(Scene *scene, PhongMaterial *m);
+
+/* Appends *mesh, taking ownership of its strings (freed on failure);
+ * returns 0, or -1 when memory runs out. */
+int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
+
+/* Takes ownership of *tex as the scene's next texture; returns its index, or
+ * -1 (tex released) when memory runs out. */
+int scene_add_texture(Scene *scene, Texture *tex);
+
+/* Builds the acceleration structure (bvh.h) when the scene has enough
+ * spheres and triangles to gain from one, with up to threads threads;
+ * returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
+ * would pass the memory limit, or -1 when memory runs out (the scene is
+ * then left without one, and still renders). */
+int scene_build_accel(Scene *scene, int threads);
+
+/* Returns the bytes the scene holds: its arrays at their capacity, its
+ * textures' texels and its hierarchy. */
+size_t scene_memory(const Scene *scene);
+
+/* Returns the budget to give obj_load() for a mesh of this scene: the bytes
+ * left under the limit (at least 1), or 0 without a limit. */
+size_t scene_obj_budget(const Scene *scene);
+
+/* Returns the bytes of the limit left for more (SIZE_MAX without a limit,
+ * 0 once it is used up). */
+size_t scene_memory_left(const Scene *scene);
+
+/* Returns the number of objects (shapes) in the scene. */
+size_t scene_object_count(const Scene *scene);
+
+/*
+ * Enlarges a tiny scene, one whose every coordinate and length is below
+ * SCENE_TINY in magnitude, by the power of two that brings the largest into
+ * [0.5, 1), and records it in length_exponent. Multiplying every length by a
+ * power of two is exact and commutes with every operation the renderer
+ * uses, so the picture does not change; but squares and products of lengths
+ * no longer underflow. Other scenes are left as they are.
+ */
+void scene_fit_scale(Scene *scene);
+
+#define SCENE_TINY 0x1p-64 /* ~5.4e-20: smaller scenes are enlarged */
+
+#endif

@@ -1,0 +1,35 @@
+/*
+ * load.h: reading a scene file in either format: the course's (parse.h) or
+ * seed 002's keyword format (keyword.h), told apart by content unless the
+ * caller names one.
+ *
+ * The rule: the first token of the first line that is neither blank nor a
+ * comment (after a UTF-8 byte order mark) decides. A course scene opens with
+ * the camera's coordinates, a number; a keyword scene with a keyword. So a
+ * token that starts with an ASCII letter and is not a number word ("nan",
+ * "inf") means the keyword format, anything else the course format, whose
+ * parser then explains what it expected.
+ */
+#ifndef RAYTRACE_LOAD_H
+#define RAYTRACE_LOAD_H
+
+#include <stddef.h>
+
+#include "base/error.h"
+#include "scene/scene.h"
+
+/* Returns the format of the len bytes at text by the rule above. */
+SceneFormat load_detect(const char *text, size_t len);
+
+/* Reads the scene file at path ("-": standard input) in the given format
+ * (SCENE_AUTO: detected) into *scene, which this call initialises with
+ * memory_limit (bytes, 0 for none: scene.h); returns 0, or -1 with *err
+ * filled and *scene empty. */
+int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,
+                    Error *err);
+
+/* Same as load_scene_file() for the len bytes at text, named `name`. */
+int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
+                    size_t memory_limit, Scene *scene, Error *err);
+
+#endif

@@ -1,0 +1,203 @@
+/*
+ * diff_main.c: the raytrace-diff command: compares a render with a
+ * reference and says how far apart they are. The only code of the command
+ * that prints or exits; the work is in compare.c.
+ *
+ * Exit status: 0 within tolerance, 1 different, 2 trouble (an unreadable
+ * image, different sizes, a bad command line).
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "image/compare.h"
+#include "base/outfile.h"
+#include "image/writer.h"
+
+#define DIFF_VERSION "0.1.0"
+
+static const char diff_help[] =
+    "Usage: raytrace-diff [OPTIONS] REFERENCE IMAGE\n"
+    "Compare IMAGE with REFERENCE, channel by channel, on the 0..255 scale of an\n"
+    "8-bit image. Both may be PPM (P3 or P6, any maxval), PFM or PNG.\n"
+    "\n"
+    "Options:\n"
+    "  -t, --tolerance N   a channel may differ by up to N levels (default 0)\n"
+    "  -m, --max-pixels N  up to N pixels may exceed the tolerance (default 0)\n"
+    "  -d, --diff FILE     write FILE: REFERENCE darkened, with the pixels over\n"
+    "                      the tolerance in red (PPM, or PNG by extension)\n"
+    "  -q, --quiet         print nothing; the exit status says it all\n"
+    "  -h, --help          print this help and exit\n"
+    "  -V, --version       print the version and exit\n"
+    "\n"
+    "Prints both sizes and formats, the largest difference with its pixel and\n"
+    "both values, the mean and RMS differences, the PSNR, and the number of\n"
+    "pixels over the tolerance.\n"
+    "\n"
+    "Exit status: 0 at most --max-pixels pixels exceed the tolerance; 1 more\n"
+    "do; 2 an image cannot be read, the sizes differ, or the command line is\n"
+    "wrong.\n";
+
+static int diff_usage(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "raytrace-diff: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\nTry 'raytrace-diff --help'.\n");
+    return 2;
+}
+
+static void diff_report(const Error *err)
+{
+    if (err->line > 0)
+        fprintf(stderr, "raytrace-diff: %s:%d:%d: error: %s\n", err->file, err->line,
+                err->column, err->message);
+    else
+        fprintf(stderr, "raytrace-diff: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
+                err->message);
+}
+
+/* Reads a number >= 0 from text into *out; returns 0 or -1. */
+static int diff_number(const char *text, double *out)
+{
+    char *end;
+    double v = strtod(text, &end);
+
+    if (!*text || *end || !(v >= 0) || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Writes the diff image of a and b to path. */
+static int diff_write_image(const char *path, const Picture *a, const Picture *b,
+                            double tolerance)
+{
+    WriterOptions wopts = {writer_format_for(path), 0, DEFLATE_FIXED};
+    Image img;
+    OutFile out;
+    Error err;
+
+    if (wopts.format == FORMAT_PFM)
+        wopts.format = FORMAT_PPM;
+    if (image_init(&img, a->width, a->height) != 0) {
+        fprintf(stderr, "raytrace-diff: %s: error: out of memory\n", path);
+        return -1;
+    }
+    compare_diff_image(a, b, tolerance, &img);
+    if (outfile_open(&out, path, &err) != 0) {
+        diff_report(&err);
+        image_free(&img);
+        return -1;
+    }
+    if (writer_write(out.fp, &img, &wopts) != 0) {
+        fprintf(stderr, "raytrace-diff: %s: error: cannot write the image\n", path);
+        outfile_abort(&out);
+        image_free(&img);
+        return -1;
+    }
+    image_free(&img);
+    if (outfile_commit(&out, &err) != 0) {
+        diff_report(&err);
+        return -1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    static const char *const channel[3] = {"red", "green", "blue"};
+    const char *paths[2], *diff_path = NULL;
+    double tolerance = 0, max_pixels = 0;
+    int npaths = 0, quiet = 0, status;
+    Picture a, b;
+    Comparison c;
+    Error err;
+
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
+            fputs(diff_help, stdout);
+            return 0;
+        } else if (strcmp(arg, "-V") == 0 || strcmp(arg, "--version") == 0) {
+            puts("raytrace-diff " DIFF_VERSION);
+            return 0;
+        } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
+            quiet = 1;
+        } else if (strcmp(arg, "-t") == 0 || strcmp(arg, "--tolerance") == 0 ||
+                   strcmp(arg, "-m") == 0 || strcmp(arg, "--max-pixels") == 0 ||
+                   strcmp(arg, "-d") == 0 || strcmp(arg, "--diff") == 0) {
+            int is_t = arg[1] == 't' || arg[2] == 't', is_d = arg[1] == 'd' || arg[2] == 'd';
+            double *target = is_t ? &tolerance : &max_pixels;
+            if (i + 1 >= argc)
+                return diff_usage("option '%s' needs a value", arg);
+            if (is_d) {
+                diff_path = argv[++i];
+            } else if (diff_number(argv[++i], target) != 0 ||
+                       (!is_t && *target != floor(*target))) {
+                return diff_usage(is_t ? "--tolerance takes a number of levels >= 0, found "
+                                         "'%.40s'"
+                                       : "--max-pixels takes a whole number >= 0, found "
+                                         "'%.40s'",
+                                  argv[i]);
+            }
+        } else if (arg[0] == '-' && arg[1] != '\0') {
+            return diff_usage("unknown option '%.40s'", arg);
+        } else if (npaths == 2) {
+            return diff_usage("too many arguments: '%.40s' after REFERENCE and IMAGE", arg);
+        } else {
+            paths[npaths++] = arg;
+        }
+    }
+    if (npaths < 2)
+        return diff_usage("%s", npaths == 0 ? "missing REFERENCE and IMAGE" : "missing IMAGE");
+    if (picture_load(paths[0], &a, &err) != 0) {
+        diff_report(&err);
+        return 2;
+    }
+    if (picture_load(paths[1], &b, &err) != 0) {
+        diff_report(&err);
+        picture_free(&a);
+        return 2;
+    }
+    if (a.width != b.width || a.height != b.height) {
+        fprintf(stderr, "raytrace-diff: error: the sizes differ: %s is %d x %d, %s is %d x %d\n",
+                paths[0], a.width, a.height, paths[1], b.width, b.height);
+        picture_free(&a);
+        picture_free(&b);
+        return 2;
+    }
+    c = compare_pictures(&a, &b, tolerance);
+    status = (double)c.over <= max_pixels ? 0 : 1;
+    if (!quiet) {
+        const double *p = a.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
+        const double *q = b.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
+        printf("reference: %s: %d x %d, %s\n", paths[0], a.width, a.height, a.format);
+        printf("image:     %s: %d x %d, %s\n", paths[1], b.width, b.height, b.format);
+        if (c.max_error > 0)
+            printf("max error: %g at pixel (%d, %d), %s: reference (%g, %g, %g), image (%g, "
+                   "%g, %g)\n",
+                   c.max_error, c.max_x, c.max_y, channel[c.max_channel], p[0], p[1], p[2],
+                   q[0], q[1], q[2]);
+        else
+            printf("max error: 0 (identical pixels)\n");
+        printf("mean error: %.6g, RMS error: %.6g, PSNR: ", c.mean_error, c.rms_error);
+        if (isinf(c.psnr))
+            printf("infinite\n");
+        else
+            printf("%.2f dB\n", c.psnr);
+        printf("over tolerance %g: %zu of %zu pixels (%.4f%%), at most %.0f allowed: %s\n",
+               tolerance, c.over, c.pixels, c.pixels ? 100.0 * (double)c.over / (double)c.pixels : 0,
+               max_pixels, status == 0 ? "same" : "DIFFERENT");
+        printf("channels over tolerance %g: %zu of %zu (%.4f%%)\n", tolerance, c.channels_over,
+               3 * c.pixels,
+               c.pixels ? 100.0 * (double)c.channels_over / (3.0 * (double)c.pixels) : 0);
+    }
+    if (diff_path && diff_write_image(diff_path, &a, &b, tolerance) != 0)
+        status = 2;
+    picture_free(&a);
+    picture_free(&b);
+    return status;
+}

@@ -1,0 +1,427 @@
+/*
+ * main.c: the raytrace command: options, then scene file -> parser -> Scene
+ * -> renderer -> Image -> writer (PPM, PNG or PFM) -> output file. The only
+ * module that prints or exits.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "accel/bvh.h"
+#include "base/error.h"
+#include "base/file.h"
+#include "image/image.h"
+#include "cli/options.h"
+#include "base/outfile.h"
+#include "scenefile/load.h"
+#include "math/number.h"
+#include "render/render.h"
+#include "base/threads.h"
+#include "scenefile/save.h"
+#include "scene/scene.h"
+#include "image/writer.h"
+
+#define RAYTRACE_VERSION "0.1.0"
+
+/* The temporary output file, for the signal handler to remove. */
+static const char *volatile main_temp_path;
+
+/* Set while a progress bar is on the terminal, for the handler to erase. */
+static volatile sig_atomic_t main_bar_shown;
+
+/* On SIGINT or SIGTERM: remove the temporary file, say so, exit 128 + sig. */
+static void main_on_signal(int sig)
+{
+    static const char msg[] = "raytrace: interrupted\n", erase[] = "\r\033[K";
+    const char *temp = main_temp_path;
+
+    if (temp)
+        unlink(temp);
+    if ((main_bar_shown && write(STDERR_FILENO, erase, sizeof erase - 1) < 0) ||
+        write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
+        /* Nothing more can be done. */
+    }
+    _exit(128 + sig);
+}
+
+static void main_catch_signals(void)
+{
+    struct sigaction sa;
+
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = main_on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+/*
+ * Opens the output like outfile_open() and arranges for SIGINT and SIGTERM to
+ * remove its temporary file. Signals are held while the file is created, so
+ * none can strike between its creation and its registration; no other
+ * thread exists yet, so the mask of this one is enough.
+ */
+static int main_open_output(OutFile *out, const char *path, Error *err)
+{
+    sigset_t set, old;
+    int rc;
+
+    main_catch_signals();
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(SIG_BLOCK, &set, &old);
+    rc = outfile_open(out, path, err);
+    if (rc == 0 && out->temp[0])
+        main_temp_path = out->temp;
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return rc;
+}
+
+/* Prints err as "raytrace: FILE:LINE:COL: error: MESSAGE", then the line at
+ * fault with a caret under the column; errors without a position print as
+ * "raytrace: FILE: error: MESSAGE". */
+static void main_report(const Error *err)
+{
+    if (err->line <= 0) {
+        fprintf(stderr, "raytrace: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
+                err->message);
+        return;
+    }
+    fprintf(stderr, "raytrace: %s:%d:%d: error: %s\n", err->file, err->line, err->column,
+            err->message);
+    fprintf(stderr, "%5d | %s\n      | ", err->line, err->excerpt);
+    /* Pad with the line's own tabs so the caret lines up; UTF-8 continuation
+     * bytes take no column. */
+    for (int i = 0; i < err->caret && err->excerpt[i]; i++) {
+        unsigned char ch = (unsigned char)err->excerpt[i];
+        if (ch == '\t')
+            fputc('\t', stderr);
+        else if ((ch & 0xC0) != 0x80)
+            fputc(' ', stderr);
+    }
+    for (int i = (int)strlen(err->excerpt); i < err->caret; i++)
+        fputc(' ', stderr);
+    fputs("^\n", stderr);
+}
+
+static int main_usage(const char *msg)
+{
+    fprintf(stderr, "raytrace: %s\nTry 'raytrace --help'.\n", msg);
+    return 2;
+}
+
+/* Says whether paths a and b name the same existing file. */
+static int main_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+static double main_now(void)
+{
+    struct timespec ts;
+
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* The progress bar's state: drawn on standard error, a few times a second. */
+typedef struct {
+    double start;     /* when rendering began */
+    double last_draw; /* when the bar was last drawn */
+    int drawn;        /* the bar is on screen */
+} MainProgress;
+
+/* Draws "  42% [#########...........] 1.2 s, 1.6 s left" at most 5 times a
+ * second (RenderProgress). */
+static void main_progress(void *ctx, int done, int total)
+{
+    MainProgress *p = ctx;
+    double now = main_now(), elapsed = now - p->start, frac = (double)done / total;
+    char bar[31];
+    int filled = (int)(frac * 30);
+
+    if (now - p->last_draw < 0.2 || done == total)
+        return;
+    p->last_draw = now;
+    p->drawn = 1;
+    main_bar_shown = 1;
+    for (int i = 0; i < 30; i++)
+        bar[i] = i < filled ? '#' : '.';
+    bar[30] = '\0';
+    fprintf(stderr, "\r%4.0f%% [%s] %.1f s, %.1f s left ", 100 * frac, bar, elapsed,
+            frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
+}
+
+/* Returns the process's peak resident memory in bytes (0 if unknown). */
+static double main_peak_memory(void)
+{
+    struct rusage ru;
+
+    /* Linux reports ru_maxrss in kilobytes. */
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
+}
+
+/* Prints the -v summary: size, threads, rays by kind, time, speed, peak
+ * memory. */
+static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
+                            const RayCounts *c, double seconds)
+{
+    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction;
+
+    fprintf(stderr, "raytrace: %d x %d pixels, %d sample%s per pixel, %d thread%s\n",
+            img->width, img->height, ropts->samples, ropts->samples == 1 ? "" : "s", threads,
+            threads == 1 ? "" : "s");
+    fprintf(stderr,
+            "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
+            "%llu in all\n",
+            c->primary, c->shadow, c->reflection, c->refraction, all);
+    if (ropts->cutoff > 0)
+        fprintf(stderr,
+                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels refined\n",
+                ropts->cutoff, c->cut, c->refined);
+    fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
+            seconds > 0 ? all / seconds / 1e6 : 0.0);
+    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);
+}
+
+/* Reads opts' scene, reports it and renders nothing; returns the exit status. */
+static int main_check(const Options *opts)
+{
+    Scene scene;
+    Error err;
+
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (!opts->quiet)
+        printf("%s: OK: %d x %d pixels, %zu object%s, %zu light%s\n",
+               strcmp(opts->scene_path, "-") == 0 ? "<stdin>" : opts->scene_path,
+               scene.camera.width, scene.camera.height, scene_object_count(&scene),
+               scene_object_count(&scene) == 1 ? "" : "s", scene.light_count,
+               scene.light_count == 1 ? "" : "s");
+    scene_free(&scene);
+    return 0;
+}
+
+/* Reads opts' scene and writes it to opts' save path in the keyword format;
+ * returns the exit status. */
+static int main_save(const Options *opts)
+{
+    Scene scene;
+    OutFile out;
+    Error err;
+    int rc;
+
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (strcmp(opts->save_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
+        main_same_file(opts->scene_path, opts->save_path)) {
+        error_set(&err, opts->save_path, "the output is the scene file itself: refusing to "
+                                         "overwrite it");
+        goto fail;
+    }
+    if (main_open_output(&out, opts->save_path, &err) != 0)
+        goto fail;
+    rc = save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
+                      &err);
+    if (rc != 0)
+        outfile_abort(&out);
+    else
+        rc = outfile_commit(&out, &err);
+    main_temp_path = NULL;
+    if (rc != 0)
+        goto fail;
+    scene_free(&scene);
+    return 0;
+
+fail:
+    main_report(&err);
+    scene_free(&scene);
+    return 1;
+}
+
+/* Checks that the image and its writing fit in what the memory limit
+ * leaves after the scene, and sets that much aside from the limit for the
+ * hierarchy still to come; returns 0, or -1 with *err set. */
+static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Options *opts,
+                              Error *err)
+{
+    size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
+    size_t left = scene_memory_left(scene);
+    char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
+
+    if (scene->memory_limit == 0)
+        return 0;
+    if (need > left) {
+        error_set(err, opts->scene_path,
+                  "a %d x %d image needs %s to render and write: with the scene's %s, "
+                  "more than the memory limit of %s (raise it with --memory-limit)",
+                  scene->camera.width, scene->camera.height, number_bytes(a, need),
+                  number_bytes(b, scene_memory(scene)), number_bytes(c, scene->memory_limit));
+        return -1;
+    }
+    scene->memory_limit -= need;
+    return 0;
+}
+
+/* Renders opts' scene to opts' output; returns the exit status. */
+static int main_render(const Options *opts)
+{
+    RenderOptions ropts = {opts->max_depth, 1, opts->cutoff, opts->threads, NULL, NULL};
+    WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
+                           opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
+    MainProgress progress = {0, 0, 0};
+    RayCounts counts = {0, 0, 0, 0, 0, 0};
+    double start = main_now(), render_start, render_time, accel_start, accel_time;
+    Scene scene;
+    Image img;
+    OutFile out;
+    Error err;
+    int threads, rc, tty = isatty(STDERR_FILENO);
+
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        &scene, &err) != 0) {
+        main_report(&err);
+        return 1;
+    }
+    if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
+        error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
+        goto fail_scene;
+    }
+    if (strcmp(opts->output_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
+        main_same_file(opts->scene_path, opts->output_path)) {
+        error_set(&err, opts->output_path, "the output is the scene file itself: refusing to "
+                                           "overwrite it");
+        goto fail_scene;
+    }
+    ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
+    if (main_reserve_image(&scene, &wopts, opts, &err) != 0)
+        goto fail_scene;
+    accel_start = main_now();
+    rc = opts->no_accel ? 0 : scene_build_accel(&scene, opts->threads);
+    if (rc == SCENE_OVER_LIMIT) {
+        char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX];
+        error_set(&err, opts->scene_path,
+                  "the bounding volume hierarchy of %zu objects needs up to %s, more than "
+                  "the %s the memory limit leaves (--memory-limit; --no-accel renders "
+                  "without it, slowly)",
+                  scene.sphere_count + scene.triangle_count,
+                  number_bytes(a, bvh_build_memory(scene.sphere_count + scene.triangle_count)),
+                  number_bytes(b, scene_memory_left(&scene)));
+        goto fail_scene;
+    }
+    if (rc != 0)
+        fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
+                        "hierarchy: every ray will test every object\n");
+    accel_time = main_now() - accel_start;
+    if (image_init(&img, scene.camera.width, scene.camera.height) != 0 ||
+        (wopts.format == FORMAT_PFM && image_keep_linear(&img) != 0)) {
+        error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s",
+                  scene.camera.width, scene.camera.height,
+                  image_size(scene.camera.width, scene.camera.height),
+                  wopts.format == FORMAT_PFM ? ", and 4 times that for PFM" : "");
+        image_free(&img);
+        goto fail_scene;
+    }
+    if (main_open_output(&out, opts->output_path, &err) != 0)
+        goto fail_image;
+    if (tty && !opts->quiet) {
+        ropts.progress = main_progress;
+        ropts.progress_ctx = &progress;
+    }
+    render_start = progress.start = progress.last_draw = main_now();
+    threads = render(&scene, &ropts, &img, &counts);
+    render_time = main_now() - render_start;
+    if (progress.drawn) {
+        fputs("\r\033[K", stderr); /* erase the bar */
+        main_bar_shown = 0;
+    }
+    /* An interrupt from here on still finds main_temp_path: before the rename
+     * it removes the unfinished file, after it the unlink finds nothing. */
+    if (writer_write(out.fp, &img, &wopts) != 0) {
+        error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
+        outfile_abort(&out);
+        goto fail_image;
+    }
+    if (outfile_commit(&out, &err) != 0)
+        goto fail_image;
+    main_temp_path = NULL;
+    if (opts->verbose) {
+        fprintf(stderr, "raytrace: read the scene in %.3f s\n", accel_start - start);
+        if (scene.accel)
+            fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
+                            "%.3f s%s\n",
+                    scene.accel->node_count, scene.accel->depth, accel_time,
+                    scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
+        main_statistics(&img, &ropts, threads, &counts, render_time);
+    }
+    else if (!opts->quiet && tty)
+        fprintf(stderr,
+                "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "
+                "%.2f s, %d thread%s\n",
+                strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
+                img.width, img.height, scene_object_count(&scene),
+                scene_object_count(&scene) == 1 ? "" : "s", ropts.samples,
+                ropts.samples == 1 ? "" : "s", main_now() - start, threads,
+                threads == 1 ? "" : "s");
+    image_free(&img);
+    scene_free(&scene);
+    return 0;
+
+fail_image:
+    main_temp_path = NULL;
+    image_free(&img);
+fail_scene:
+    main_report(&err);
+    scene_free(&scene);
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    Options opts;
+    char msg[256];
+
+    OptionsAction action = options_parse(&opts, argc, argv, threads_processors(), msg,
+                                         sizeof msg);
+
+    if (action != OPTIONS_USAGE)
+        threads_use(opts.threads); /* -j: reading, building and rendering */
+    switch (action) {
+    case OPTIONS_HELP:
+        fputs(options_help(), stdout);
+        return 0;
+    case OPTIONS_VERSION:
+#ifdef RAYTRACE_REAL_FLOAT
+        puts("raytrace " RAYTRACE_VERSION " (geometry in single precision: make REAL=float)");
+#else
+        puts("raytrace " RAYTRACE_VERSION);
+#endif
+        return 0;
+    case OPTIONS_USAGE:
+        return main_usage(msg);
+    case OPTIONS_CHECK:
+        return main_check(&opts);
+    case OPTIONS_SAVE:
+        return main_save(&opts);
+    case OPTIONS_RENDER:
+        break;
+    }
+    return main_render(&opts);
+}

@@ -1,0 +1,70 @@
+/* plane.c: ray/plane intersection and surface geometry (see plane.h). */
+#include "geometry/plane.h"
+
+#include <float.h>
+#include <math.h>
+
+/*
+ * Error bound of plane_surface_at()'s point, as a multiple of u = REAL_EPSILON
+ * / 2 of |point| + |plane point| per component. The re-projection
+ * p - ((p - q) . n) n rounds a few times (about 8u of those magnitudes); 16
+ * leaves the margin that the next intersection test needs to see the offset
+ * origin on the right side (tests/test_shapes.c checks it at scales 1e-6 to
+ * 1e8, as for spheres).
+ */
+#define PLANE_ERROR_ULPS 16.0
+
+int plane_make(Plane *pl, Vec3 point, Vec3 n, double tile, Material m)
+{
+    /* The world axis least aligned with n seeds a tangent frame. */
+    Vec3 a = fabs(n.x) <= fabs(n.y) && fabs(n.x) <= fabs(n.z) ? vec3(1, 0, 0)
+             : fabs(n.y) <= fabs(n.z)                         ? vec3(0, 1, 0)
+                                                              : vec3(0, 0, 1);
+
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        return -1;
+    pl->point = point;
+    pl->given = n;
+    pl->normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
+    pl->axis_u = vec3_normalize(vec3_cross(a, pl->normal));
+    pl->axis_v = vec3_cross(pl->normal, pl->axis_u);
+    pl->tile = tile;
+    pl->material = m;
+    pl->order = 0;
+    return 0;
+}
+
+int plane_intersect(const Plane *pl, const Ray *ray, real tmin, real tmax, real *t)
+{
+    real den = vec3_dot(pl->normal, ray->dir);
+    real tt;
+
+    if (den == 0)
+        return 0;
+    tt = vec3_dot(pl->normal, vec3_sub(pl->point, ray->origin)) / den;
+    if (!(tt > tmin && tt < tmax))
+        return 0;
+    *t = tt;
+    return 1;
+}
+
+SurfacePoint plane_surface_at(const Plane *pl, Vec3 p)
+{
+    SurfacePoint sp;
+    real u = REAL_EPSILON / 2, g = PLANE_ERROR_ULPS * u / (1 - PLANE_ERROR_ULPS * u);
+    real dist = vec3_dot(vec3_sub(p, pl->point), pl->normal);
+
+    sp.point = vec3_sub(p, vec3_scale(pl->normal, dist));
+    sp.normal = pl->normal;
+    sp.shading = pl->normal;
+    sp.error = vec3_scale(vec3_add(vec3_abs(sp.point), vec3_abs(pl->point)), g);
+    return sp;
+}
+
+void plane_uv(const Plane *pl, Vec3 p, double uv[2])
+{
+    Vec3 r = vec3_sub(p, pl->point);
+
+    uv[0] = vec3_dot(r, pl->axis_u) / pl->tile;
+    uv[1] = vec3_dot(r, pl->axis_v) / pl->tile;
+}

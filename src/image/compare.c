@@ -1,0 +1,155 @@
+/* compare.c: loading and comparing renders (see compare.h). */
+#include "image/compare.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/file.h"
+#include "image/pfm.h"
+#include "image/png.h"
+#include "image/ppm.h"
+
+void picture_free(Picture *pic)
+{
+    free(pic->rgb);
+    memset(pic, 0, sizeof *pic);
+}
+
+/* Allocates pic's pixels for a width x height image; returns 0 or -1. */
+static int picture_alloc(Picture *pic, int width, int height, const char *name, Error *err)
+{
+    pic->width = width;
+    pic->height = height;
+    pic->rgb = malloc(3 * (size_t)width * (size_t)height * sizeof *pic->rgb);
+    if (!pic->rgb) {
+        error_set(err, name, "out of memory for a %d x %d image", width, height);
+        return -1;
+    }
+    return 0;
+}
+
+int picture_load(const char *path, Picture *pic, Error *err)
+{
+    char *data;
+    size_t len;
+    int rc;
+
+    memset(pic, 0, sizeof *pic);
+    if (strcmp(path, "-") == 0) {
+        error_set(err, "<stdin>", "images are compared from files, not standard input");
+        return -1;
+    }
+    if (file_read_all(path, &data, &len, err) != 0)
+        return -1;
+    rc = picture_parse(path, data, len, pic, err);
+    free(data);
+    return rc;
+}
+
+int picture_parse(const char *name, const char *data, size_t len, Picture *pic, Error *err)
+{
+    const unsigned char *head = (const unsigned char *)data;
+
+    memset(pic, 0, sizeof *pic);
+    if (len >= 2 && head[0] == 'P' && (head[1] == '3' || head[1] == '6')) {
+        PpmImage ppm;
+        if (ppm_parse(name, data, len, &ppm, err) != 0)
+            return -1;
+        if (picture_alloc(pic, ppm.width, ppm.height, name, err) == 0) {
+            size_t count = 3 * (size_t)ppm.width * (size_t)ppm.height;
+            for (size_t k = 0; k < count; k++)
+                pic->rgb[k] = ppm.samples[k] * 255.0 / ppm.maxval;
+            snprintf(pic->format, sizeof pic->format, "PPM P%c, maxval %d", head[1],
+                     ppm.maxval);
+        }
+        ppm_free(&ppm);
+    } else if (len >= 2 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f')) {
+        PfmImage pfm;
+        if (pfm_parse(name, data, len, &pfm, err) != 0)
+            return -1;
+        if (picture_alloc(pic, pfm.width, pfm.height, name, err) == 0) {
+            size_t count = 3 * (size_t)pfm.width * (size_t)pfm.height;
+            for (size_t k = 0; k < count; k++)
+                pic->rgb[k] = pfm.rgb[k] * 255.0;
+            snprintf(pic->format, sizeof pic->format, "PFM, %d channel%s", pfm.channels,
+                     pfm.channels == 1 ? "" : "s");
+        }
+        pfm_free(&pfm);
+    } else if (len >= 8 && head[0] == 0x89 && memcmp(head + 1, "PNG", 3) == 0) {
+        PngImage png;
+        if (png_parse(name, head, len, &png, err) != 0)
+            return -1;
+        if (picture_alloc(pic, png.width, png.height, name, err) == 0) {
+            size_t count = 3 * (size_t)png.width * (size_t)png.height;
+            for (size_t k = 0; k < count; k++)
+                pic->rgb[k] = png.rgb[k];
+            snprintf(pic->format, sizeof pic->format, "PNG, %d channel%s", png.channels,
+                     png.channels == 1 ? "" : "s");
+        }
+        png_free(&png);
+    } else {
+        error_set(err, name, "not an image raytrace reads: expected PPM (P3, P6), PFM or PNG");
+        return -1;
+    }
+    return pic->rgb ? 0 : -1;
+}
+
+Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance)
+{
+    Comparison c;
+    size_t n = (size_t)a->width * (size_t)a->height;
+    double sum = 0, sum2 = 0;
+
+    memset(&c, 0, sizeof c);
+    c.pixels = n;
+    c.max_error = -1;
+    for (size_t k = 0; k < n; k++) {
+        int over = 0;
+        for (int ch = 0; ch < 3; ch++) {
+            double d = fabs(a->rgb[3 * k + ch] - b->rgb[3 * k + ch]);
+            /* NaN in a PFM counts as the largest difference. */
+            if (isnan(d))
+                d = INFINITY;
+            sum += d;
+            sum2 += d * d;
+            if (d > c.max_error) {
+                c.max_error = d;
+                c.max_x = (int)(k % (size_t)a->width);
+                c.max_y = (int)(k / (size_t)a->width);
+                c.max_channel = ch;
+            }
+            over |= d > tolerance;
+            c.channels_over += d > tolerance;
+        }
+        c.over += over;
+    }
+    if (c.max_error < 0)
+        c.max_error = 0;
+    c.mean_error = n ? sum / (3.0 * n) : 0;
+    c.rms_error = n ? sqrt(sum2 / (3.0 * n)) : 0;
+    c.psnr = c.rms_error > 0 ? 20 * log10(255 / c.rms_error) : INFINITY;
+    return c;
+}
+
+void compare_diff_image(const Picture *a, const Picture *b, double tolerance, Image *img)
+{
+    size_t n = (size_t)a->width * (size_t)a->height;
+
+    for (size_t k = 0; k < n; k++) {
+        const double *p = a->rgb + 3 * k, *q = b->rgb + 3 * k;
+        int over = 0;
+        for (int ch = 0; ch < 3; ch++)
+            over |= !(fabs(p[ch] - q[ch]) <= tolerance);
+        if (over) {
+            image_set(img, (int)(k % (size_t)a->width), (int)(k / (size_t)a->width),
+                      colour(255, 0, 0));
+        } else {
+            /* About a third of the reference's luminance, in grey. */
+            double grey = 0.35 * (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]);
+            image_set(img, (int)(k % (size_t)a->width), (int)(k / (size_t)a->width),
+                      colour(grey, grey, grey));
+        }
+    }
+}

@@ -1,0 +1,228 @@
+/* render.c: the pixel loop (see render.h). */
+#include "render/render.h"
+
+#include <stdlib.h>
+
+#include "scene/camera.h"
+#include "render/sampler.h"
+#include "render/trace.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+/* The pixel's steps, folded into the tile loop: measured, 3% of the course
+ * scene's instructions were their calls (docs/design.md). */
+#if defined(__GNUC__)
+#define RENDER_INLINE static inline __attribute__((always_inline))
+#else
+#define RENDER_INLINE static inline
+#endif
+
+/* What a row's pixels share: camera_column() of every pixel's centre (NULL
+ * when not made: camera_ray() then) and camera_row() of the row's. */
+typedef struct {
+    const CameraStep *columns;
+    CameraStep row;
+} RenderRow;
+
+/* Returns the mean colour of the grid's samples of pixel (x, y) of row,
+ * leaving out what cut allows (cut NULL: nothing). One sample is the
+ * pixel's centre through the lens's centre. */
+RENDER_INLINE Colour render_samples(const Scene *scene, const RenderOptions *opts,
+                                    const SamplerGrid *g, const RenderRow *row, int x, int y,
+                                    TraceCut *cut, RayCounts *counts)
+{
+    const Camera *cam = &scene->camera;
+    Colour sum = colour(0, 0, 0);
+
+    counts->primary += g->n;
+    if (g->n == 1) {
+        Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
+                               : camera_ray(cam, x + 0.5, y + 0.5);
+        return cut ? trace_ray_cut(scene, &ray, opts->max_depth, cut, counts)
+                   : trace_ray(scene, &ray, 0, opts->max_depth, counts);
+    }
+    for (unsigned k = 0; k < g->n; k++) {
+        double p[2], l[2], disk[2] = {0, 0};
+        Ray ray;
+
+        sampler_sample(g, x, y, k, SAMPLER_DIM_PIXEL, p);
+        if (cam->aperture > 0) {
+            sampler_sample(g, x, y, k, SAMPLER_DIM_LENS, l);
+            sampler_disk(l, disk);
+        }
+        ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
+        sum = colour_add(sum, cut ? trace_ray_cut(scene, &ray, opts->max_depth, cut, counts)
+                                  : trace_ray(scene, &ray, 0, opts->max_depth, counts));
+    }
+    return colour(sum.r / g->n, sum.g / g->n, sum.b / g->n);
+}
+
+/* Says whether every value from x - eta to x + slack + eta quantises to the
+ * byte x does. */
+static int render_same_byte(double x, double slack, double eta)
+{
+    return colour_quantise(x - eta) == colour_quantise(x + slack + eta);
+}
+
+/* A pass that cannot prove its pixel's bytes is followed by one that
+ * traces the rays it left out with a cut-off RENDER_REFINE times smaller;
+ * below RENDER_CUT_FLOOR levels, the pixel is traced anew with every ray. */
+enum { RENDER_REFINE = 16 };
+#define RENDER_CUT_FLOOR 1e-6
+
+/*
+ * Returns pixel (x, y), whose bytes are those of a render without the
+ * cut-off whatever opts->cutoff allows; cut is the thread's, set up by
+ * trace_cut_init() (NULL: no cut-off). The rays the cut-off leaves out
+ * could have added at most cut->skipped / n to each channel of the mean
+ * (each is weight x colour, the colour within the bound trace_cut_init()
+ * proves, or weight x E x lit for a shadow ray); leaving them out, or
+ * adding them in later, also changes the rounding of the sums that would
+ * have held them, by less than eta (a term k levels down carries some 2k
+ * ulps of rounding, and the weights at one level add up to at most 1: under
+ * 1.2 x 10^-10 of the bound after 1,000 levels, against eta = 10^-9 of it).
+ * So the uncut colour lies in [x - eta, x + skipped / n + eta]; when that
+ * whole interval quantises to one byte, that byte is the uncut render's.
+ * Otherwise the rays left out are traced, with a smaller cut-off whose own
+ * left-out rays hold the same argument, and in the end the pixel is traced
+ * with every ray, which is the uncut render itself.
+ */
+RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
+                                  const SamplerGrid *g, const RenderRow *row, int x, int y,
+                                  TraceCut *cut, RayCounts *counts)
+{
+    Colour c;
+    double level = opts->cutoff, eta; /* this pass's cut-off */
+    size_t done = 0;                  /* deferred rays traced so far */
+
+    if (!cut)
+        return render_samples(scene, opts, g, row, x, y, NULL, counts);
+    cut->cutoff = level;
+    cut->skipped = 0;
+    cut->deferred_count = 0;
+    c = render_samples(scene, opts, g, row, x, y, cut, counts);
+    if (cut->deferred_count == 0) /* nothing left out */
+        return c;
+    eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
+    for (;;) {
+        double slack = cut->skipped / g->n;
+        size_t end = cut->deferred_count;
+
+        if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
+            render_same_byte(c.b, slack, eta)) {
+            counts->cut += end - done; /* left out for good */
+            return c;
+        }
+        if (done == 0) /* the first pass */
+            counts->refined++;
+        level /= RENDER_REFINE;
+        if (level < RENDER_CUT_FLOOR)
+            return render_samples(scene, opts, g, row, x, y, NULL, counts);
+        /* What this pass left out, traced; what that leaves out is the
+         * next pass's. */
+        cut->cutoff = level;
+        cut->skipped = 0;
+        for (; done < end; done++)
+            c = colour_add(c, colour_scale(trace_deferred(scene, cut->deferred[done],
+                                                          opts->max_depth, cut, counts),
+                                           1.0 / g->n));
+    }
+}
+
+/* The image is cut into square tiles of RENDER_TILE pixels a side (those
+ * on the right and bottom edges smaller), handed to threads one at a time:
+ * a tile's neighbouring rays visit the same tree nodes and shapes, which a
+ * row's far ends do not (32: the 100,000-sphere field's cache misses fell
+ * by half, docs/design.md). */
+enum { RENDER_TILE = 32 };
+
+/* Returns the number of tiles that cover n pixels in a line. */
+static int render_tiles_over(int n)
+{
+    return (n + RENDER_TILE - 1) / RENDER_TILE;
+}
+
+/* Renders tile t of the image (numbered left to right, then top to
+ * bottom) with the pixels' sample grid g (columns and cut as in
+ * render_samples() and render_pixel()). */
+static void render_tile(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
+                        Image *img, int t, const CameraStep *columns, TraceCut *cut,
+                        RayCounts *counts)
+{
+    int across = render_tiles_over(img->width);
+    int x0 = t % across * RENDER_TILE, y0 = t / across * RENDER_TILE;
+    int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
+    int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
+
+    for (int y = y0; y < y1; y++) {
+        RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
+
+        for (int x = x0; x < x1; x++)
+            image_set(img, x, y, render_pixel(scene, opts, g, &row, x, y, cut, counts));
+    }
+}
+
+/* Adds the counts of b to a. */
+static void render_add_counts(RayCounts *a, const RayCounts *b)
+{
+    a->primary += b->primary;
+    a->shadow += b->shadow;
+    a->reflection += b->reflection;
+    a->refraction += b->refraction;
+    a->cut += b->cut;
+    a->refined += b->refined;
+}
+
+int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
+{
+    int done = 0, used = 1;
+    int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
+    TraceCut proto = {0};
+    /* The linear floats of PFM would show what the cut-off leaves out. */
+    int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
+    SamplerGrid g = sampler_grid((unsigned)opts->samples);
+    /* One sample a pixel: the columns' part of the primary rays, made once
+     * (without the room, each pixel makes its own). */
+    CameraStep *columns = g.n == 1 ? malloc((size_t)img->width * sizeof *columns) : NULL;
+
+    if (cutting)
+        trace_cut_init(&proto, scene, opts->cutoff);
+    for (int x = 0; columns && x < img->width; x++)
+        columns[x] = camera_column(&scene->camera, x + 0.5);
+
+#ifdef _OPENMP
+#pragma omp parallel num_threads(opts->threads)
+#endif
+    {
+        RayCounts mine = {0, 0, 0, 0, 0, 0};
+        TraceCut cut = proto; /* the thread's own: it keeps the rays left out */
+
+#ifdef _OPENMP
+#pragma omp single
+        used = omp_get_num_threads();
+        /* Tiles are handed out one at a time: their costs differ widely. */
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (int t = 0; t < tiles; t++) {
+            render_tile(scene, opts, &g, img, t, columns, cutting ? &cut : NULL, &mine);
+            if (opts->progress) {
+#ifdef _OPENMP
+#pragma omp critical(render_progress)
+#endif
+                opts->progress(opts->progress_ctx, ++done, tiles);
+            }
+        }
+        if (counts) {
+#ifdef _OPENMP
+#pragma omp critical(render_counts)
+#endif
+            render_add_counts(counts, &mine);
+        }
+        if (cutting)
+            trace_cut_free(&cut);
+    }
+    free(columns);
+    return used;
+}

@@ -1,0 +1,118 @@
+/* sampler.c: multi-jittered pixel and lens samples (see sampler.h). */
+#include "render/sampler.h"
+
+#include <stdint.h>
+
+#include "math/angle.h"
+
+/* Returns a well-mixed 64-bit hash of x: a xor-shift-multiply finaliser,
+ * each step a bijection, so distinct inputs give distinct outputs. */
+static uint64_t sampler_mix(uint64_t x)
+{
+    x ^= x >> 31;
+    x *= 0xbf58476d1ce4e5b9u;
+    x ^= x >> 29;
+    x *= 0x94d049bb133111ebu;
+    x ^= x >> 32;
+    return x;
+}
+
+/* Returns a number in [0, 1) from the top 53 bits of hash h. */
+static double sampler_unit(uint64_t h)
+{
+    return (double)(h >> 11) * 0x1p-53;
+}
+
+/*
+ * Returns the image of i under a permutation of 0..len-1 chosen by seed.
+ * Each round below is a bijection of the b-bit numbers (b the bits of len -
+ * 1): xor with a constant, multiplication by an odd number modulo 2^b, and
+ * x ^= x >> s. Their composition permutes 0..2^b-1; applying it until the
+ * value falls below len (cycle walking) permutes 0..len-1.
+ */
+static unsigned sampler_permute(unsigned i, unsigned len, uint64_t seed)
+{
+    uint32_t mask = len - 1, a = (uint32_t)seed, b = (uint32_t)(seed >> 32) | 1u;
+
+    mask |= mask >> 1;
+    mask |= mask >> 2;
+    mask |= mask >> 4;
+    mask |= mask >> 8;
+    mask |= mask >> 16;
+    do {
+        i = ((i ^ a) * 0x9e3779b1u) & mask;
+        i ^= i >> 3;
+        i = (i * b) & mask;
+        i ^= i >> 5;
+        i = ((i ^ (a >> 16)) * 0x85ebca6bu) & mask;
+        i ^= i >> 1;
+        i = (i * 0xc2b2ae35u) & mask;
+        i ^= i >> 7;
+    } while (i >= len);
+    return i;
+}
+
+SamplerGrid sampler_grid(unsigned n)
+{
+    SamplerGrid g;
+
+    g.n = n;
+    g.cols = 1;
+    for (unsigned d = 1; d * d <= n; d++)
+        if (n % d == 0)
+            g.cols = d;
+    g.rows = n / g.cols;
+    return g;
+}
+
+void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2])
+{
+    uint64_t seed, s;
+    unsigned i, j;
+
+    if (g->n == 1) {
+        xy[0] = xy[1] = 0.5;
+        return;
+    }
+    seed = sampler_mix(((uint64_t)(uint32_t)py << 32 | (uint32_t)px) ^ sampler_mix(dim + 1));
+    /* Dimensions other than the first visit the cells in their own order,
+     * so that a pixel sample and its lens sample are not correlated. */
+    if (dim != 0)
+        k = sampler_permute(k, g->n, sampler_mix(seed ^ 0x5bd1e995u));
+    i = k % g->cols;
+    j = k / g->cols;
+    s = sampler_mix(seed + 2 * (uint64_t)k + 1);
+    /* Cell (i, j); within it, the column's sub-strip sigma_i(j) across and
+     * the row's sub-strip tau_j(i) down, each a permutation. */
+    xy[0] = (i + (sampler_permute(j, g->rows, sampler_mix(seed ^ (0x10000u + i))) +
+                  sampler_unit(s)) /
+                     g->rows) /
+            g->cols;
+    xy[1] = (j + (sampler_permute(i, g->cols, sampler_mix(seed ^ (0x20000000u + j))) +
+                  sampler_unit(sampler_mix(s))) /
+                     g->cols) /
+            g->rows;
+}
+
+void sampler_disk(const double xy[2], double disk[2])
+{
+    double a = 2 * xy[0] - 1, b = 2 * xy[1] - 1, r, s, c;
+
+    if (a == 0 && b == 0) {
+        disk[0] = disk[1] = 0;
+        return;
+    }
+    /* Square rings map to circles; the angle along a ring's side, at most
+     * pi / 4 from the side's middle, is proportional to the offset. */
+    if (a * a > b * b) {
+        r = a;
+        angle_sincos(ANGLE_PI / 4 * (b / a), &s, &c);
+        disk[0] = r * c;
+        disk[1] = r * s;
+    } else {
+        r = b;
+        angle_sincos(ANGLE_PI / 4 * (a / b), &s, &c);
+        disk[0] = r * s;
+        disk[1] = r * c;
+    }
+}

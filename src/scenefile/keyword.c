@@ -1,0 +1,618 @@
+/*
+ * keyword.c: seed 002's keyword scene format (see keyword.h,
+ * docs/scene-format.md). Lines, comments and numbers follow lex.h.
+ *
+ *   scene      -> element*            (exactly one camera, anywhere)
+ *   camera     -> 'camera' x0 y0 z0 xA yA zA alpha width height
+ *   material   -> 'material' name r g b ka kd ks alpha [rho [eta [tau]]]
+ *   sphere     -> 'sphere' xC yC zC radius material
+ *   plane      -> 'plane' px py pz nx ny nz material
+ *   triangle   -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material
+ *   mesh       -> 'mesh' path material               (a Wavefront OBJ file)
+ *   light      -> 'light' x y z r g b i              (distant, any number)
+ *   ambient    -> 'ambient' r g b                    (at most once)
+ *   background -> 'background' r g b                 (at most once)
+ *
+ * A material is defined on a line before the objects that name it.
+ */
+#include "scenefile/keyword.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "math/angle.h"
+#include "scenefile/lex.h"
+#include "math/number.h"
+#include "scenefile/obj.h"
+
+/* The reader's state. */
+typedef struct {
+    Lexer lex;              /* the cursor over the input */
+    int camera_line;        /* line of the camera, 0 before it */
+    int ambient_line;       /* line of the ambient record, 0 before it */
+    int background_line;    /* line of the background record, 0 before it */
+    uint32_t *names;        /* hash table of material indices + 1, 0 = free */
+    size_t names_size;      /* slots, a power of two, or 0 */
+} Keyword;
+
+static const char *const keyword_camera_names[] = {
+    "x0", "y0", "z0", "xA", "yA", "zA", "field of view", "width", "height"};
+static const FieldKind keyword_camera_kinds[] = {
+    FIELD_COORD, FIELD_COORD, FIELD_COORD, FIELD_COORD,   FIELD_COORD,
+    FIELD_COORD, FIELD_POSITIVE, FIELD_POSITIVE, FIELD_POSITIVE};
+static const char *const keyword_material_names[] = {
+    "red", "green", "blue", "ka", "kd", "ks", "alpha", "rho_r", "eta_r", "tau"};
+static const FieldKind keyword_material_kinds[] = {
+    FIELD_COLOUR,      FIELD_COLOUR,      FIELD_COLOUR,   FIELD_NONNEGATIVE, FIELD_NONNEGATIVE,
+    FIELD_NONNEGATIVE, FIELD_NONNEGATIVE, FIELD_FRACTION, FIELD_POSITIVE,    FIELD_FRACTION};
+static const char *const keyword_sphere_names[] = {"xC", "yC", "zC", "radius"};
+static const FieldKind keyword_sphere_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                 FIELD_POSITIVE};
+static const char *const keyword_plane_names[] = {"px", "py", "pz", "nx", "ny", "nz"};
+static const char *const keyword_triangle_names[] = {"x0", "y0", "z0", "x1", "y1",
+                                                     "z1", "x2", "y2", "z2"};
+static const FieldKind keyword_coord_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                FIELD_COORD, FIELD_COORD, FIELD_COORD};
+static const char *const keyword_light_names[] = {"x", "y", "z", "red", "green", "blue",
+                                                  "intensity"};
+static const FieldKind keyword_light_kinds[] = {FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
+                                                FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR,
+                                                FIELD_NONNEGATIVE};
+static const char *const keyword_rgb_names[] = {"red", "green", "blue"};
+static const FieldKind keyword_rgb_kinds[] = {FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
+
+static const RecordSpec keyword_camera = {
+    "the camera", "x0 y0 z0 xA yA zA alpha width height", 9, 0, 0,
+    keyword_camera_names, keyword_camera_kinds};
+static const RecordSpec keyword_material = {
+    "the material", "name r g b ka kd ks alpha [rho_r [eta_r [tau]]]", 7, 3, 1,
+    keyword_material_names, keyword_material_kinds};
+static const RecordSpec keyword_sphere = {"the sphere", "xC yC zC radius material", 4, 0, 0,
+                                          keyword_sphere_names, keyword_sphere_kinds};
+static const RecordSpec keyword_plane = {"the plane", "px py pz nx ny nz material", 6, 0, 0,
+                                         keyword_plane_names, keyword_coord_kinds};
+static const RecordSpec keyword_triangle = {"the triangle",
+                                            "x0 y0 z0 x1 y1 z1 x2 y2 z2 material", 9, 0, 0,
+                                            keyword_triangle_names, keyword_coord_kinds};
+static const RecordSpec keyword_light = {"the light", "x y z r g b i", 7, 0, 0,
+                                         keyword_light_names, keyword_light_kinds};
+static const RecordSpec keyword_ambient = {"the ambient light", "r g b", 3, 0, 0,
+                                           keyword_rgb_names, keyword_rgb_kinds};
+static const RecordSpec keyword_background = {"the background", "r g b", 3, 0, 0,
+                                              keyword_rgb_names, keyword_rgb_kinds};
+
+/* Records a fault at column of line. */
+#define keyword_fail(K, line, column, ...) lex_fail(&(K)->lex, line, column, __VA_ARGS__)
+
+/* Records that memory ran out; returns -1. */
+static int keyword_fail_memory(Keyword *K)
+{
+    error_set(K->lex.err, K->lex.name, "out of memory");
+    return -1;
+}
+
+/* Says whether token t reads as a number (valid or not: "1e400", "nan"). */
+static int keyword_is_number(const Token *t)
+{
+    double ignored;
+
+    return number_parse(t->text, t->len, &ignored) != NUMBER_SYNTAX;
+}
+
+/* Returns the FNV-1a hash of token t. */
+static uint32_t keyword_hash(const Token *t)
+{
+    uint32_t h = 2166136261u;
+
+    for (size_t i = 0; i < t->len; i++)
+        h = (h ^ (unsigned char)t->text[i]) * 16777619u;
+    return h;
+}
+
+/* Returns the index of the material named by token t, or -1. */
+static int keyword_find(const Keyword *K, const Scene *scene, const Token *t)
+{
+    if (K->names_size == 0)
+        return -1;
+    for (size_t i = keyword_hash(t) & (K->names_size - 1);; i = (i + 1) & (K->names_size - 1)) {
+        uint32_t slot = K->names[i];
+        const char *name;
+        if (slot == 0)
+            return -1;
+        name = scene->phong[slot - 1].name;
+        if (strlen(name) == t->len && memcmp(name, t->text, t->len) == 0)
+            return (int)slot - 1;
+    }
+}
+
+/* Files material `index` of the scene under its name token t, growing the
+ * table to keep it at most half full; returns 0, or -1 out of memory. */
+static int keyword_file_name(Keyword *K, const Scene *scene, const Token *t, size_t index)
+{
+    if (2 * (index + 1) > K->names_size) {
+        size_t size = K->names_size ? 2 * K->names_size : 64;
+        uint32_t *table = calloc(size, sizeof *table);
+        if (!table)
+            return keyword_fail_memory(K);
+        for (size_t k = 0; k < index; k++) {
+            Token name = {scene->phong[k].name, strlen(scene->phong[k].name), 0};
+            size_t i = keyword_hash(&name) & (size - 1);
+            while (table[i])
+                i = (i + 1) & (size - 1);
+            table[i] = (uint32_t)k + 1;
+        }
+        free(K->names);
+        K->names = table;
+        K->names_size = size;
+    }
+    {
+        size_t i = keyword_hash(t) & (K->names_size - 1);
+        while (K->names[i])
+            i = (i + 1) & (K->names_size - 1);
+        K->names[i] = (uint32_t)index + 1;
+    }
+    return 0;
+}
+
+/* Checks that rec's keyword, which may appear once, has not appeared before
+ * (on line *seen, 0 if not); then notes its line. */
+static int keyword_once(Keyword *K, const Record *rec, int *seen, const char *what)
+{
+    if (*seen) {
+        keyword_fail(K, &rec->line, rec->tok[0].column, "%s is already set, on line %d", what,
+                     *seen);
+        return -1;
+    }
+    *seen = rec->line.number;
+    return 0;
+}
+
+/* Reads the numbers of spec from rec's token `first` on, then the name of
+ * a material as the last field, into values and *m (a copy of the named
+ * material); returns 0, or -1 with the fault at the field that is wrong. */
+static int keyword_numbers_and_material(Keyword *K, const Record *rec, int first,
+                                        const RecordSpec *spec, const Scene *scene,
+                                        double *values, Material *m)
+{
+    int fields = rec->count - first, n = spec->count, index;
+    const Token *name;
+    char q[64];
+
+    for (int i = 0; i < fields && i < n; i++) {
+        const Token *t = &rec->tok[first + i];
+        if (i == fields - 1 && !keyword_is_number(t)) {
+            /* The name came early: numbers are missing. */
+            keyword_fail(K, &rec->line, t->column,
+                         "expected %d numbers before the material of %s (%s), found %d", n,
+                         spec->what, spec->syntax, i);
+            return -1;
+        }
+        if (lex_number(&K->lex, rec, first + i, spec, i, &values[i]) != 0)
+            return -1;
+    }
+    if (fields <= n) {
+        keyword_fail(K, &rec->line, rec->end_column,
+                     "expected the name of a material after the numbers of %s (%s), found the "
+                     "end of the line",
+                     spec->what, spec->syntax);
+        return -1;
+    }
+    name = &rec->tok[first + n];
+    if (keyword_is_number(name)) {
+        if (fields > n + 1) {
+            int numbers = n + 1;
+            while (numbers < fields && first + numbers < LEX_MAX_TOKENS &&
+                   keyword_is_number(&rec->tok[first + numbers]))
+                numbers++;
+            keyword_fail(K, &rec->line, name->column, "expected %d numbers for %s (%s), found %d%s",
+                         n, spec->what, spec->syntax, numbers,
+                         first + numbers < LEX_MAX_TOKENS ? "" : " or more");
+        } else {
+            keyword_fail(K, &rec->line, name->column,
+                         "expected the name of a material for %s (%s), found the number %s",
+                         spec->what, spec->syntax, lex_quote(q, sizeof q, name));
+        }
+        return -1;
+    }
+    if (fields > n + 1)
+        return lex_fail_extra(&K->lex, rec, first + n + 1, "the material's name");
+    index = keyword_find(K, scene, name);
+    if (index < 0) {
+        keyword_fail(K, &rec->line, name->column,
+                     "unknown material %s: a material line must define it before %s",
+                     lex_quote(q, sizeof q, name), spec->what);
+        return -1;
+    }
+    *m = scene->phong[index].base;
+    return 0;
+}
+
+/* Records that rec's element could not be stored, scene_add_*() having
+ * returned rc; returns -1. */
+static int keyword_fail_store(Keyword *K, const Record *rec, const Scene *scene, long rc)
+{
+    return lex_fail_memory(&K->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
+}
+
+/* camera -> 'camera' x0 y0 z0 xA yA zA alpha width height */
+static int keyword_camera_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[9];
+    int width, height;
+    char q[64];
+
+    if (keyword_once(K, rec, &K->camera_line, "the camera") != 0 ||
+        lex_numbers(&K->lex, rec, 1, &keyword_camera, v) < 0 ||
+        lex_whole_number(&K->lex, rec, 8, "the image width", "pixels", CAMERA_MAX_SIZE,
+                         &width) != 0 ||
+        lex_whole_number(&K->lex, rec, 9, "the image height", "pixels", CAMERA_MAX_SIZE,
+                         &height) != 0)
+        return -1;
+    if (!(v[6] < ANGLE_PI)) {
+        keyword_fail(K, &rec->line, rec->tok[7].column,
+                     "the camera's field of view must be less than pi radians, found %s "
+                     "(it is in radians: 120 degrees is 2.0943951)",
+                     lex_quote(q, sizeof q, &rec->tok[7]));
+        return -1;
+    }
+    scene->look_from = vec3(v[0], v[1], v[2]);
+    scene->look_at = vec3(v[3], v[4], v[5]);
+    scene->fov = v[6];
+    switch (camera_look_at(&scene->camera, scene->look_from, scene->look_at, v[6], width,
+                           height)) {
+    case CAMERA_VIEW_OK:
+        return 0;
+    case CAMERA_VIEW_NO_DIRECTION:
+        keyword_fail(K, &rec->line, rec->tok[4].column,
+                     "the camera looks at its own position: the point it looks at must be "
+                     "elsewhere");
+        return -1;
+    case CAMERA_VIEW_TOO_NARROW:
+        keyword_fail(K, &rec->line, rec->tok[7].column,
+                     "the camera's field of view %s is too narrow: the screen has no size in "
+                     "double precision",
+                     lex_quote(q, sizeof q, &rec->tok[7]));
+        return -1;
+    }
+    return -1;
+}
+
+/* material -> 'material' name r g b ka kd ks alpha [rho [eta [tau]]] */
+static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[10];
+    const Token *name = rec->count > 1 ? &rec->tok[1] : NULL;
+    PhongMaterial pm;
+    char q[64];
+    int n, index;
+
+    if (!name || keyword_is_number(name)) {
+        keyword_fail(K, &rec->line, name ? name->column : rec->end_column,
+                     "expected the material's name (%s), found %s%s", keyword_material.syntax,
+                     name ? "the number " : "the end of the line",
+                     name ? lex_quote(q, sizeof q, name) : "");
+        return -1;
+    }
+    index = keyword_find(K, scene, name);
+    if (index >= 0) {
+        keyword_fail(K, &rec->line, name->column, "the material %s is already defined, on line %d",
+                     lex_quote(q, sizeof q, name), scene->phong[index].line);
+        return -1;
+    }
+    n = lex_numbers(&K->lex, rec, 2, &keyword_material, v);
+    if (n < 0)
+        return -1;
+    memset(&pm, 0, sizeof pm);
+    pm.base = material_plain(colour(v[0], v[1], v[2]), n > 7 ? v[7] : 0);
+    pm.ka = v[3];
+    pm.kd = v[4];
+    pm.ks = v[5];
+    pm.shininess = v[6];
+    pm.line = rec->line.number;
+    if (n > 8) {
+        /* A refractive index makes the material transparent: tau is given,
+         * or all the light it does not mirror. */
+        double tau = n > 9 ? v[9] : 1 - v[7];
+        if (v[7] + tau > 1 + 1e-12) {
+            keyword_fail(K, &rec->line, rec->tok[11].column,
+                         "the material's rho_r plus tau must be at most 1, found %g + %g", v[7],
+                         tau);
+            return -1;
+        }
+        pm.base.transparency = tau;
+        pm.base.ior = v[8];
+    }
+    pm.name = malloc(name->len + 1);
+    if (!pm.name)
+        return keyword_fail_memory(K);
+    memcpy(pm.name, name->text, name->len);
+    pm.name[name->len] = '\0';
+    index = scene_add_phong(scene, &pm);
+    if (index < 0)
+        return keyword_fail_store(K, rec, scene, index);
+    scene->phong[index].base.phong = index;
+    return keyword_file_name(K, scene, name, (size_t)index);
+}
+
+/* sphere -> 'sphere' xC yC zC radius material */
+static int keyword_sphere_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[4];
+    Sphere s;
+
+    if (keyword_numbers_and_material(K, rec, 1, &keyword_sphere, scene, v, &s.material) != 0)
+        return -1;
+    s.centre = vec3(v[0], v[1], v[2]);
+    s.radius = v[3];
+    {
+        int rc = scene_add_sphere(scene, &s);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
+}
+
+/* plane -> 'plane' px py pz nx ny nz material */
+static int keyword_plane_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[6];
+    Material m;
+    Plane pl;
+
+    if (keyword_numbers_and_material(K, rec, 1, &keyword_plane, scene, v, &m) != 0)
+        return -1;
+    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
+        keyword_fail(K, &rec->line, rec->tok[4].column,
+                     "the plane's normal is the zero vector: it must give a direction");
+        return -1;
+    }
+    {
+        int rc = scene_add_plane(scene, &pl);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
+}
+
+/* triangle -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material */
+static int keyword_triangle_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[9];
+    Material m;
+    Triangle tri;
+
+    if (keyword_numbers_and_material(K, rec, 1, &keyword_triangle, scene, v, &m) != 0)
+        return -1;
+    if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
+                      vec3(v[6], v[7], v[8])) != 0) {
+        keyword_fail(K, &rec->line, rec->tok[0].column,
+                     "the triangle's three vertices lie on one line: it has no area");
+        return -1;
+    }
+    {
+        int rc = scene_add_triangle(scene, &tri, &m);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
+}
+
+/* Returns a new string holding token t; NULL out of memory. */
+static char *keyword_strdup(const Token *t)
+{
+    char *s = malloc(t->len + 1);
+
+    if (s) {
+        memcpy(s, t->text, t->len);
+        s[t->len] = '\0';
+    }
+    return s;
+}
+
+/* mesh -> 'mesh' path material */
+static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    static const RecordSpec spec = {"the mesh", "path material", 0, 0, 0, NULL, NULL};
+    const Token *path_tok = &rec->tok[1];
+    SceneMesh sm;
+    ObjMesh mesh;
+    Material m;
+    Error inner;
+    char q[64];
+    long added;
+
+    if (rec->count < 3) {
+        keyword_fail(K, &rec->line, rec->end_column,
+                     "expected %s for the mesh (path material), found the end of the line",
+                     rec->count < 2 ? "the path of an OBJ file and a material"
+                                    : "a material name after the path");
+        return -1;
+    }
+    if (keyword_numbers_and_material(K, rec, 2, &spec, scene, NULL, &m) != 0)
+        return -1;
+    sm.opened = lex_path(&K->lex, path_tok);
+    if (!sm.opened)
+        return -1;
+    if (obj_load(sm.opened, scene_obj_budget(scene), &mesh, &inner) != 0) {
+        lex_fail_file(&K->lex, rec, path_tok, "mesh", &inner);
+        free(sm.opened);
+        return -1;
+    }
+    sm.first = scene->triangle_count;
+    added = scene_add_mesh(scene, &mesh, &m);
+    obj_free(&mesh);
+    if (added <= 0) {
+        free(sm.opened);
+        if (added < 0)
+            return keyword_fail_store(K, rec, scene, added);
+        keyword_fail(K, &rec->line, path_tok->column,
+                     "the mesh %s has no faces with an area: nothing to draw",
+                     lex_quote(q, sizeof q, path_tok));
+        return -1;
+    }
+    sm.count = (size_t)added;
+    sm.path = keyword_strdup(path_tok);
+    if (!sm.path) {
+        free(sm.opened);
+        return keyword_fail_memory(K);
+    }
+    {
+        int rc = scene_add_mesh_record(scene, &sm);
+        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+    }
+}
+
+/* light -> 'light' x y z r g b i */
+static int keyword_light_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[7];
+    Light light;
+
+    if (lex_numbers(&K->lex, rec, 1, &keyword_light, v) < 0)
+        return -1;
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) {
+        keyword_fail(K, &rec->line, rec->tok[1].column,
+                     "the light's direction is the zero vector: a distant light needs the "
+                     "direction its light travels");
+        return -1;
+    }
+    light.position = vec3(v[0], v[1], v[2]);
+    light.colour = colour(v[3], v[4], v[5]);
+    light.distant = 1;
+    light.intensity = v[6];
+    light.to_light = vec3_neg(vec3_direction(light.position));
+    {
+        int rc = scene_add_light(scene, &light);
+        if (rc != 0)
+            return keyword_fail_store(K, rec, scene, rc);
+    }
+    return 0;
+}
+
+/* ambient -> 'ambient' r g b */
+static int keyword_ambient_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[3];
+
+    if (keyword_once(K, rec, &K->ambient_line, "the ambient light") != 0 ||
+        lex_numbers(&K->lex, rec, 1, &keyword_ambient, v) < 0)
+        return -1;
+    scene->ambient = colour(v[0], v[1], v[2]);
+    scene->has_ambient = 1;
+    return 0;
+}
+
+/* background -> 'background' r g b */
+static int keyword_background_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    double v[3];
+
+    if (keyword_once(K, rec, &K->background_line, "the background") != 0 ||
+        lex_numbers(&K->lex, rec, 1, &keyword_background, v) < 0)
+        return -1;
+    scene->background = colour(v[0], v[1], v[2]);
+    return 0;
+}
+
+/* An element and what reads it. */
+typedef struct {
+    const char *keyword;
+    int (*parse)(Keyword *K, const Record *rec, Scene *scene);
+} KeywordKind;
+
+static const KeywordKind keyword_kinds[] = {
+    {"camera", keyword_camera_record},   {"material", keyword_material_record},
+    {"sphere", keyword_sphere_record},   {"plane", keyword_plane_record},
+    {"triangle", keyword_triangle_record}, {"mesh", keyword_mesh_record},
+    {"light", keyword_light_record},     {"ambient", keyword_ambient_record},
+    {"background", keyword_background_record},
+};
+
+enum { KEYWORD_KINDS = sizeof keyword_kinds / sizeof keyword_kinds[0] };
+
+#define KEYWORD_LIST                                                                          \
+    "'camera', 'material', 'sphere', 'plane', 'triangle', 'mesh', 'light', 'ambient' or "     \
+    "'background'"
+
+/* Records why the first token of rec is not a known keyword. */
+static void keyword_fail_keyword(Keyword *K, const Record *rec)
+{
+    const Token *t = &rec->tok[0];
+    char q[64];
+
+    lex_quote(q, sizeof q, t);
+    for (int k = 0; k < KEYWORD_KINDS; k++) {
+        const char *kw = keyword_kinds[k].keyword;
+        size_t n = strlen(kw);
+        if (number_word_is(t->text, t->len, kw)) {
+            keyword_fail(K, &rec->line, t->column, "unknown element %s: keywords are lower case "
+                                                   "('%s')", q, kw);
+            return;
+        }
+        if (t->len == n + 1 && t->text[n] == ':' && number_word_is(t->text, n, kw)) {
+            keyword_fail(K, &rec->line, t->column,
+                         "unknown element %s: this is a keyword-format scene (its first "
+                         "element is a keyword), where keywords take no colon ('%s')",
+                         q, kw);
+            return;
+        }
+    }
+    if (keyword_is_number(t))
+        keyword_fail(K, &rec->line, t->column,
+                     "expected an element such as 'sphere', found the number %s: every line "
+                     "of a keyword-format scene starts with its keyword",
+                     q);
+    else
+        keyword_fail(K, &rec->line, t->column, "unknown element %s (expected " KEYWORD_LIST ")",
+                     q);
+}
+
+/* scene -> element* */
+static int keyword_elements(Keyword *K, Scene *scene)
+{
+    Record rec;
+    int rc;
+
+    while ((rc = lex_next_record(&K->lex, &rec)) == 1) {
+        int k = 0;
+        while (k < KEYWORD_KINDS && !lex_token_is(&rec.tok[0], keyword_kinds[k].keyword))
+            k++;
+        if (k == KEYWORD_KINDS) {
+            keyword_fail_keyword(K, &rec);
+            return -1;
+        }
+        if (keyword_kinds[k].parse(K, &rec, scene) != 0)
+            return -1;
+    }
+    if (rc == 0 && !K->camera_line) {
+        lex_fail_eof(&K->lex, "a camera line", "camera x0 y0 z0 xA yA zA alpha width height");
+        return -1;
+    }
+    return rc;
+}
+
+int keyword_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                       Scene *scene, Error *err)
+{
+    Keyword K;
+    int rc;
+
+    scene_init(scene);
+    scene->memory_limit = memory_limit;
+    scene->format = SCENE_KEYWORD;
+    lex_init(&K.lex, name, text, len, err);
+    K.camera_line = K.ambient_line = K.background_line = 0;
+    K.names = NULL;
+    K.names_size = 0;
+    rc = keyword_elements(&K, scene);
+    free(K.names);
+    if (rc != 0) {
+        scene_free(scene);
+        return -1;
+    }
+    if (!scene->has_ambient)
+        /* Without an ambient line, each light also lights the scene
+         * indirectly, with its colour times its intensity. */
+        for (size_t i = 0; i < scene->light_count; i++) {
+            const Light *l = &scene->lights[i];
+            scene->ambient = colour_add(scene->ambient, colour_scale(l->colour, l->intensity));
+        }
+    scene_fit_scale(scene);
+    return 0;
+}

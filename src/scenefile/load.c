@@ -1,0 +1,67 @@
+/* load.c: either scene format, by content or by name (see load.h). */
+#include "scenefile/load.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/file.h"
+#include "scenefile/keyword.h"
+#include "math/number.h"
+#include "scenefile/parse.h"
+
+SceneFormat load_detect(const char *text, size_t len)
+{
+    size_t i = 0;
+
+    if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+        i = 3;
+    while (i < len) {
+        size_t start;
+        double ignored;
+        char ch = text[i];
+
+        if (ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n') {
+            i++;
+            continue;
+        }
+        if (ch == '#') {
+            while (i < len && text[i] != '\n')
+                i++;
+            continue;
+        }
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z')))
+            return SCENE_COURSE;
+        start = i;
+        while (i < len && text[i] != ' ' && text[i] != '\t' && text[i] != '\r' &&
+               text[i] != '\n' && text[i] != '#')
+            i++;
+        return number_parse(text + start, i - start, &ignored) == NUMBER_SYNTAX ? SCENE_KEYWORD
+                                                                                : SCENE_COURSE;
+    }
+    return SCENE_COURSE;
+}
+
+int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
+                    size_t memory_limit, Scene *scene, Error *err)
+{
+    if (format == SCENE_AUTO)
+        format = load_detect(text, len);
+    if (format == SCENE_KEYWORD)
+        return keyword_parse_text(name, text, len, memory_limit, scene, err);
+    return parse_scene_text(name, text, len, memory_limit, scene, err);
+}
+
+int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,
+                    Error *err)
+{
+    char *text;
+    size_t len;
+    int rc;
+
+    scene_init(scene);
+    if (file_read_all(path, &text, &len, err) != 0)
+        return -1;
+    rc = load_scene_text(file_display_name(path), text, len, format, memory_limit, scene, err);
+    free(text);
+    return rc;
+}

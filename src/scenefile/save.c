@@ -1,0 +1,186 @@
+/* save.c: a scene in the keyword format (see save.h). */
+#define _XOPEN_SOURCE 700 /* realpath */
+
+#include "scenefile/save.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "math/number.h"
+
+/* Writes the numbers of v (n of them), each after a space. */
+static void save_numbers(FILE *fp, const double *v, int n)
+{
+    char buf[NUMBER_FORMAT_MAX];
+
+    for (int i = 0; i < n; i++)
+        fprintf(fp, " %s", number_format(buf, v[i]));
+}
+
+/* Writes the three coordinates of p, divided by 2^exponent (exact). */
+static void save_point(FILE *fp, Vec3 p, int exponent)
+{
+    double v[3] = {ldexp(p.x, -exponent), ldexp(p.y, -exponent), ldexp(p.z, -exponent)};
+
+    save_numbers(fp, v, 3);
+}
+
+/* Writes " r g b". */
+static void save_colour(FILE *fp, Colour c)
+{
+    double v[3] = {c.r, c.g, c.b};
+
+    save_numbers(fp, v, 3);
+}
+
+/* Returns the length of path's directory part, up to its last '/'. */
+static size_t save_dir_length(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+
+    return slash ? (size_t)(slash - path) + 1 : 0;
+}
+
+/* Writes the path of mesh m so that it resolves from out_name's directory:
+ * as written when the scene file is in that directory too or the path is
+ * absolute, else as an absolute path; returns 0, or -1 with *err filled. */
+static int save_mesh_path(FILE *fp, const SceneMesh *m, const char *scene_name,
+                          const char *out_name, Error *err)
+{
+    size_t sd = save_dir_length(scene_name), od = save_dir_length(out_name);
+    char *full;
+
+    if (m->path[0] == '/' || (sd == od && strncmp(scene_name, out_name, sd) == 0)) {
+        fputs(m->path, fp);
+        return 0;
+    }
+    full = realpath(m->opened, NULL);
+    if (!full) {
+        error_set(err, m->opened, "cannot find the mesh's absolute path: %s", strerror(errno));
+        return -1;
+    }
+    if (strpbrk(full, " \t#")) {
+        error_set(err, full, "the mesh's absolute path has a space or '#', which a scene "
+                             "line cannot hold; save next to the scene file instead");
+        free(full);
+        return -1;
+    }
+    fputs(full, fp);
+    free(full);
+    return 0;
+}
+
+/* Returns the name of material m's Blinn-Phong entry. */
+static const char *save_name(const Scene *scene, const Material *m)
+{
+    return scene->phong[m->phong].name;
+}
+
+/* Writes the materials, each with all the fields its values need. */
+static void save_materials(FILE *fp, const Scene *scene)
+{
+    for (size_t i = 0; i < scene->phong_count; i++) {
+        const PhongMaterial *pm = &scene->phong[i];
+        const Material *b = &pm->base;
+        double v[7] = {pm->ka, pm->kd, pm->ks, pm->shininess, b->reflection, b->ior,
+                       b->transparency};
+        int n = b->transparency > 0 || b->ior != 1 ? 7 : b->reflection > 0 ? 5 : 4;
+
+        fprintf(fp, "material %s", pm->name);
+        save_colour(fp, b->colour);
+        save_numbers(fp, v, n);
+        fputc('\n', fp);
+    }
+}
+
+/* Writes the objects in the scene's order: a 3-way merge of the shape
+ * arrays, each already in that order. */
+static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
+                        const char *out_name, Error *err)
+{
+    size_t s = 0, p = 0, t = 0, mesh = 0;
+    int k = scene->length_exponent;
+
+    while (s < scene->sphere_count || p < scene->plane_count || t < scene->triangle_count) {
+        unsigned so = s < scene->sphere_count ? scene->spheres[s].order : ~0u;
+        unsigned po = p < scene->plane_count ? scene->planes[p].order : ~0u;
+        unsigned to = t < scene->triangle_count ? scene->triangles[t].order : ~0u;
+
+        if (so < po && so < to) {
+            const Sphere *sp = &scene->spheres[s++];
+            double r = ldexp(sp->radius, -k);
+            fputs("sphere", fp);
+            save_point(fp, sp->centre, k);
+            save_numbers(fp, &r, 1);
+            fprintf(fp, " %s\n", save_name(scene, &sp->material));
+        } else if (po < to) {
+            const Plane *pl = &scene->planes[p++];
+            fputs("plane", fp);
+            save_point(fp, pl->point, k);
+            save_point(fp, pl->given, 0);
+            fprintf(fp, " %s\n", save_name(scene, &pl->material));
+        } else if (mesh < scene->mesh_count && scene->meshes[mesh].first == t) {
+            const SceneMesh *m = &scene->meshes[mesh++];
+            fputs("mesh ", fp);
+            if (save_mesh_path(fp, m, scene_name, out_name, err) != 0)
+                return -1;
+            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, &scene->triangles[t])));
+            t += m->count;
+        } else {
+            const Triangle *tri = &scene->triangles[t++];
+            fputs("triangle", fp);
+            for (int j = 0; j < 3; j++)
+                save_point(fp, tri->v[j], k);
+            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, tri)));
+        }
+    }
+    return 0;
+}
+
+int save_keyword(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
+                 Error *err)
+{
+    const Camera *cam = &scene->camera;
+    double camera[1] = {scene->fov};
+
+    if (scene->format != SCENE_KEYWORD) {
+        error_set(err, scene_name, "--save writes the keyword format, which cannot express a "
+                                   "course-format scene (its screen corners, point lights and "
+                                   "shading rule)");
+        return -1;
+    }
+    fputs("# A keyword-format scene, written by raytrace --save.\n", fp);
+    fputs("camera", fp);
+    save_point(fp, scene->look_from, 0);
+    save_point(fp, scene->look_at, 0);
+    save_numbers(fp, camera, 1);
+    fprintf(fp, " %d %d\n", cam->width, cam->height);
+    if (scene->background.r != 0 || scene->background.g != 0 || scene->background.b != 0) {
+        fputs("background", fp);
+        save_colour(fp, scene->background);
+        fputc('\n', fp);
+    }
+    if (scene->has_ambient) {
+        fputs("ambient", fp);
+        save_colour(fp, scene->ambient);
+        fputc('\n', fp);
+    }
+    save_materials(fp, scene);
+    for (size_t i = 0; i < scene->light_count; i++) {
+        const Light *l = &scene->lights[i];
+        fputs("light", fp);
+        save_point(fp, l->position, 0);
+        save_colour(fp, l->colour);
+        save_numbers(fp, &l->intensity, 1);
+        fputc('\n', fp);
+    }
+    if (save_objects(fp, scene, scene_name, out_name, err) != 0)
+        return -1;
+    if (ferror(fp)) {
+        error_set(err, out_name, "cannot write the scene: %s", strerror(errno));
+        return -1;
+    }
+    return 0;
+}
