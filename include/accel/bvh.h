@@ -1,5 +1,5 @@
 /*
- * bvh.h: a bounding volume hierarchy over a scene's spheres and triangles,
+ * bvh.h: a bounding volume hierarchy over arrays of spheres and triangles,
  * built with the surface area heuristic on binned centroids.
  *
  * Planes are unbounded and stay outside it. The binary tree the heuristic
@@ -18,8 +18,8 @@
 #include <stdint.h>
 
 #include "geometry/ray.h"
-
-struct Scene;
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
 
 enum {
     BVH_WIDTH = 8,           /* children of a node */
@@ -45,7 +45,18 @@ typedef struct {
                                     unused child) */
 } BvhNode;
 
+/* The shapes a hierarchy is built over: arrays it reads but does not own,
+ * which must stay where they are, unchanged, while it is in use. Each
+ * shape's order (its position among all objects) settles exact ties. */
+typedef struct {
+    const Sphere *spheres;
+    size_t sphere_count;
+    const Triangle *triangles;
+    size_t triangle_count;
+} BvhShapes;
+
 typedef struct Bvh {
+    BvhShapes shapes;    /* what it was built over */
     BvhNode *nodes;      /* the root first */
     size_t node_count;
     uint32_t *prims;     /* primitive references, grouped by leaf */
@@ -62,12 +73,14 @@ typedef struct Bvh {
                             processor has them; 0 runs the other */
 } Bvh;
 
-/* Builds the hierarchy of scene's spheres and triangles into *bvh in
+/* Builds the hierarchy of shapes' spheres and triangles into *bvh in
  * O(n log n), with up to threads threads (in OpenMP builds; the hierarchy
- * is the same whatever their number); returns 0, or -1 (nothing allocated)
- * when memory runs out or the scene holds 2^31 objects of a kind or of
- * both. */
-int bvh_build(Bvh *bvh, const struct Scene *scene, int threads);
+ * is the same whatever their number). reach is the largest magnitude of
+ * any coordinate, other than the shapes' own, that rays start from or
+ * aim at (camera, screen, lights, unbounded shapes): the boxes' padding
+ * grows with it. Returns 0, or -1 (nothing allocated) when memory runs out
+ * or there are 2^31 shapes of a kind or of both. */
+int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
 
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);
@@ -87,24 +100,20 @@ typedef struct {
 
 /* Finds the sphere or triangle the ray crosses first at 0 < t < tmax (the
  * earliest-listed on an exact tie); returns 1 with *hit set, or 0. */
-int bvh_nearest(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                BvhHit *hit);
+int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
 
 /* Returns 1 when some sphere or triangle crosses the ray at 0 < t < tmax
  * (tmax = 1: the segment from ray->origin to ray->origin + ray->dir), else 0. */
-int bvh_occluded(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax);
+int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax);
 
-/* A surface crossed by a shadow ray, and how many times. */
-typedef struct {
-    uint32_t prim;  /* primitive reference */
-    int crossings;  /* 1 or 2 */
-} BvhCrossing;
+/* Told that the ray crosses the surface of primitive prim (a primitive
+ * reference) `crossings` times (1 or 2); returns 0 to go on, or a non-zero
+ * value that ends the walk. */
+typedef int (*BvhVisit)(void *ctx, uint32_t prim, int crossings);
 
-/* Lists in out (room for max) the spheres and triangles the ray crosses at
- * 0 < t < tmax, sorted spheres first, each kind by index; returns
- * how many, -1 when more than max, or -2 as soon as an opaque one (T = 0) is
- * crossed. */
-int bvh_crossings(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                  BvhCrossing *out, int max);
+/* Calls visit(ctx, ...) for each sphere and triangle the ray crosses at
+ * 0 < t < tmax, in no set order, until one call returns non-zero; returns
+ * that value, or 0 when every crossing was visited. */
+int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
 
 #endif

@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "bvh_query.h"
-#include "scene/scene.h"
 
 enum {
     BVH_BINS = 16,        /* centroid bins per split */
@@ -102,25 +101,21 @@ static inline real bvh_farther(real m, Vec3 p)
     return z > m ? z : m;
 }
 
-static real bvh_padding(const Scene *scene, int threads)
+/* Returns the padding of every box for shapes and the reach bvh_build()
+ * is given. */
+static real bvh_padding(const BvhShapes *shapes, real reach, int threads)
 {
-    real m = bvh_farther(bvh_farther(bvh_farther(0, scene->camera.eye), scene->camera.top_left),
-                         vec3_add(scene->camera.top_left,
-                                  vec3_add(scene->camera.u, scene->camera.v)));
-    size_t spheres = scene->sphere_count, triangles = scene->triangle_count;
+    real m = reach;
+    size_t spheres = shapes->sphere_count, triangles = shapes->triangle_count;
 
     (void)threads;
-    for (size_t i = 0; i < scene->light_count; i++)
-        m = bvh_farther(m, scene->lights[i].position);
-    for (size_t i = 0; i < scene->plane_count; i++)
-        m = bvh_farther(m, scene->planes[i].point);
     /* The largest of finite values, whatever the order: the same on any
      * number of threads. */
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) reduction(max : m) if (spheres >= BVH_TASK_MIN)
 #endif
     for (size_t i = 0; i < spheres; i++) {
-        const Sphere *sp = &scene->spheres[i];
+        const Sphere *sp = &shapes->spheres[i];
         real r = bvh_farther(0, sp->centre) + sp->radius;
         m = r > m ? r : m;
     }
@@ -129,15 +124,15 @@ static real bvh_padding(const Scene *scene, int threads)
 #endif
     for (size_t i = 0; i < triangles; i++)
         for (int k = 0; k < 3; k++)
-            m = bvh_farther(m, scene->triangles[i].v[k]);
+            m = bvh_farther(m, shapes->triangles[i].v[k]);
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
 }
 
-static void bvh_prim_box(const Scene *scene, uint32_t ref, real pad, BuildPrim *p)
+static void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p)
 {
     p->ref = ref;
     if (ref & BVH_TRIANGLE) {
-        const Triangle *t = &scene->triangles[ref & ~BVH_TRIANGLE];
+        const Triangle *t = &shapes->triangles[ref & ~BVH_TRIANGLE];
         box_empty(&p->box);
         for (int k = 0; k < 3; k++) {
             real v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
@@ -148,7 +143,7 @@ static void bvh_prim_box(const Scene *scene, uint32_t ref, real pad, BuildPrim *
             p->box.hi[a] += pad;
         }
     } else {
-        const Sphere *s = &scene->spheres[ref];
+        const Sphere *s = &shapes->spheres[ref];
         real c[3] = {s->centre.x, s->centre.y, s->centre.z};
         real r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
         for (int a = 0; a < 3; a++) {
@@ -450,7 +445,7 @@ static size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
  * parallel region, children of BVH_TASK_MIN primitives or more are made
  * by tasks, their places counted first: the nodes are the same. */
 static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
-                           const Scene *scene, real pad, Bvh *bvh, Box *bounds, int *deepest)
+                           real pad, Bvh *bvh, Box *bounds, int *deepest)
 {
     uint32_t members[BVH_WIDTH];
     int m = bvh_members(nodes, id, members), deep[BVH_WIDTH];
@@ -468,7 +463,7 @@ static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int
         if (c->count > 0) {
             for (uint32_t i = c->index; i < c->index + c->count; i++) {
                 BuildPrim p;
-                bvh_prim_box(scene, bvh->prims[i], pad, &p);
+                bvh_prim_box(&bvh->shapes, bvh->prims[i], pad, &p);
                 box_grow(&box[k], &p.box);
             }
             w->child[k] = c->index;
@@ -480,11 +475,10 @@ static size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int
 #ifdef _OPENMP
 #pragma omp task firstprivate(k, at) shared(box, deep)
 #endif
-            bvh_collapse(nodes, members[k], at, depth + 1, scene, pad, bvh, &box[k], &deep[k]);
+            bvh_collapse(nodes, members[k], at, depth + 1, pad, bvh, &box[k], &deep[k]);
         } else {
             w->child[k] = (uint32_t)next;
-            next += bvh_collapse(nodes, members[k], next, depth + 1, scene, pad, bvh, &box[k],
-                                 &deep[k]);
+            next += bvh_collapse(nodes, members[k], next, depth + 1, pad, bvh, &box[k], &deep[k]);
         }
     }
 #ifdef _OPENMP
@@ -549,17 +543,18 @@ static int bvh_has_avx2(void)
 #endif
 }
 
-int bvh_build(Bvh *bvh, const Scene *scene, int threads)
+int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 {
-    size_t n = scene->sphere_count + scene->triangle_count;
+    size_t n = shapes->sphere_count + shapes->triangle_count;
     BuildPrim *prims;
     BuildNode *nodes;
-    real pad = bvh_padding(scene, threads);
+    real pad = bvh_padding(shapes, reach, threads);
 
     memset(bvh, 0, sizeof *bvh);
+    bvh->shapes = *shapes;
     bvh->avx2 = bvh_has_avx2();
     /* Binary nodes are numbered below 2n in 32 bits. */
-    if (scene->sphere_count >= BVH_TRIANGLE || scene->triangle_count >= BVH_TRIANGLE || n == 0 ||
+    if (shapes->sphere_count >= BVH_TRIANGLE || shapes->triangle_count >= BVH_TRIANGLE || n == 0 ||
         n > UINT32_MAX / 2)
         return -1;
     prims = malloc(n * sizeof *prims);
@@ -575,10 +570,11 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
 #pragma omp parallel for num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #endif
     for (size_t i = 0; i < n; i++) {
-        if (i < scene->sphere_count)
-            bvh_prim_box(scene, (uint32_t)i, pad, &prims[i]);
+        if (i < shapes->sphere_count)
+            bvh_prim_box(shapes, (uint32_t)i, pad, &prims[i]);
         else
-            bvh_prim_box(scene, (uint32_t)(i - scene->sphere_count) | BVH_TRIANGLE, pad, &prims[i]);
+            bvh_prim_box(shapes, (uint32_t)(i - shapes->sphere_count) | BVH_TRIANGLE, pad,
+                         &prims[i]);
     }
     bvh_frame(bvh, prims, n);
 #ifdef _OPENMP
@@ -611,17 +607,17 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
 #endif
     {
         Box all;
-        bvh_collapse(nodes, 0, 0, 0, scene, pad, bvh, &all, &bvh->depth);
+        bvh_collapse(nodes, 0, 0, 0, pad, bvh, &all, &bvh->depth);
     }
     free(nodes);
     /* The spheres' copies come last, once the binary tree is gone. */
-    if (scene->sphere_count > 0 && !(bvh->balls = calloc(n, sizeof *bvh->balls))) {
+    if (shapes->sphere_count > 0 && !(bvh->balls = calloc(n, sizeof *bvh->balls))) {
         bvh_free(bvh);
         return -1;
     }
     for (size_t i = 0; i < n && bvh->balls; i++) {
         if (!(bvh->prims[i] & BVH_TRIANGLE)) {
-            const Sphere *s = &scene->spheres[bvh->prims[i]];
+            const Sphere *s = &shapes->spheres[bvh->prims[i]];
             bvh->balls[i][0] = s->centre.x;
             bvh->balls[i][1] = s->centre.y;
             bvh->balls[i][2] = s->centre.z;
@@ -678,21 +674,18 @@ void bvh_free(Bvh *bvh)
 #define bvh_crossings_avx2 bvh_crossings_base
 #endif
 
-int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
+int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
 {
-    return bvh->avx2 ? bvh_nearest_avx2(bvh, scene, ray, tmax, hit)
-                     : bvh_nearest_base(bvh, scene, ray, tmax, hit);
+    return bvh->avx2 ? bvh_nearest_avx2(bvh, ray, tmax, hit) : bvh_nearest_base(bvh, ray, tmax, hit);
 }
 
-int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
+int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
 {
-    return bvh->avx2 ? bvh_occluded_avx2(bvh, scene, ray, tmax)
-                     : bvh_occluded_base(bvh, scene, ray, tmax);
+    return bvh->avx2 ? bvh_occluded_avx2(bvh, ray, tmax) : bvh_occluded_base(bvh, ray, tmax);
 }
 
-int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
-                  BvhCrossing *out, int max)
+int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx)
 {
-    return bvh->avx2 ? bvh_crossings_avx2(bvh, scene, ray, tmax, out, max)
-                     : bvh_crossings_base(bvh, scene, ray, tmax, out, max);
+    return bvh->avx2 ? bvh_crossings_avx2(bvh, ray, tmax, visit, ctx)
+                     : bvh_crossings_base(bvh, ray, tmax, visit, ctx);
 }

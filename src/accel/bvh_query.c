@@ -7,8 +7,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "scene/scene.h"
-
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -318,22 +316,22 @@ static float bvh_cull(const BvhRay *r, float limit)
 
 /* Tests the primitive bvh->prims[k] for a crossing at tmin < t < tmax;
  * returns 1 with *t. */
-static inline int bvh_prim_hit(const Bvh *bvh, const Scene *scene, uint32_t k, const Ray *ray,
+static inline int bvh_prim_hit(const Bvh *bvh, uint32_t k, const Ray *ray,
                                real tmin, real tmax, real *t)
 {
     uint32_t ref = bvh->prims[k];
     const real *b;
 
     if (ref & BVH_TRIANGLE)
-        return triangle_intersect(&scene->triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
+        return triangle_intersect(&bvh->shapes.triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
     b = bvh->balls[k]; /* there when there are spheres */
     return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
 }
 
-static unsigned bvh_prim_order(const Scene *scene, uint32_t ref)
+static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
 {
-    return ref & BVH_TRIANGLE ? scene->triangles[ref & ~BVH_TRIANGLE].order
-                              : scene->spheres[ref].order;
+    return ref & BVH_TRIANGLE ? bvh->shapes.triangles[ref & ~BVH_TRIANGLE].order
+                              : bvh->shapes.spheres[ref].order;
 }
 
 /* A child still to visit: a node (count 0) or a leaf. */
@@ -342,8 +340,7 @@ typedef struct {
     float enter;           /* where the ray enters its box (t') */
 } BvhEntry;
 
-int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
-                           BvhHit *hit)
+int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
 {
     BvhRay r = bvh_ray(bvh, ray);
     BvhEntry stack[BVH_STACK];
@@ -383,7 +380,7 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Scene *scene, const Ray *ray, r
             BvhEntry e;
             if (top == 0) {
                 if (found)
-                    hit->order = bvh_prim_order(scene, hit->prim);
+                    hit->order = bvh_prim_order(bvh, hit->prim);
                 return found;
             }
             e = stack[--top];
@@ -396,12 +393,12 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Scene *scene, const Ray *ray, r
             for (uint32_t k = e.child; k < e.child + e.count; k++) {
                 uint32_t ref = bvh->prims[k];
                 real t;
-                if (!bvh_prim_hit(bvh, scene, k, ray, 0, bound, &t))
+                if (!bvh_prim_hit(bvh, k, ray, 0, bound, &t))
                     continue;
                 /* t <= hit->t: on a tie the earlier-listed object wins
                  * (their positions are read only then). */
                 if (!found || t < hit->t ||
-                    bvh_prim_order(scene, ref) < bvh_prim_order(scene, hit->prim)) {
+                    bvh_prim_order(bvh, ref) < bvh_prim_order(bvh, hit->prim)) {
                     hit->t = t;
                     hit->prim = ref;
                     found = 1;
@@ -464,7 +461,7 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *
     return 0;
 }
 
-int BVH_QUERY(bvh_occluded)(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
+int BVH_QUERY(bvh_occluded)(const Bvh *bvh, const Ray *ray, real tmax)
 {
     BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
@@ -474,60 +471,32 @@ int BVH_QUERY(bvh_occluded)(const Bvh *bvh, const Scene *scene, const Ray *ray, 
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count))
         for (uint32_t k = first; k < first + count; k++)
-            if (bvh_prim_hit(bvh, scene, k, ray, 0, tmax, &t))
+            if (bvh_prim_hit(bvh, k, ray, 0, tmax, &t))
                 return 1;
     return 0;
 }
 
-/* Orders crossings: spheres before triangles, each kind by index. */
-static int bvh_crossing_before(const BvhCrossing *a, const BvhCrossing *b)
-{
-    return a->prim < b->prim; /* BVH_TRIANGLE is the top bit */
-}
-
-int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
-                             BvhCrossing *out, int max)
+int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit,
+                             void *ctx)
 {
     BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
     uint32_t first, count;
-    int n = 0;
     real t;
 
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count)) {
         for (uint32_t k = first; k < first + count; k++) {
             uint32_t ref = bvh->prims[k];
-            const Material *m;
-            int c;
-            if (ref & BVH_TRIANGLE) {
-                const Triangle *tri = &scene->triangles[ref & ~BVH_TRIANGLE];
-                c = triangle_intersect(tri, ray, 0, tmax, &t);
-                m = scene_material_of(scene, tri);
-            } else {
-                c = sphere_crossings(&scene->spheres[ref], ray, 0, tmax);
-                m = &scene->spheres[ref].material;
-            }
-            if (c == 0)
-                continue;
-            if (!(m->transparency > 0))
-                return -2;
-            if (n == max)
-                return -1;
-            out[n].prim = ref;
-            out[n].crossings = c;
-            n++;
+            int c, rc;
+            if (ref & BVH_TRIANGLE)
+                c = triangle_intersect(&bvh->shapes.triangles[ref & ~BVH_TRIANGLE], ray, 0, tmax,
+                                       &t);
+            else
+                c = sphere_crossings(&bvh->shapes.spheres[ref], ray, 0, tmax);
+            if (c != 0 && (rc = visit(ctx, ref, c)) != 0)
+                return rc;
         }
     }
-    /* Insertion sort: the lists are short. */
-    for (int i = 1; i < n; i++) {
-        BvhCrossing c = out[i];
-        int j = i;
-        while (j > 0 && bvh_crossing_before(&c, &out[j - 1])) {
-            out[j] = out[j - 1];
-            j--;
-        }
-        out[j] = c;
-    }
-    return n;
+    return 0;
 }

@@ -48,15 +48,11 @@ static inline float bvh_float_above(double x)
 }
 
 /* bvh.h's queries, as each build of bvh_query.c answers them. */
-int bvh_nearest_base(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                     BvhHit *hit);
-int bvh_occluded_base(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax);
-int bvh_crossings_base(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                       BvhCrossing *out, int max);
-int bvh_nearest_avx2(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                     BvhHit *hit);
-int bvh_occluded_avx2(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax);
-int bvh_crossings_avx2(const Bvh *bvh, const struct Scene *scene, const Ray *ray, real tmax,
-                       BvhCrossing *out, int max);
+int bvh_nearest_base(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
+int bvh_occluded_base(const Bvh *bvh, const Ray *ray, real tmax);
+int bvh_crossings_base(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
+int bvh_nearest_avx2(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
+int bvh_occluded_avx2(const Bvh *bvh, const Ray *ray, real tmax);
+int bvh_crossings_avx2(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
 
 #endif

@@ -69,7 +69,7 @@ static int trace_nearest_triangles(const Scene *scene, const Ray *ray, real tmax
 static int trace_find_accel(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     BvhHit bh;
-    int found = bvh_nearest(scene->accel, scene, ray, tmax, &bh);
+    int found = bvh_nearest(scene->accel, ray, tmax, &bh);
 
     if (found)
         trace_set_hit(hit, bh.t, bh.prim & BVH_TRIANGLE ? SHAPE_TRIANGLE : SHAPE_SPHERE,
@@ -119,7 +119,7 @@ int trace_occluded(const Scene *scene, const Ray *ray, real tmax)
         if (plane_intersect(&scene->planes[k], ray, 0, tmax, &t))
             return 1;
     if (scene->accel)
-        return bvh_occluded(scene->accel, scene, ray, tmax);
+        return bvh_occluded(scene->accel, ray, tmax);
     for (size_t k = 0; k < scene->sphere_count; k++)
         if (sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, &t))
             return 1;
@@ -153,30 +153,79 @@ static int trace_attenuate_planes(const Scene *scene, const Ray *ray, real tmax,
     return 1;
 }
 
+enum { TRACE_CROSSINGS_MAX = 64 }; /* crossings listed before giving up */
+
+/* A surface a shadow ray crosses, and how many times. */
+typedef struct {
+    uint32_t prim; /* the hierarchy's primitive reference */
+    int crossings; /* 1 or 2 */
+} TraceCrossing;
+
+/* The crossings of a shadow ray the hierarchy lists. */
+typedef struct {
+    const Scene *scene;
+    TraceCrossing c[TRACE_CROSSINGS_MAX];
+    int n;
+} TraceCrossings;
+
+/* bvh_crossings()'s visit: keeps the crossing; returns -2 at an opaque
+ * surface (no light passes) and -1 when the list is full. */
+static int trace_keep_crossing(void *ctx, uint32_t prim, int crossings)
+{
+    TraceCrossings *tc = ctx;
+    const Scene *scene = tc->scene;
+    const Material *m = prim & BVH_TRIANGLE
+                            ? scene_material_of(scene, &scene->triangles[prim & ~BVH_TRIANGLE])
+                            : &scene->spheres[prim].material;
+
+    if (!(m->transparency > 0))
+        return -2;
+    if (tc->n == TRACE_CROSSINGS_MAX)
+        return -1;
+    tc->c[tc->n].prim = prim;
+    tc->c[tc->n].crossings = crossings;
+    tc->n++;
+    return 0;
+}
+
 /* trace_transmittance() through the hierarchy: the crossings it lists are
- * multiplied in the order of the loop below (spheres, planes, triangles,
- * each by index), so the product has the very same bits. Returns -1 when
- * there are too many crossings to list. */
+ * sorted and multiplied in the order of the loop below (spheres, planes,
+ * triangles, each by index), so the product has the very same bits.
+ * Returns -1 when there are too many crossings to list. */
 static double trace_transmittance_accel(const Scene *scene, const Ray *ray, real tmax)
 {
-    enum { MAX = 64 };
-    BvhCrossing c[MAX];
-    int n = bvh_crossings(scene->accel, scene, ray, tmax, c, MAX), i = 0;
+    TraceCrossings tc;
+    int rc, i = 0, n;
     double share = 1;
 
-    if (n == -2)
+    tc.scene = scene;
+    tc.n = 0;
+    rc = bvh_crossings(scene->accel, ray, tmax, trace_keep_crossing, &tc);
+    if (rc == -2)
         return 0;
-    if (n < 0)
+    if (rc < 0)
         return -1;
-    for (; i < n && !(c[i].prim & BVH_TRIANGLE); i++)
-        if (!trace_attenuate(&share, &scene->spheres[c[i].prim].material, c[i].crossings))
+    n = tc.n;
+    /* Insertion sort by reference (spheres first: BVH_TRIANGLE is the top
+     * bit): the lists are short. */
+    for (int j = 1; j < n; j++) {
+        TraceCrossing c = tc.c[j];
+        int k = j;
+        while (k > 0 && c.prim < tc.c[k - 1].prim) {
+            tc.c[k] = tc.c[k - 1];
+            k--;
+        }
+        tc.c[k] = c;
+    }
+    for (; i < n && !(tc.c[i].prim & BVH_TRIANGLE); i++)
+        if (!trace_attenuate(&share, &scene->spheres[tc.c[i].prim].material, tc.c[i].crossings))
             return 0;
     if (!trace_attenuate_planes(scene, ray, tmax, &share))
         return 0;
     for (; i < n; i++)
-        if (!trace_attenuate(&share,
-                             scene_material_of(scene, &scene->triangles[c[i].prim & ~BVH_TRIANGLE]),
-                             c[i].crossings))
+        if (!trace_attenuate(
+                &share, scene_material_of(scene, &scene->triangles[tc.c[i].prim & ~BVH_TRIANGLE]),
+                tc.c[i].crossings))
             return 0;
     return share;
 }

@@ -112,17 +112,44 @@ static int scene_reserve(const Scene *scene, void **items, size_t *capacity, siz
     return grow_reserve(items, capacity, count, size);
 }
 
+/* Returns the larger of m and the largest magnitude of p's coordinates. */
+static real scene_farther(real m, Vec3 p)
+{
+    real x = fabs(p.x), y = fabs(p.y), z = fabs(p.z);
+
+    m = x > m ? x : m;
+    m = y > m ? y : m;
+    return z > m ? z : m;
+}
+
+/* Returns the hierarchy's reach (bvh.h): the largest coordinate of the
+ * camera, its screen, the lights and the planes. */
+static real scene_reach(const Scene *scene)
+{
+    const Camera *cam = &scene->camera;
+    real m = scene_farther(scene_farther(scene_farther(0, cam->eye), cam->top_left),
+                           vec3_add(cam->top_left, vec3_add(cam->u, cam->v)));
+
+    for (size_t i = 0; i < scene->light_count; i++)
+        m = scene_farther(m, scene->lights[i].position);
+    for (size_t i = 0; i < scene->plane_count; i++)
+        m = scene_farther(m, scene->planes[i].point);
+    return m;
+}
+
 int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene->sphere_count + scene->triangle_count;
+    BvhShapes shapes = {scene->spheres, scene->sphere_count, scene->triangles,
+                        scene->triangle_count};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
     if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
         return SCENE_OVER_LIMIT;
     bvh = malloc(sizeof *bvh);
-    if (!bvh || bvh_build(bvh, scene, threads) != 0) {
+    if (!bvh || bvh_build(bvh, &shapes, scene_reach(scene), threads) != 0) {
         free(bvh);
         return -1;
     }

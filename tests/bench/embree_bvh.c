@@ -21,7 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/scene.h"
 #include "geometry/sphere.h"
 
 static RTCDevice eb_device;
@@ -30,7 +29,7 @@ static RTCScene eb_scene;
 /* A query: Embree's context first, then what the callbacks need. */
 typedef struct {
     struct RTCIntersectContext context;
-    const Scene *scene;
+    const Sphere *spheres;
     const Ray *ray;   /* the double-precision ray */
     real bound;       /* spheres are tested below it */
     real t;           /* the best crossing so far */
@@ -47,8 +46,7 @@ static float eb_above(double x)
 
 static void eb_bounds(const struct RTCBoundsFunctionArguments *args)
 {
-    const Scene *scene = args->geometryUserPtr;
-    const Sphere *s = &scene->spheres[args->primID];
+    const Sphere *s = (const Sphere *)args->geometryUserPtr + args->primID;
     double c[3] = {s->centre.x, s->centre.y, s->centre.z};
     double lo[3], hi[3];
 
@@ -71,13 +69,13 @@ static void eb_intersect(const struct RTCIntersectFunctionNArguments *args)
 {
     EbQuery *q = (EbQuery *)args->context;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
-    const Sphere *s = &q->scene->spheres[args->primID];
+    const Sphere *s = &q->spheres[args->primID];
     real t;
 
     if (!args->valid[0] || !sphere_hit(s->centre, s->radius, q->ray, 0, q->bound, &t))
         return;
     /* As bvh_nearest(): t <= the best; on a tie the earlier-listed wins. */
-    if (q->found && !(t < q->t) && s->order >= q->scene->spheres[q->prim].order)
+    if (q->found && !(t < q->t) && s->order >= q->spheres[q->prim].order)
         return;
     q->t = t;
     q->prim = args->primID;
@@ -91,20 +89,22 @@ static void eb_intersect(const struct RTCIntersectFunctionNArguments *args)
 static void eb_occluded(const struct RTCOccludedFunctionNArguments *args)
 {
     EbQuery *q = (EbQuery *)args->context;
-    const Sphere *s = &q->scene->spheres[args->primID];
+    const Sphere *s = &q->spheres[args->primID];
     real t;
 
     if (args->valid[0] && sphere_hit(s->centre, s->radius, q->ray, 0, q->bound, &t))
         ((struct RTCRay *)args->ray)->tfar = -INFINITY;
 }
 
-int bvh_build(Bvh *bvh, const Scene *scene, int threads)
+int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 {
     char config[64];
     RTCGeometry g;
 
+    (void)reach; /* the boxes' padding below allows for any */
     memset(bvh, 0, sizeof *bvh);
-    if (scene->triangle_count > 0) {
+    bvh->shapes = *shapes;
+    if (shapes->triangle_count > 0) {
         fprintf(stderr, "embree_bvh: spheres only\n");
         exit(2);
     }
@@ -117,8 +117,8 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     eb_scene = rtcNewScene(eb_device);
     rtcSetSceneBuildQuality(eb_scene, RTC_BUILD_QUALITY_HIGH);
     g = rtcNewGeometry(eb_device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(g, (unsigned)scene->sphere_count);
-    rtcSetGeometryUserData(g, (void *)scene);
+    rtcSetGeometryUserPrimitiveCount(g, (unsigned)shapes->sphere_count);
+    rtcSetGeometryUserData(g, (void *)shapes->spheres);
     rtcSetGeometryBoundsFunction(g, eb_bounds, NULL);
     rtcSetGeometryIntersectFunction(g, eb_intersect);
     rtcSetGeometryOccludedFunction(g, eb_occluded);
@@ -126,7 +126,7 @@ int bvh_build(Bvh *bvh, const Scene *scene, int threads)
     rtcAttachGeometry(eb_scene, g);
     rtcReleaseGeometry(g);
     rtcCommitScene(eb_scene);
-    bvh->prim_count = scene->sphere_count;
+    bvh->prim_count = shapes->sphere_count;
     return 0;
 }
 
@@ -152,12 +152,12 @@ size_t bvh_memory(const Bvh *bvh)
 }
 
 /* Starts query q of ray below tmax and returns Embree's float ray. */
-static struct RTCRayHit eb_start(EbQuery *q, const Scene *scene, const Ray *ray, real tmax)
+static struct RTCRayHit eb_start(EbQuery *q, const Bvh *bvh, const Ray *ray, real tmax)
 {
     struct RTCRayHit rh;
 
     rtcInitIntersectContext(&q->context);
-    q->scene = scene;
+    q->spheres = bvh->shapes.spheres;
     q->ray = ray;
     q->bound = tmax;
     q->found = 0;
@@ -178,35 +178,32 @@ static struct RTCRayHit eb_start(EbQuery *q, const Scene *scene, const Ray *ray,
     return rh;
 }
 
-int bvh_nearest(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax, BvhHit *hit)
+int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
 {
     EbQuery q;
-    struct RTCRayHit rh = eb_start(&q, scene, ray, tmax);
+    struct RTCRayHit rh = eb_start(&q, bvh, ray, tmax);
 
-    (void)bvh;
     rtcIntersect1(eb_scene, &q.context, &rh);
     if (q.found) {
         hit->t = q.t;
         hit->prim = q.prim;
-        hit->order = scene->spheres[q.prim].order;
+        hit->order = bvh->shapes.spheres[q.prim].order;
     }
     return q.found;
 }
 
-int bvh_occluded(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax)
+int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
 {
     EbQuery q;
-    struct RTCRayHit rh = eb_start(&q, scene, ray, tmax);
+    struct RTCRayHit rh = eb_start(&q, bvh, ray, tmax);
 
-    (void)bvh;
     rtcOccluded1(eb_scene, &q.context, &rh.ray);
     return rh.ray.tfar < 0;
 }
 
-int bvh_crossings(const Bvh *bvh, const Scene *scene, const Ray *ray, real tmax,
-                  BvhCrossing *out, int max)
+int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx)
 {
-    (void)bvh, (void)scene, (void)ray, (void)tmax, (void)out, (void)max;
+    (void)bvh, (void)ray, (void)tmax, (void)visit, (void)ctx;
     fprintf(stderr, "embree_bvh: no transparent objects\n");
     exit(2);
 }
