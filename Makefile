@@ -65,7 +65,7 @@ LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o
 
 # On x86, the hierarchy's queries are built a second time for processors
-# with AVX2 and FMA (src/accel/bvh_query.h); bvh.c runs that build on those.
+# with AVX2 and FMA (src/accel/bvh_query.h), and run on those processors.
 X86 := $(if $(filter x86_64-% i386-% i486-% i586-% i686-%,$(shell $(CC) -dumpmachine)),1)
 ifeq ($(X86),1)
 RT_CPPFLAGS += -DRAYTRACE_AVX2
@@ -118,6 +118,7 @@ test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $
 	RT_FLOAT=$(BUILD)/raytrace-float sh tests/cli.sh ./raytrace ./raytrace-diff
 	sh tests/hostile.sh ./raytrace
 	sh tests/install.sh
+	sh tests/layers.sh
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'

@@ -6,6 +6,7 @@
 
 #include "accel/bvh.h"
 #include "rng.h"
+#include "scene/scale.h"
 #include "scene/scene.h"
 #include "test.h"
 #include "render/trace.h"

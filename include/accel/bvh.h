@@ -14,6 +14,7 @@
 #ifndef RAYTRACE_BVH_H
 #define RAYTRACE_BVH_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -26,6 +27,35 @@ enum {
     BVH_LEAF_MAX = 4,        /* most primitives in a leaf */
     BVH_MIN_PRIMITIVES = 16  /* scenes with fewer are not worth a hierarchy */
 };
+
+enum {
+    BVH_SAH_DEPTH = 48, /* below this depth, splits halve the count */
+    BVH_DEPTH_MAX = BVH_SAH_DEPTH + 32, /* deepest binary node: from
+                                           BVH_SAH_DEPTH on, splits halve
+                                           fewer than 2^32 primitives */
+};
+
+/* Returns x's margin, for x a finite double: x - m and x + m rounded to
+ * floats are below and above x by half a float unit or more (m is two float
+ * units of x, or a subnormal float's), and so are below and above the value
+ * x approximates to a double's precision. */
+static inline double bvh_margin(double x)
+{
+    return fabs(x) * 0x1p-22 + 0x1p-149;
+}
+
+/* Returns a float below x, a double, by half a float unit or more;
+ * infinities stay. */
+static inline float bvh_float_below(double x)
+{
+    return isinf(x) ? (float)x : (float)(x - bvh_margin(x));
+}
+
+/* Returns a float above x by half a float unit or more; infinities stay. */
+static inline float bvh_float_above(double x)
+{
+    return isinf(x) ? (float)x : (float)(x + bvh_margin(x));
+}
 
 /* A primitive reference: BVH_TRIANGLE set for a triangle, the index below. */
 #define BVH_TRIANGLE 0x80000000u

@@ -13,8 +13,10 @@
 #ifndef RAYTRACE_SAMPLER_H
 #define RAYTRACE_SAMPLER_H
 
+#include "scene/camera.h"
+
 enum {
-    SAMPLER_MAX = 65536,   /* most samples per pixel */
+    SAMPLER_MAX = CAMERA_MAX_SAMPLES, /* most samples per pixel */
     SAMPLER_DIM_PIXEL = 0, /* positions in the pixel */
     SAMPLER_DIM_LENS = 1   /* positions on the lens */
 };

@@ -14,7 +14,10 @@
 #include "geometry/ray.h"
 #include "math/vec3.h"
 
-enum { CAMERA_MAX_SIZE = 32768 }; /* largest width or height, pixels */
+enum {
+    CAMERA_MAX_SIZE = 32768,   /* largest width or height, pixels */
+    CAMERA_MAX_SAMPLES = 65536 /* most samples per pixel */
+};
 
 typedef struct {
     Vec3 eye;      /* camera position: every primary ray starts here */

@@ -49,7 +49,6 @@ typedef struct {
 } SceneMesh;
 
 struct Bvh;
-struct ObjMesh;
 
 typedef struct Scene {
     Camera camera;          /* eye, screen, image size and lens */
@@ -99,6 +98,7 @@ typedef struct Scene {
                                0 when the scene does not say */
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()
+                               (scale.h)
                                enlarged a tiny scene */
     size_t memory_limit;    /* bytes the scene's arrays, meshes being read and
                                hierarchy may take together; 0: no limit */
@@ -149,15 +149,27 @@ static inline const TriangleShading *scene_shading_of(const Scene *scene, const 
     return tri->shading == TRIANGLE_PLAIN ? NULL : &scene->shading[tri->shading];
 }
 
-/* Appends the triangles of OBJ mesh m with material mat, smooth where all
- * three corners have a non-zero normal, with the texture coordinates of
- * their corners when all three have some (every triangle of a mesh with
- * normals or texture coordinates has a shading entry; of one without,
- * none); triangles without area are left out. Returns how many it added,
- * -1 when memory runs out (those added stay), or SCENE_OVER_LIMIT (none
- * added) when the triangles and the mesh together would pass the memory
- * limit. */
-long scene_add_mesh(Scene *scene, const struct ObjMesh *m, const Material *mat);
+/* Appends *m to the triangles' materials; returns its index, or -1 when
+ * memory runs out or SCENE_OVER_LIMIT. */
+long scene_add_material(Scene *scene, const Material *m);
+
+/* Appends a copy of *t with the material of index material and, unless sh
+ * is NULL, the shading *sh; returns 0, or -1 or SCENE_OVER_LIMIT with the
+ * scene unchanged. */
+int scene_append_triangle(Scene *scene, const Triangle *t, size_t material,
+                          const TriangleShading *sh);
+
+/* Appends up to n triangles at once, of material index material and each
+ * with a shading entry when shaded is set: fill(tris, sh, ctx) writes them
+ * into room for n (sh NULL when not shaded), on any threads, the kept ones
+ * first, and returns how many it kept (at most n), or more than n when it
+ * fails. Their positions among the objects, material and shading indices
+ * are set here, and the arrays' capacities are those that adding the kept
+ * ones one by one would make. Returns how many were added, or -1 or
+ * SCENE_OVER_LIMIT with the scene as it was. */
+long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
+                         size_t (*fill)(Triangle *tris, TriangleShading *sh, void *ctx),
+                         void *ctx);
 
 /* Appends *m, taking ownership of its name (freed on failure); returns its
  * index, or -1 when memory runs out. */
@@ -192,17 +204,5 @@ size_t scene_memory_left(const Scene *scene);
 
 /* Returns the number of objects (shapes) in the scene. */
 size_t scene_object_count(const Scene *scene);
-
-/*
- * Enlarges a tiny scene, one whose every coordinate and length is below
- * SCENE_TINY in magnitude, by the power of two that brings the largest into
- * [0.5, 1), and records it in length_exponent. Multiplying every length by a
- * power of two is exact and commutes with every operation the renderer
- * uses, so the picture does not change; but squares and products of lengths
- * no longer underflow. Other scenes are left as they are.
- */
-void scene_fit_scale(Scene *scene);
-
-#define SCENE_TINY 0x1p-64 /* ~5.4e-20: smaller scenes are enlarged */
 
 #endif

@@ -1,28 +1,31 @@
 /*
  * texture.h: images that give a surface its colour.
  *
- * A texture is a PPM image (P6 or P3, any maxval) read once per scene. It is
- * addressed by texture coordinates (u, v): u runs left to right across the
+ * A texture is a grid of texels read once per scene (scenefile/
+ * texture_file.h reads them from image files). It is addressed by texture coordinates (u, v): u runs left to right across the
  * image, v bottom to top, one image per unit; outside [0, 1) the image
  * repeats (v may be clamped instead, for spheres, whose poles are edges).
  */
 #ifndef RAYTRACE_TEXTURE_H
 #define RAYTRACE_TEXTURE_H
 
-#include "math/colour.h"
-#include "base/error.h"
+#include <stddef.h>
+
 #include "geometry/material.h"
-#include "image/ppm.h"
+#include "math/colour.h"
 
 typedef struct {
-    PpmImage image; /* the texels, rows top to bottom */
-    double scale;   /* 255 / maxval: texel value to colour */
-    char *path;     /* the file it was read from, as the scene names it */
+    int width, height;      /* texels, >= 1 each */
+    unsigned short *texels; /* 3 * width * height samples, rows top to
+                               bottom, interleaved R, G, B; owned */
+    double scale;           /* 255 / the largest sample value: a sample
+                               times scale is a colour, 0..255 */
+    char *path;             /* the file it was read from, as the scene
+                               names it; owned */
 } Texture;
 
-/* Reads the PPM file at path into *tex, keeping a copy of path; returns 0,
- * or -1 with *err describing the fault in the file. */
-int texture_load(Texture *tex, const char *path, Error *err);
+/* Returns the bytes t's texels take. */
+size_t texture_memory(const Texture *t);
 
 /* Releases what *tex owns. */
 void texture_free(Texture *tex);

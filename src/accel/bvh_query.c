@@ -500,3 +500,30 @@ int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit
     }
     return 0;
 }
+
+#if !defined(BVH_QUERY_AVX2)
+/* The base build answers bvh.h's queries with the build bvh->avx2 names;
+ * without the AVX2 build, bvh->avx2 stays 0 and its functions are never
+ * called. */
+#if !defined(RAYTRACE_AVX2)
+#define bvh_nearest_avx2 bvh_nearest_base
+#define bvh_occluded_avx2 bvh_occluded_base
+#define bvh_crossings_avx2 bvh_crossings_base
+#endif
+
+int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
+{
+    return bvh->avx2 ? bvh_nearest_avx2(bvh, ray, tmax, hit) : bvh_nearest_base(bvh, ray, tmax, hit);
+}
+
+int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
+{
+    return bvh->avx2 ? bvh_occluded_avx2(bvh, ray, tmax) : bvh_occluded_base(bvh, ray, tmax);
+}
+
+int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx)
+{
+    return bvh->avx2 ? bvh_crossings_avx2(bvh, ray, tmax, visit, ctx)
+                     : bvh_crossings_base(bvh, ray, tmax, visit, ctx);
+}
+#endif

@@ -3,31 +3,17 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
-int texture_load(Texture *tex, const char *path, Error *err)
+size_t texture_memory(const Texture *t)
 {
-    size_t n = strlen(path);
-
-    tex->path = malloc(n + 1);
-    if (!tex->path) {
-        error_set(err, path, "out of memory");
-        return -1;
-    }
-    memcpy(tex->path, path, n + 1);
-    if (ppm_read(path, &tex->image, err) != 0) {
-        free(tex->path);
-        tex->path = NULL;
-        return -1;
-    }
-    tex->scale = 255.0 / tex->image.maxval;
-    return 0;
+    return 3 * (size_t)t->width * (size_t)t->height * sizeof *t->texels;
 }
 
 void texture_free(Texture *tex)
 {
-    ppm_free(&tex->image);
+    free(tex->texels);
     free(tex->path);
+    tex->texels = NULL;
     tex->path = NULL;
 }
 
@@ -54,15 +40,14 @@ static int texture_index(int i, int n, int clamp)
 /* Returns the texel at column i, row j (both in range) as a colour. */
 static Colour texture_texel(const Texture *tex, int i, int j)
 {
-    const unsigned short *s =
-        tex->image.samples + 3 * ((size_t)j * (size_t)tex->image.width + (size_t)i);
+    const unsigned short *s = tex->texels + 3 * ((size_t)j * (size_t)tex->width + (size_t)i);
 
     return colour(s[0] * tex->scale, s[1] * tex->scale, s[2] * tex->scale);
 }
 
 Colour texture_lookup(const Texture *tex, double u, double v, TextureFilter filter, int clamp_v)
 {
-    int w = tex->image.width, h = tex->image.height;
+    int w = tex->width, h = tex->height;
     double x, y, fx, fy;
     int i0, j0, i1, j1;
     Colour a, b, c, d;

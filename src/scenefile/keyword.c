@@ -24,7 +24,9 @@
 #include "math/angle.h"
 #include "scenefile/lex.h"
 #include "math/number.h"
+#include "scenefile/mesh.h"
 #include "scenefile/obj.h"
+#include "scene/scale.h"
 
 /* The reader's state. */
 typedef struct {
@@ -435,7 +437,7 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
         return -1;
     }
     sm.first = scene->triangle_count;
-    added = scene_add_mesh(scene, &mesh, &m);
+    added = mesh_add(scene, &mesh, &m);
     obj_free(&mesh);
     if (added <= 0) {
         free(sm.opened);

@@ -34,8 +34,10 @@
 
 #include "scenefile/lex.h"
 #include "math/number.h"
+#include "scenefile/mesh.h"
 #include "scenefile/obj.h"
-#include "render/sampler.h"
+#include "scene/scale.h"
+#include "scenefile/texture_file.h"
 #include "base/threads.h"
 
 /* The parser's state: a cursor over the input. */
@@ -446,7 +448,7 @@ static int parse_ambient_record(Parser *P, const Record *rec, Scene *scene)
     return 0;
 }
 
-/* samples -> 'samples:' digits, 1..SAMPLER_MAX */
+/* samples -> 'samples:' digits, 1..CAMERA_MAX_SAMPLES */
 static int parse_samples_record(Parser *P, const Record *rec, Scene *scene)
 {
     if (parse_once(P, rec, &P->samples_line, "the number of samples per pixel") != 0)
@@ -457,7 +459,7 @@ static int parse_samples_record(Parser *P, const Record *rec, Scene *scene)
         return -1;
     }
     return lex_whole_number(&P->lex, rec, 1, "the number of samples per pixel", "samples",
-                              SAMPLER_MAX, &scene->samples);
+                              CAMERA_MAX_SAMPLES, &scene->samples);
 }
 
 /* lens -> 'lens:' aperture focal_distance */
@@ -495,7 +497,7 @@ static int parse_load_texture(Parser *P, const Record *rec, const Token *t, Scen
             return (int)i;
         }
     }
-    if (texture_load(&tex, path, &inner) != 0) {
+    if (texture_file_load(&tex, path, &inner) != 0) {
         lex_fail_file(&P->lex, rec, t, "texture", &inner);
         free(path);
         return -1;
@@ -537,7 +539,7 @@ static int parse_mesh_record(Parser *P, const Record *rec, Scene *scene)
         return -1;
     }
     free(path);
-    added = scene_add_mesh(scene, &mesh, &mat);
+    added = mesh_add(scene, &mesh, &mat);
     obj_free(&mesh);
     if (added < 0)
         return parse_fail_memory(P, rec, scene, added);

@@ -1,0 +1,71 @@
+/* scale.c: enlarging tiny scenes (see scale.h). */
+#include "scene/scale.h"
+
+#include <math.h>
+
+/* Returns the largest magnitude of the components of the n points at p. */
+static double scene_points_max(const Vec3 *p, size_t n)
+{
+    double m = 0;
+
+    for (size_t i = 0; i < n; i++)
+        m = fmax(m, vec3_max_abs(p[i]));
+    return m;
+}
+
+/* Returns the largest magnitude of every length in the scene, or some
+ * magnitude of SCENE_TINY or more when there is one (the objects are then
+ * not looked at: a scene of 10^6 triangles is seldom tiny). */
+static double scene_max_length(const Scene *scene)
+{
+    const Camera *cam = &scene->camera;
+    double m = fmax(fmax(vec3_max_abs(cam->eye), vec3_max_abs(cam->top_left)),
+                    fmax(vec3_max_abs(cam->u), vec3_max_abs(cam->v)));
+
+    m = fmax(m, fmax(cam->aperture, cam->aperture > 0 ? cam->focus : 0));
+    if (m >= SCENE_TINY)
+        return m;
+    for (size_t i = 0; i < scene->light_count; i++)
+        if (!scene->lights[i].distant) /* a direction, not a place */
+            m = fmax(m, vec3_max_abs(scene->lights[i].position));
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
+    for (size_t i = 0; i < scene->plane_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->planes[i].point),
+                        scene->planes[i].material.texture >= 0 ? scene->planes[i].tile : 0));
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        m = fmax(m, scene_points_max(scene->triangles[i].v, 3));
+    return m;
+}
+
+void scene_fit_scale(Scene *scene)
+{
+    Camera *cam = &scene->camera;
+    double m = scene_max_length(scene);
+    int k;
+
+    if (!(m > 0 && m < SCENE_TINY))
+        return;
+    k = vec3_unit_exponent(m);
+    cam->eye = vec3_ldexp(cam->eye, k);
+    cam->top_left = vec3_ldexp(cam->top_left, k);
+    cam->u = vec3_ldexp(cam->u, k);
+    cam->v = vec3_ldexp(cam->v, k);
+    cam->aperture = ldexp(cam->aperture, k);
+    cam->focus = ldexp(cam->focus, k);
+    for (size_t i = 0; i < scene->light_count; i++)
+        if (!scene->lights[i].distant)
+            scene->lights[i].position = vec3_ldexp(scene->lights[i].position, k);
+    for (size_t i = 0; i < scene->sphere_count; i++) {
+        scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
+        scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);
+    }
+    for (size_t i = 0; i < scene->plane_count; i++) {
+        scene->planes[i].point = vec3_ldexp(scene->planes[i].point, k);
+        scene->planes[i].tile = ldexp(scene->planes[i].tile, k);
+    }
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        for (int j = 0; j < 3; j++)
+            scene->triangles[i].v[j] = vec3_ldexp(scene->triangles[i].v[j], k);
+    scene->length_exponent = k;
+}
