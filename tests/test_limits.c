@@ -10,7 +10,7 @@
 #include "base/file.h"
 #include "math/number.h"
 #include "scenefile/obj.h"
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 #include "scene/scene.h"
 #include "test.h"
 #include "image/writer.h"
@@ -55,14 +55,14 @@ static void limits_scene_stops_at_the_element_that_passes(void)
     if (!text)
         return;
     /* No limit: every sphere is read. */
-    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(1000, (long long)sc.sphere_count);
     CHECK(scene_memory(&sc) >= 1000 * sizeof(Sphere));
     CHECK(scene_memory_left(&sc) == SIZE_MAX);
     scene_free(&sc);
     /* 64 KiB: the array doubles to 512 spheres, not to 1024; the error
      * points at the 513th sphere's line (8 + 512). */
-    CHECK_INT(-1, parse_scene_text("t.txt", text, strlen(text), limit, &sc, &err));
+    CHECK_INT(-1, course_parse_text("t.txt", text, strlen(text), limit, &sc, &err));
     CHECK_INT(520, err.line);
     CHECK_INT(1, err.column);
     CHECK_CONTAINS(err.message, "would pass the memory limit of 64 KiB");
@@ -150,7 +150,7 @@ static void limits_hierarchy_is_estimated_before_it_is_built(void)
     CHECK(text != NULL);
     if (!text)
         return;
-    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
     sc.memory_limit = scene_memory(&sc) + bvh_build_memory(1000) - 1;
     CHECK_INT(SCENE_OVER_LIMIT, scene_build_accel(&sc, 1));
     CHECK(sc.accel == NULL);

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "scenefile/obj.h"
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 #include "shading.h"
 #include "test.h"
 #include "base/threads.h"
@@ -129,7 +129,7 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fwrite(obj, 1, sizeof obj - 1, f);
     fclose(f);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(2, (long long)sc.triangle_count);
     if (sc.triangle_count == 2) {
         CHECK_NEAR(0.25, scene_material_of(&sc, &sc.triangles[1])->transparency, 0);
@@ -146,7 +146,7 @@ static void mesh_record_adds_the_triangles(void)
     fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\nvn 0 0 -2\nvn 1 0 -1\nvn 0 0 0\n"
           "f 1//1 2//2 3//1\nf 1//1 2//3 3//1\n", f);
     fclose(f);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(2, (long long)sc.triangle_count);
     if (sc.triangle_count == 2) {
         CHECK_INT(1, shading_of(&sc, 0).smooth);
@@ -163,7 +163,7 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fputs("v 0 0 5\nf 1 2 3\n", f);
     fclose(f);
-    CHECK_INT(-1, parse_scene_text("build/t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(-1, course_parse_text("build/t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(8, err.line);
     CHECK_INT(7, err.column);
     CHECK_CONTAINS(err.message, "cannot use the mesh 't.obj': build/t.obj:2:5: vertex 2 does not exist");
@@ -320,9 +320,9 @@ static void parse_on_both(const char *text, size_t memory_limit, Scene *one, Sce
     Error err;
 
     threads_use(1);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), memory_limit, one, &err));
+    CHECK_INT(0, course_parse_text("build/t.txt", text, strlen(text), memory_limit, one, &err));
     threads_use(2);
-    CHECK_INT(0, parse_scene_text("build/t.txt", text, strlen(text), memory_limit, two, &err));
+    CHECK_INT(0, course_parse_text("build/t.txt", text, strlen(text), memory_limit, two, &err));
     threads_use(before);
 }
 

@@ -6,7 +6,7 @@
 
 #include "scenefile/load.h"
 #include "math/number.h"
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 #include "rng.h"
 #include "test.h"
 #include "base/threads.h"
@@ -19,7 +19,7 @@
 
 static int parse(const char *text, Scene *scene, Error *err)
 {
-    return parse_scene_text("t.txt", text, strlen(text), 0, scene, err);
+    return course_parse_text("t.txt", text, strlen(text), 0, scene, err);
 }
 
 static void parse_accepts_the_example(void)
@@ -151,7 +151,7 @@ static void parse_accepts_many_spheres(void)
 
     for (size_t i = 0; i < n; i++)
         len += (size_t)sprintf(text + len, "sphere: %zu 0 9 0.5 1 2 3 0\n", i);
-    CHECK_INT(0, parse_scene_text("t.txt", text, len, 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("t.txt", text, len, 0, &sc, &err));
     CHECK_INT((long long)n, (long long)sc.sphere_count);
     CHECK_NEAR(4999, sc.spheres[4999].centre.x, 0);
     scene_free(&sc);
@@ -201,7 +201,7 @@ static int parse_on(int threads, const char *text, size_t len, size_t memory_lim
                     Scene *scene, Error *err)
 {
     threads_use(threads);
-    return parse_scene_text("big.txt", text, len, memory_limit, scene, err);
+    return course_parse_text("big.txt", text, len, memory_limit, scene, err);
 }
 
 /* A large scene of spheres is read alike on one thread and on two: the same
@@ -546,7 +546,7 @@ static void parse_rejects_bad_scenes_with_position(void)
 
         if (strstr(b->message, "NUL byte"))
             len += 1 + strlen(b->text + len + 1);
-        rc = parse_scene_text("t.txt", b->text, len, 0, &sc, &err);
+        rc = course_parse_text("t.txt", b->text, len, 0, &sc, &err);
         CHECK_INT(-1, rc);
         if (rc != -1) {
             scene_free(&sc);
@@ -673,7 +673,7 @@ static void parse_error_excerpt_and_caret(void)
         char text[2000];
         memset(text, ' ', sizeof text);
         memcpy(text + 1500, "0 0 x\n", 6);
-        CHECK_INT(-1, parse_scene_text("t.txt", text, 1506, 0, &sc, &err));
+        CHECK_INT(-1, course_parse_text("t.txt", text, 1506, 0, &sc, &err));
         CHECK_INT(1505, err.column);
         CHECK(strlen(err.excerpt) < 180);
         CHECK_INT('x', err.excerpt[err.caret]);

@@ -7,7 +7,7 @@
 
 #include "scene/camera.h"
 #include "scenefile/load.h"
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 #include "render/render.h"
 #include "rng.h"
 #include "render/trace.h"
@@ -70,7 +70,7 @@ static void check_pixels_are_their_rays(const char *text)
     Image img;
     int bad = 0;
 
-    CHECK_INT(0, parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
     render(&sc, &opts, &img, NULL);
     for (int j = 0; j < img.height; j++)
@@ -267,7 +267,7 @@ static int render_text(const char *text, Image *img)
     Error err;
     int e;
 
-    if (parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
+    if (course_parse_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         img->rgb = NULL;
         return -99999;
@@ -316,7 +316,7 @@ static int render_text_with(const char *text, int samples, int threads, Image *i
 
     img->rgb = NULL;
     img->linear = NULL;
-    if (parse_scene_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
+    if (course_parse_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
     }

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 #include "shading.h"
 #include "geometry/sphere.h"
 #include "test.h"
@@ -96,7 +96,7 @@ static void sphere_uv_at_known_points(void)
 /* Parses text as build/t.txt; returns its status. */
 static int parse_in_build(const char *text, Scene *sc, Error *err)
 {
-    return parse_scene_text("build/t.txt", text, strlen(text), 0, sc, err);
+    return course_parse_text("build/t.txt", text, strlen(text), 0, sc, err);
 }
 
 static void texture_records_attach_to_the_object_before(void)

@@ -3,7 +3,7 @@
  *
  * One element per line, each starting with its keyword: camera, material,
  * sphere, plane, triangle, mesh, light, and our ambient and background
- * (docs/scene-format.md, "The keyword format"). Like parse.h, the reader
+ * (docs/scene-format.md, "The keyword format"). Like course.h, the reader
  * never prints: a fault fills an Error with the file, line and column and
  * a message saying what was expected and what was found.
  */

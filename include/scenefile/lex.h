@@ -115,6 +115,11 @@ int lex_numbers(Lexer *L, const Record *rec, int first, const RecordSpec *spec,
 int lex_whole_number(Lexer *L, const Record *rec, int k, const char *what, const char *unit,
                      long max, int *out);
 
+/* Checks that rec's keyword, `what`, which may appear once, has not
+ * appeared before (on line *seen, 0 if not), then notes its line; returns
+ * 0, or -1 with the fault recorded. */
+int lex_once(Lexer *L, const Record *rec, int *seen, const char *what);
+
 /* Records that the input ends where `what` was expected (with syntax in
  * parentheses when not NULL): the position is just past the last byte. */
 void lex_fail_eof(Lexer *L, const char *what, const char *syntax);

@@ -1,5 +1,5 @@
 /*
- * load.h: reading a scene file in either format: the course's (parse.h) or
+ * load.h: reading a scene file in either format: the course's (course.h) or
  * seed 002's keyword format (keyword.h), told apart by content unless the
  * caller names one.
  *

@@ -158,19 +158,6 @@ static int keyword_file_name(Keyword *K, const Scene *scene, const Token *t, siz
     return 0;
 }
 
-/* Checks that rec's keyword, which may appear once, has not appeared before
- * (on line *seen, 0 if not); then notes its line. */
-static int keyword_once(Keyword *K, const Record *rec, int *seen, const char *what)
-{
-    if (*seen) {
-        keyword_fail(K, &rec->line, rec->tok[0].column, "%s is already set, on line %d", what,
-                     *seen);
-        return -1;
-    }
-    *seen = rec->line.number;
-    return 0;
-}
-
 /* Reads the numbers of spec from rec's token `first` on, then the name of
  * a material as the last field, into values and *m (a copy of the named
  * material); returns 0, or -1 with the fault at the field that is wrong. */
@@ -245,7 +232,7 @@ static int keyword_camera_record(Keyword *K, const Record *rec, Scene *scene)
     int width, height;
     char q[64];
 
-    if (keyword_once(K, rec, &K->camera_line, "the camera") != 0 ||
+    if (lex_once(&K->lex, rec, &K->camera_line, "the camera") != 0 ||
         lex_numbers(&K->lex, rec, 1, &keyword_camera, v) < 0 ||
         lex_whole_number(&K->lex, rec, 8, "the image width", "pixels", CAMERA_MAX_SIZE,
                          &width) != 0 ||
@@ -492,7 +479,7 @@ static int keyword_ambient_record(Keyword *K, const Record *rec, Scene *scene)
 {
     double v[3];
 
-    if (keyword_once(K, rec, &K->ambient_line, "the ambient light") != 0 ||
+    if (lex_once(&K->lex, rec, &K->ambient_line, "the ambient light") != 0 ||
         lex_numbers(&K->lex, rec, 1, &keyword_ambient, v) < 0)
         return -1;
     scene->ambient = colour(v[0], v[1], v[2]);
@@ -505,7 +492,7 @@ static int keyword_background_record(Keyword *K, const Record *rec, Scene *scene
 {
     double v[3];
 
-    if (keyword_once(K, rec, &K->background_line, "the background") != 0 ||
+    if (lex_once(&K->lex, rec, &K->background_line, "the background") != 0 ||
         lex_numbers(&K->lex, rec, 1, &keyword_background, v) < 0)
         return -1;
     scene->background = colour(v[0], v[1], v[2]);

@@ -315,6 +315,16 @@ int lex_whole_number(Lexer *L, const Record *rec, int k, const char *what, const
     return 0;
 }
 
+int lex_once(Lexer *L, const Record *rec, int *seen, const char *what)
+{
+    if (*seen) {
+        lex_fail(L, &rec->line, rec->tok[0].column, "%s is already set, on line %d", what, *seen);
+        return -1;
+    }
+    *seen = rec->line.number;
+    return 0;
+}
+
 void lex_fail_eof(Lexer *L, const char *what, const char *syntax)
 {
     Line line;

@@ -7,7 +7,7 @@
 #include "base/file.h"
 #include "scenefile/keyword.h"
 #include "math/number.h"
-#include "scenefile/parse.h"
+#include "scenefile/course.h"
 
 SceneFormat load_detect(const char *text, size_t len)
 {
@@ -48,7 +48,7 @@ int load_scene_text(const char *name, const char *text, size_t len, SceneFormat 
         format = load_detect(text, len);
     if (format == SCENE_KEYWORD)
         return keyword_parse_text(name, text, len, memory_limit, scene, err);
-    return parse_scene_text(name, text, len, memory_limit, scene, err);
+    return course_parse_text(name, text, len, memory_limit, scene, err);
 }
 
 int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,

@@ -1,5 +1,5 @@
 /*
- * parse.h: reading the course's scene format into a Scene.
+ * course.h: reading the course's scene format into a Scene.
  *
  * The format is described in docs/scene-format.md. The parser never prints
  * and never exits: on a fault it fills an Error with the file, line and
@@ -7,8 +7,8 @@
  * found, and returns -1. Numbers are read in the C locale's format whatever
  * the program's locale (raytrace never calls setlocale()).
  */
-#ifndef RAYTRACE_PARSE_H
-#define RAYTRACE_PARSE_H
+#ifndef RAYTRACE_COURSE_H
+#define RAYTRACE_COURSE_H
 
 #include <stddef.h>
 
@@ -20,7 +20,7 @@
  * initialises with memory_limit (scene.h), ready to render (a tiny scene is
  * enlarged exactly by scene_fit_scale()); returns 0, or -1 with *err filled
  * and *scene empty. load.h reads files, in either format. */
-int parse_scene_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                     Scene *scene, Error *err);
+int course_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                      Scene *scene, Error *err);
 
 #endif

@@ -1,0 +1,73 @@
+/*
+ * course_parser.h: what the course format's reader (course.c) shares with
+ * its bonus records (course_records.c) and its reader of large sphere
+ * fields (course_bulk.c); private to the three.
+ */
+#ifndef RAYTRACE_COURSE_PARSER_H
+#define RAYTRACE_COURSE_PARSER_H
+
+#include <stddef.h>
+
+#include "scene/scene.h"
+#include "scenefile/lex.h"
+
+/* The parser's state: a cursor over the input. */
+typedef struct {
+    Lexer lex;         /* the cursor over the input */
+    int ambient_line;  /* line of the ambient: record, 0 before it */
+    int samples_line;  /* line of the samples: record, 0 before it */
+    int lens_line;     /* line of the lens: record, 0 before it */
+    int has_last;      /* an object has been read */
+    int last_kind;     /* which shape the last object is (a COURSE_SHAPE_*) */
+    size_t last_index; /* its index among the scene's shapes of that kind (a
+                          mesh: its first triangle's) */
+} CourseParser;
+
+/* Records a fault at column of line. */
+#define course_fail(P, line, column, ...) lex_fail(&(P)->lex, line, column, __VA_ARGS__)
+
+/* The shapes a texture: record may follow. */
+enum { COURSE_SHAPE_SPHERE, COURSE_SHAPE_PLANE, COURSE_SHAPE_TRIANGLE, COURSE_SHAPE_MESH };
+
+/* light -> x y z r g b: the header's light and a light: record's numbers. */
+extern const RecordSpec course_light_spec;
+
+/* Records that rec's element could not be stored, scene_add_*() having
+ * returned rc; returns -1. */
+int course_fail_memory(CourseParser *P, const Record *rec, const Scene *scene, long rc);
+
+/* Appends the light of values v (x y z r g b), the record rec, to the scene. */
+int course_add_light(CourseParser *P, const Record *rec, const double *v, Scene *scene);
+
+/* material -> r g b reflection [transparency index]: the numbers of spec
+ * from values[first] on (n numbers read in all), the first number being
+ * rec's token tok0, into *m; checks R + T <= 1. */
+int course_material(CourseParser *P, const Record *rec, const RecordSpec *spec, int tok0,
+                    int first, const double *values, int n, Material *m);
+
+/* Remembers the object just added (a COURSE_SHAPE_* and its index), for a
+ * texture: record after it. */
+void course_note_object(CourseParser *P, int kind, size_t index);
+
+/* Reads rec, a sphere: record, into *s (its order aside). */
+int course_sphere_fields(CourseParser *P, const Record *rec, Sphere *s);
+
+/* The bonus records (course_records.c), each reading rec into the scene;
+ * 0, or -1 with the fault recorded. */
+int course_plane_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_triangle_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_texture_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_extra_light_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_ambient_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_samples_record(CourseParser *P, const Record *rec, Scene *scene);
+int course_lens_record(CourseParser *P, const Record *rec, Scene *scene);
+
+/* Reads the rest of the input on every thread when it is large and holds
+ * sphere: records alone (the benchmark's fields), into the same scene as
+ * the serial reading (course_bulk.c); returns 1 when it did, 0 when the
+ * serial reading must (then also when something is wrong: it says what,
+ * as it would have). */
+int course_spheres_parallel(CourseParser *P, Scene *scene);
+
+#endif

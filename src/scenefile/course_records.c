@@ -1,0 +1,323 @@
+/* course_records.c: the course format's bonus records (see course_parser.h,
+ * docs/scene-format.md). */
+#include "course_parser.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "math/number.h"
+#include "scenefile/mesh.h"
+#include "scenefile/obj.h"
+#include "scenefile/texture_file.h"
+
+static const char *const course_material_names[] = {"red",        "green",        "blue",
+                                                     "reflection", "transparency", "refractive index"};
+static const FieldKind course_material_kinds[] = {FIELD_COLOUR,   FIELD_COLOUR,   FIELD_COLOUR,
+                                                  FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const char *const course_rgb_names[] = {"red", "green", "blue"};
+static const FieldKind course_rgb_kinds[] = {FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
+static const char *const course_plane_names[] = {
+    "point x", "point y", "point z", "normal x",   "normal y",     "normal z",
+    "red",     "green",   "blue",    "reflection", "transparency", "refractive index"};
+static const FieldKind course_plane_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const char *const course_triangle_names[] = {
+    "x0",  "y0",    "z0",   "x1",         "y1",           "z1",
+    "x2",  "y2",    "z2",   "red",        "green",        "blue",
+    "reflection", "transparency", "refractive index"};
+static const FieldKind course_triangle_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COLOUR,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const char *const course_lens_names[] = {"aperture", "focal distance"};
+static const FieldKind course_lens_kinds[] = {FIELD_NONNEGATIVE, FIELD_POSITIVE};
+static const char *const course_tile_names[] = {"tile size"};
+static const FieldKind course_tile_kinds[] = {FIELD_POSITIVE};
+static const char *const course_uv_names[] = {"u0", "v0", "u1", "v1", "u2", "v2"};
+static const FieldKind course_uv_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                           FIELD_COORD, FIELD_COORD, FIELD_COORD};
+static const RecordSpec course_plane_spec = {"the plane",
+                                       "px py pz nx ny nz r g b reflection"
+                                       " [transparency index]",
+                                       10, 2, 0, course_plane_names, course_plane_kinds};
+static const RecordSpec course_triangle_spec = {"the triangle",
+                                          "x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection"
+                                          " [transparency index]",
+                                          13, 2, 0, course_triangle_names, course_triangle_kinds};
+static const RecordSpec course_ambient_spec = {"the ambient light", "r g b", 3, 0, 0, course_rgb_names,
+                                         course_rgb_kinds};
+static const RecordSpec course_lens_spec = {"the lens", "aperture focal_distance", 2, 0, 0,
+                                      course_lens_names, course_lens_kinds};
+static const RecordSpec course_sphere_texture_spec = {"the sphere's texture", "path [filter]", 0, 0, 0,
+                                                NULL, NULL};
+static const RecordSpec course_plane_texture_spec = {"the plane's texture", "path [filter] [tile_size]",
+                                               0, 1, 0, course_tile_names, course_tile_kinds};
+static const RecordSpec course_mesh_spec = {"the mesh", "path r g b reflection [transparency index]",
+                                      4, 2, 0, course_material_names, course_material_kinds};
+static const RecordSpec course_mesh_texture_spec = {"the mesh's texture", "path [filter]", 0, 0, 0, NULL,
+                                              NULL};
+static const RecordSpec course_triangle_texture_spec = {"the triangle's texture",
+                                                  "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6, 0,
+                                                  course_uv_names, course_uv_kinds};
+
+/* Returns the material of the last object read (there must be one). */
+static Material *course_last_material(CourseParser *P, Scene *scene)
+{
+    switch (P->last_kind) {
+    case COURSE_SHAPE_PLANE:
+        return &scene->planes[P->last_index].material;
+    case COURSE_SHAPE_TRIANGLE:
+    case COURSE_SHAPE_MESH: /* a mesh's triangles share it */
+        return scene_material_of(scene, &scene->triangles[P->last_index]);
+    default:
+        return &scene->spheres[P->last_index].material;
+    }
+}
+
+/* plane -> 'plane:' px py pz nx ny nz r g b reflection [transparency index] */
+int course_plane_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[12];
+    int n = lex_numbers(&P->lex, rec, 1, &course_plane_spec, v), rc;
+    Material m;
+    Plane pl;
+
+    if (n < 0 || course_material(P, rec, &course_plane_spec, 1, 6, v, n, &m) != 0)
+        return -1;
+    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
+        course_fail(P, &rec->line, rec->tok[4].column,
+                   "the plane's normal is the zero vector: it must give a direction");
+        return -1;
+    }
+    rc = scene_add_plane(scene, &pl);
+    if (rc != 0)
+        return course_fail_memory(P, rec, scene, rc);
+    course_note_object(P, COURSE_SHAPE_PLANE, scene->plane_count - 1);
+    return 0;
+}
+
+/* triangle -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection
+ *             [transparency index] */
+int course_triangle_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[15];
+    int n = lex_numbers(&P->lex, rec, 1, &course_triangle_spec, v), rc;
+    Material m;
+    Triangle tri;
+
+    if (n < 0 || course_material(P, rec, &course_triangle_spec, 1, 9, v, n, &m) != 0)
+        return -1;
+    if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
+                      vec3(v[6], v[7], v[8])) != 0) {
+        course_fail(P, &rec->line, rec->tok[0].column,
+                   "the triangle's three vertices lie on one line: it has no area");
+        return -1;
+    }
+    rc = scene_add_triangle(scene, &tri, &m);
+    if (rc != 0)
+        return course_fail_memory(P, rec, scene, rc);
+    course_note_object(P, COURSE_SHAPE_TRIANGLE, scene->triangle_count - 1);
+    return 0;
+}
+
+/* light -> 'light:' x y z r g b */
+int course_extra_light_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[6];
+
+    if (lex_numbers(&P->lex, rec, 1, &course_light_spec, v) < 0)
+        return -1;
+    return course_add_light(P, rec, v, scene);
+}
+
+/* ambient -> 'ambient:' r g b */
+int course_ambient_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[3];
+
+    if (lex_once(&P->lex, rec, &P->ambient_line, "the ambient light") != 0 ||
+        lex_numbers(&P->lex, rec, 1, &course_ambient_spec, v) < 0)
+        return -1;
+    scene->ambient = colour(v[0], v[1], v[2]);
+    scene->has_ambient = 1;
+    return 0;
+}
+
+/* samples -> 'samples:' digits, 1..CAMERA_MAX_SAMPLES */
+int course_samples_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    if (lex_once(&P->lex, rec, &P->samples_line, "the number of samples per pixel") != 0)
+        return -1;
+    if (rec->count != 2) {
+        course_fail(P, &rec->line, rec->count < 2 ? rec->end_column : rec->tok[2].column,
+                   "expected 1 number for the samples per pixel, found %d", rec->count - 1);
+        return -1;
+    }
+    return lex_whole_number(&P->lex, rec, 1, "the number of samples per pixel", "samples",
+                              CAMERA_MAX_SAMPLES, &scene->samples);
+}
+
+/* lens -> 'lens:' aperture focal_distance */
+int course_lens_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[2];
+
+    if (lex_once(&P->lex, rec, &P->lens_line, "the lens") != 0 ||
+        lex_numbers(&P->lex, rec, 1, &course_lens_spec, v) < 0)
+        return -1;
+    if (v[0] > 0 && camera_set_lens(&scene->camera, v[0], v[1]) != 0) {
+        course_fail(P, &rec->line, rec->tok[0].column,
+                   "the camera lies in the plane of its screen: a lens needs the screen in "
+                   "front of the camera");
+        return -1;
+    }
+    return 0;
+}
+
+/* Loads the texture file named by token t (relative to the scene file's
+ * directory) into the scene, or finds it there already; returns its index,
+ * or -1 with the fault recorded at t. */
+static int course_load_texture(CourseParser *P, const Record *rec, const Token *t, Scene *scene)
+{
+    char *path = lex_path(&P->lex, t);
+    Texture tex;
+    Error inner;
+    int index;
+
+    if (!path)
+        return -1;
+    for (size_t i = 0; i < scene->texture_count; i++) {
+        if (strcmp(scene->textures[i].path, path) == 0) {
+            free(path);
+            return (int)i;
+        }
+    }
+    if (texture_file_load(&tex, path, &inner) != 0) {
+        lex_fail_file(&P->lex, rec, t, "texture", &inner);
+        free(path);
+        return -1;
+    }
+    free(path);
+    index = scene_add_texture(scene, &tex);
+    if (index < 0)
+        course_fail_memory(P, rec, scene, index);
+    return index < 0 ? -1 : index;
+}
+
+/* mesh -> 'mesh:' path r g b reflection [transparency index] */
+int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    double v[6];
+    Material mat;
+    ObjMesh mesh;
+    Error inner;
+    char *path, q[64];
+    long added;
+    int n;
+
+    if (rec->count < 2) {
+        course_fail(P, &rec->line, rec->end_column,
+                   "expected the path of an OBJ file for the mesh (%s), found the end of the "
+                   "line",
+                   course_mesh_spec.syntax);
+        return -1;
+    }
+    n = lex_numbers(&P->lex, rec, 2, &course_mesh_spec, v);
+    if (n < 0 || course_material(P, rec, &course_mesh_spec, 2, 0, v, n, &mat) != 0)
+        return -1;
+    path = lex_path(&P->lex, &rec->tok[1]);
+    if (!path)
+        return -1;
+    if (obj_load(path, scene_obj_budget(scene), &mesh, &inner) != 0) {
+        lex_fail_file(&P->lex, rec, &rec->tok[1], "mesh", &inner);
+        free(path);
+        return -1;
+    }
+    free(path);
+    added = mesh_add(scene, &mesh, &mat);
+    obj_free(&mesh);
+    if (added < 0)
+        return course_fail_memory(P, rec, scene, added);
+    if (added == 0) {
+        course_fail(P, &rec->line, rec->tok[1].column,
+                   "the mesh %s has no faces with an area: nothing to draw",
+                   lex_quote(q, sizeof q, &rec->tok[1]));
+        return -1;
+    }
+    course_note_object(P, COURSE_SHAPE_MESH, scene->triangle_count - (size_t)added);
+    return 0;
+}
+
+/* texture -> 'texture:' path [nearest | bilinear] number*, for the object
+ * just before: none for a sphere, [tile_size] for a plane, [u0 v0 u1 v1 u2
+ * v2] for a triangle. */
+int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    static const RecordSpec *const specs[] = {&course_sphere_texture_spec, &course_plane_texture_spec,
+                                              &course_triangle_texture_spec, &course_mesh_texture_spec};
+    const RecordSpec *spec;
+    int first = 2, n, index;
+    double v[6];
+    TextureFilter filter = TEXTURE_BILINEAR;
+    Material *m;
+
+    if (!P->has_last) {
+        course_fail(P, &rec->line, rec->tok[0].column,
+                   "a texture: record must follow the object it covers, and no object comes "
+                   "before it");
+        return -1;
+    }
+    spec = specs[P->last_kind];
+    m = course_last_material(P, scene);
+    if (m->texture >= 0) {
+        course_fail(P, &rec->line, rec->tok[0].column,
+                   "%s is already set: an object takes one texture: record", spec->what);
+        return -1;
+    }
+    if (rec->count < 2) {
+        course_fail(P, &rec->line, rec->end_column,
+                   "expected the path of a PPM file for %s (%s), found the end of the line",
+                   spec->what, spec->syntax);
+        return -1;
+    }
+    if (rec->count > 2 && lex_token_is(&rec->tok[2], "nearest")) {
+        filter = TEXTURE_NEAREST;
+        first = 3;
+    } else if (rec->count > 2 && lex_token_is(&rec->tok[2], "bilinear")) {
+        first = 3;
+    } else if (rec->count > 2 &&
+               number_parse(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
+        char q[64];
+        course_fail(P, &rec->line, rec->tok[2].column,
+                   "unknown texture filter %s (expected 'nearest' or 'bilinear')",
+                   lex_quote(q, sizeof q, &rec->tok[2]));
+        return -1;
+    }
+    if (spec->optional == 0 && rec->count > first)
+        return lex_fail_extra(&P->lex, rec, first, spec->what);
+    n = lex_numbers(&P->lex, rec, first, spec, v);
+    if (n < 0)
+        return -1;
+    index = course_load_texture(P, rec, &rec->tok[1], scene);
+    if (index < 0)
+        return -1;
+    m = course_last_material(P, scene);
+    m->texture = index;
+    m->filter = filter;
+    if (P->last_kind == COURSE_SHAPE_PLANE && n == 1)
+        scene->planes[P->last_index].tile = v[0];
+    if (P->last_kind == COURSE_SHAPE_TRIANGLE && n == 6) {
+        TriangleShading sh = triangle_plain_shading(&scene->triangles[P->last_index]);
+        int rc;
+        for (int k = 0; k < 3; k++) {
+            sh.uv[k][0] = v[2 * k];
+            sh.uv[k][1] = v[2 * k + 1];
+        }
+        rc = scene_shade_triangle(scene, P->last_index, &sh);
+        if (rc != 0)
+            return course_fail_memory(P, rec, scene, rc);
+    }
+    return 0;
+}
+
