@@ -1,0 +1,247 @@
+/* bvh_sah.c: the hierarchy's binary tree, split by the surface area
+ * heuristic on binned centroids (see bvh_build.h). */
+#include "bvh_build.h"
+
+#include <stddef.h>
+
+enum {
+    BVH_BINS = 16,       /* centroid bins per split */
+    BVH_ALL_AXES = 4096  /* at most this many primitives: SAH on every axis */
+};
+
+/* Orders prims[lo..hi) so that the k-th smallest centroid on axis is at k,
+ * smaller ones before it and larger after (quickselect; each pass splits the
+ * range three ways about the middle one's centroid, so the part equal to it
+ * is never empty and every pass shrinks the range). */
+static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
+{
+    while (hi - lo > 1) {
+        real pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
+        size_t less = lo, i = lo, more = hi; /* [lo, less) < pivot, [more, hi) > */
+        while (i < more) {
+            real c = bvh_centroid(&prims[i], axis);
+            BuildPrim tmp = prims[i];
+            if (c < pivot) {
+                prims[i++] = prims[less];
+                prims[less++] = tmp;
+            } else if (c > pivot) {
+                prims[i] = prims[--more];
+                prims[more] = tmp;
+            } else {
+                i++;
+            }
+        }
+        if (k < less)
+            hi = less;
+        else if (k >= more)
+            lo = more;
+        else
+            return;
+    }
+}
+
+/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
+static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale)
+{
+    int b = (int)((bvh_centroid(p, axis) - lo) * scale);
+
+    return b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
+}
+
+/* The surface area heuristic's best split of prims[start..end) into the
+ * centroid bins of one axis: the cost (traversal 1, intersection 1 a
+ * primitive, areas relative to the box of them all), and the first bin of
+ * the right part (-1 when no split leaves both parts non-empty). */
+static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int axis, real lo,
+                         real scale, int *split)
+{
+    size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
+    Box bin[BVH_BINS], acc;
+    real left_area[BVH_BINS], best = INFINITY, per_area;
+
+    *split = -1;
+    for (int b = 0; b < BVH_BINS; b++)
+        box_empty(&bin[b]);
+    for (size_t i = start; i < end; i++) {
+        int b = bvh_bin(&prims[i], axis, lo, scale);
+        count[b]++;
+        box_grow(&bin[b], &prims[i].box);
+    }
+    /* An empty bin changes neither box nor count: it takes its left
+     * neighbour's area, and a split at it costs exactly what the split at
+     * the next full bin costs, which the sweep below meets first and keeps
+     * on a tie; so it is passed over. */
+    box_empty(&acc);
+    for (int b = 0, total = 0; b < BVH_BINS; b++) {
+        if (count[b] == 0) {
+            left_area[b] = b > 0 ? left_area[b - 1] : 0;
+        } else {
+            box_grow(&acc, &bin[b]);
+            left_area[b] = box_half_area(&acc);
+        }
+        total += (int)count[b];
+        left_n[b] = (size_t)total;
+    }
+    per_area = 1 / box_half_area(&acc); /* acc holds every bin */
+    box_empty(&acc);
+    for (int b = BVH_BINS - 1; b > 0; b--) {
+        real cost;
+        if (count[b] == 0)
+            continue;
+        box_grow(&acc, &bin[b]);
+        if (left_n[b - 1] == 0 || left_n[b - 1] == n)
+            continue;
+        cost = 1 + (left_area[b - 1] * (real)left_n[b - 1] +
+                    box_half_area(&acc) * (real)(n - left_n[b - 1])) *
+                       per_area;
+        if (cost < best) {
+            best = cost;
+            *split = b;
+        }
+    }
+    return best;
+}
+
+/* Chooses how to split prims[start..end), of centroids' box cb (count >
+ * BVH_LEAF_MAX or SAH says so); returns the index of the first primitive
+ * of the right part, or start when it is better left a leaf. */
+static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *cb, int depth)
+{
+    size_t n = end - start, mid;
+    real extent[3], scale[3], best = INFINITY;
+    int best_split = -1, axis;
+
+    for (int a = 0; a < 3; a++) {
+        extent[a] = cb->hi[a] - cb->lo[a];
+        scale[a] = BVH_BINS / extent[a];
+    }
+    axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
+    if (!(extent[axis] > 0)) {
+        /* All centroids at one point: split by count if the leaf is too big. */
+        if (n <= BVH_LEAF_MAX)
+            return start;
+        return start + n / 2;
+    }
+    if (depth >= BVH_SAH_DEPTH) {
+        mid = start + n / 2;
+        bvh_select(prims, start, end, mid, axis);
+        return mid;
+    }
+    /* Every axis with some extent: the cheapest split wins. Above
+     * BVH_ALL_AXES primitives only the longest is binned: near the root,
+     * where binning costs the most, it is nearly always the best. */
+    for (int a = 0; a < 3; a++) {
+        int split;
+        real cost;
+        if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != axis))
+            continue;
+        cost = bvh_sah_axis(prims, start, end, a, cb->lo[a], scale[a], &split);
+        if (split >= 0 && cost < best) {
+            best = cost;
+            best_split = split;
+            axis = a;
+        }
+    }
+    if (best_split < 0 || (best >= (real)n && n <= BVH_LEAF_MAX))
+        return n <= BVH_LEAF_MAX ? start : start + n / 2;
+    /* Partition by bin. */
+    {
+        size_t i = start, j = end;
+        while (i < j) {
+            if (bvh_bin(&prims[i], axis, cb->lo[axis], scale[axis]) < best_split) {
+                i++;
+            } else {
+                BuildPrim tmp = prims[i];
+                prims[i] = prims[--j];
+                prims[j] = tmp;
+            }
+        }
+        mid = i;
+    }
+    if (mid == start || mid == end) { /* cannot happen, but never loop */
+        mid = start + n / 2;
+        bvh_select(prims, start, end, mid, axis);
+    }
+    return mid;
+}
+
+/* Builds the binary subtree of task into nodes (see BuildTask), reordering
+ * prims[task.start..task.end) by leaf; in an OpenMP parallel region, right
+ * subtrees of BVH_TASK_MIN primitives or more become tasks. */
+void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root)
+{
+    /* Each step pops one task and pushes at most two, one of them deeper. */
+    BuildTask stack[2 * (BVH_DEPTH_MAX + 1)];
+    int top = 0;
+
+    stack[top++] = root;
+    while (top > 0) {
+        BuildTask task = stack[--top], left, right;
+        BuildNode *node = &nodes[task.node];
+        size_t split;
+        Box cb; /* the box of the primitives' centroids */
+
+        box_empty(&cb);
+        for (size_t i = task.start; i < task.end; i++) {
+            real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+                         bvh_centroid(&prims[i], 2)};
+            box_grow_point(&cb, c);
+        }
+        node->size = (uint32_t)(task.end - task.start);
+        split = task.end - task.start <= 1
+                    ? task.start
+                    : bvh_split(prims, task.start, task.end, &cb, task.depth);
+        if (split == task.start) {
+            node->index = (uint32_t)task.start;
+            node->count = (uint32_t)(task.end - task.start);
+            continue;
+        }
+        left = (BuildTask){task.start, split, task.depth + 1, task.node + 1};
+        right = (BuildTask){split, task.end, task.depth + 1, task.node + 2 * (split - task.start)};
+        node->count = 0;
+        node->index = (uint32_t)right.node;
+        if (task.end - split >= BVH_TASK_MIN) {
+#ifdef _OPENMP
+#pragma omp task firstprivate(right)
+#endif
+            bvh_build_subtree(prims, nodes, right);
+        } else {
+            stack[top++] = right;
+        }
+        stack[top++] = left;
+    }
+}
+
+/* Moves the binary tree's nodes to the front of nodes in depth-first order
+ * (each left child still right after its parent), closing the gaps the
+ * fixed offsets leave; returns how many there are. In place: the walk meets
+ * the nodes in increasing order, so a node only moves down, onto a slot
+ * already moved or never used. */
+size_t bvh_compact(BuildNode *nodes)
+{
+    struct {
+        size_t node;   /* where it is */
+        size_t parent; /* where its parent went, or SIZE_MAX for a left child
+                          or the root */
+    } stack[2 * (BVH_DEPTH_MAX + 1)];
+    int top = 0;
+    size_t count = 0;
+
+    stack[top].node = 0;
+    stack[top++].parent = SIZE_MAX;
+    while (top > 0) {
+        size_t old = stack[--top].node, parent = stack[top].parent, at = count++;
+
+        nodes[at] = nodes[old];
+        if (parent != SIZE_MAX)
+            nodes[parent].index = (uint32_t)at;
+        if (nodes[at].count == 0) {
+            stack[top].node = nodes[at].index;
+            stack[top++].parent = at;
+            stack[top].node = old + 1;
+            stack[top++].parent = SIZE_MAX;
+        }
+    }
+    return count;
+}
+
