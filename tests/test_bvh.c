@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "test.h"
 #include "render/trace.h"
+#include "render/visibility.h"
 
 /* Adds n random spheres and n random triangles (some transparent, some
  * exact duplicates, for ties) around the origin at scale s, and a plane. */
@@ -283,19 +284,19 @@ static int queries_differ(Scene *sc, struct Bvh *accel, Ray ray, Ray seg, int *h
     double ta, tb, va, vb;
 
     sc->accel = NULL; /* every object, one by one */
-    fa = trace_nearest(sc, &ray, INFINITY, &a);
-    oa = trace_occluded(sc, &seg, 1);
-    ta = trace_transmittance(sc, &seg, 1);
-    ua = trace_occluded(sc, &seg, INFINITY);
-    va = trace_transmittance(sc, &seg, INFINITY);
+    fa = visibility_nearest(sc, &ray, INFINITY, &a);
+    oa = visibility_occluded(sc, &seg, 1);
+    ta = visibility_transmittance(sc, &seg, 1);
+    ua = visibility_occluded(sc, &seg, INFINITY);
+    va = visibility_transmittance(sc, &seg, INFINITY);
     sc->accel = accel;
     for (int k = avx2; k >= 0; k--) {
         accel->avx2 = k;
-        fb = trace_nearest(sc, &ray, INFINITY, &b);
-        ob = trace_occluded(sc, &seg, 1);
-        tb = trace_transmittance(sc, &seg, 1);
-        ub = trace_occluded(sc, &seg, INFINITY);
-        vb = trace_transmittance(sc, &seg, INFINITY);
+        fb = visibility_nearest(sc, &ray, INFINITY, &b);
+        ob = visibility_occluded(sc, &seg, 1);
+        tb = visibility_transmittance(sc, &seg, 1);
+        ub = visibility_occluded(sc, &seg, INFINITY);
+        vb = visibility_transmittance(sc, &seg, INFINITY);
         differ |= fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
                   oa != ob || memcmp(&ta, &tb, sizeof ta) != 0 || ua != ub ||
                   memcmp(&va, &vb, sizeof va) != 0;

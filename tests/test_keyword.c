@@ -157,7 +157,9 @@ static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int depth)
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0, 0, 0, 0, 0, 0};
 
-    return trace_ray(sc, &r, 0, depth, &counts);
+    Tracer t = {sc, depth, NULL, &counts};
+
+    return trace_ray(&t, &r);
 }
 
 static void keyword_blinn_phong_has_its_three_terms(void)

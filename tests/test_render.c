@@ -82,7 +82,8 @@ static void check_pixels_are_their_rays(const char *text)
                           c->top_left.z + fx * c->u.z + fy * c->v.z);
             Ray ray = {c->eye, vec3_normalize(vec3_sub(p, c->eye))};
             Ray got = camera_ray(c, i + 0.5, j + 0.5);
-            Colour want = trace_ray(&sc, &ray, 0, opts.max_depth, &counts);
+            Tracer t = {&sc, opts.max_depth, NULL, &counts};
+            Colour want = trace_ray(&t, &ray);
             const unsigned char *px = img.rgb + 3 * ((size_t)j * (size_t)img.width + (size_t)i);
             bad += memcmp(&got.dir, &ray.dir, sizeof ray.dir) != 0 ||
                    px[0] != colour_quantise(want.r) || px[1] != colour_quantise(want.g) ||
@@ -497,23 +498,25 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
         for (int i = 0; i < 4000; i++) {
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
-            TraceCut cut;
-            Colour full = trace_ray(&sc, &ray, 0, 30, &all), part;
+            Cut cut;
+            Tracer every = {&sc, 30, NULL, &all}, cutting = {&sc, 30, &cut, &left};
+            Tracer again = {&sc, 30, &cut, &later};
+            Colour full = trace_ray(&every, &ray), part;
             double eta;
 
-            trace_cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
-            part = trace_ray_cut(&sc, &ray, 30, &cut, &left);
-            eta = 1e-9 * trace_cut_bound(&cut, 30);
+            cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
+            part = trace_ray(&cutting, &ray);
+            eta = 1e-9 * cut_bound(&cut, 30);
             cuts += cut.deferred_count > 0;
             bad += !(full.r - part.r >= -eta && full.r - part.r <= cut.skipped + eta);
             bad += !(full.g - part.g >= -eta && full.g - part.g <= cut.skipped + eta);
             bad += !(full.b - part.b >= -eta && full.b - part.b <= cut.skipped + eta);
             cut.cutoff = 0; /* the kept rays, traced in full */
             for (size_t k = 0, kept = cut.deferred_count; k < kept; k++)
-                part = colour_add(part, trace_deferred(&sc, cut.deferred[k], 30, &cut, &later));
+                part = colour_add(part, trace_deferred(&again, cut.deferred[k]));
             lost += !(fabs(full.r - part.r) <= eta && fabs(full.g - part.g) <= eta &&
                       fabs(full.b - part.b) <= eta);
-            trace_cut_free(&cut);
+            cut_free(&cut);
         }
         scene_free(&sc);
     }
@@ -545,13 +548,14 @@ static void render_cutoff_leaves_out_shadow_rays(void)
     for (int i = 0; i < 100; i++) {
         Ray ray = {vec3(0, 0, -5),
                    vec3_normalize(vec3(rng_range(-0.2, 0.2), rng_range(-0.2, 0.2), 1))};
-        TraceCut cut;
-        Colour full = trace_ray(&sc, &ray, 0, 10, &all), part;
+        Cut cut;
+        Tracer every = {&sc, 10, NULL, &all}, cutting = {&sc, 10, &cut, &left};
+        Colour full = trace_ray(&every, &ray), part;
 
-        trace_cut_init(&cut, &sc, 5);
-        part = trace_ray_cut(&sc, &ray, 10, &cut, &left);
+        cut_init(&cut, &sc, 5);
+        part = trace_ray(&cutting, &ray);
         bad += !(full.r - part.r >= 0 && full.r - part.r <= cut.skipped);
-        trace_cut_free(&cut);
+        cut_free(&cut);
     }
     scene_free(&sc);
     CHECK_INT(0, bad);

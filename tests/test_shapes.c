@@ -20,7 +20,7 @@ static void plane_hits_both_sides_and_misses_parallel(void)
 {
     Plane pl;
     Ray down = {{1, 5, 2}, {0, -1, 0}}, up = {{1, -3, 2}, {0, 0.5, 0}}, flat = {{0, 1, 0}, {1, 0, 0}};
-    double t;
+    double t = 0;
 
     CHECK_INT(0, plane_make(&pl, vec3(0, 0, 0), vec3(0, 2, 0), 1, white));
     CHECK_NEAR(1, vec3_length(pl.normal), 1e-15);
@@ -66,7 +66,7 @@ static void triangle_hit_gives_point_and_barycentric_uv(void)
 {
     Triangle tri = triangle_of(vec3(0, 0, 5), vec3(1, 0, 5), vec3(0, 1, 5));
     Ray r = {{0, 0, 0}, {0.25, 0.5, 5}};
-    double t, uv[2];
+    double t = 0, uv[2];
     SurfacePoint sp;
 
     CHECK(triangle_intersect(&tri, &r, 0, INFINITY, &t));

@@ -5,6 +5,7 @@
 #include "shading.h"
 #include "test.h"
 #include "render/trace.h"
+#include "render/visibility.h"
 
 #define PI 3.14159265358979323846
 
@@ -38,7 +39,9 @@ static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int max_depth)
 {
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0, 0, 0, 0, 0, 0};
-    return trace_ray(sc, &r, 0, max_depth, &counts);
+    Tracer t = {sc, max_depth, NULL, &counts};
+
+    return trace_ray(&t, &r);
 }
 
 #define CHECK_COLOUR(r_, g_, b_, c, tol)                                                      \
@@ -169,13 +172,13 @@ static void trace_nearest_and_occluded(void)
 
     add_sphere(&sc, vec3(0, 0, 9), 1, colour(1, 1, 1), 0);
     add_sphere(&sc, vec3(0, 0, 5), 1, colour(1, 1, 1), 0);
-    CHECK(trace_nearest(&sc, &r, INFINITY, &hit));
+    CHECK(visibility_nearest(&sc, &r, INFINITY, &hit));
     CHECK_NEAR(4, hit.t, 0);
     CHECK(hit.kind == SHAPE_SPHERE && hit.index == 1);
-    CHECK(!trace_nearest(&sc, &r, 4, &hit));
-    CHECK(!trace_occluded(&sc, &seg, 1)); /* ends exactly on the surface: not crossed */
+    CHECK(!visibility_nearest(&sc, &r, 4, &hit));
+    CHECK(!visibility_occluded(&sc, &seg, 1)); /* ends exactly on the surface: not crossed */
     seg.dir.z = 4.5;
-    CHECK(trace_occluded(&sc, &seg, 1));
+    CHECK(visibility_occluded(&sc, &seg, 1));
     scene_free(&sc);
 }
 
@@ -352,14 +355,14 @@ static void trace_exact_tie_across_kinds_keeps_the_first_listed(void)
     CHECK_INT(0, plane_make(&pl, vec3(0, 0, -4), vec3(0, 0, 1), 1, material_plain(colour(0, 255, 0), 0)));
     CHECK_INT(0, scene_add_plane(&sc, &pl));
     add_sphere(&sc, vec3(0, 0, -5), 1, colour(255, 0, 0), 0);
-    CHECK(trace_nearest(&sc, &r, INFINITY, &hit));
+    CHECK(visibility_nearest(&sc, &r, INFINITY, &hit));
     CHECK_INT(SHAPE_PLANE, hit.kind);
     CHECK_NEAR(4, hit.t, 0);
     scene_free(&sc);
     sc = scene_lit_from(vec3(0, 0, 10));
     add_sphere(&sc, vec3(0, 0, -5), 1, colour(255, 0, 0), 0);
     CHECK_INT(0, scene_add_plane(&sc, &pl));
-    CHECK(trace_nearest(&sc, &r, INFINITY, &hit));
+    CHECK(visibility_nearest(&sc, &r, INFINITY, &hit));
     CHECK_INT(SHAPE_SPHERE, hit.kind);
     scene_free(&sc);
 }

@@ -9,6 +9,8 @@
 #ifndef RAYTRACE_COLOUR_H
 #define RAYTRACE_COLOUR_H
 
+#include <math.h>
+
 typedef struct {
     double r, g, b; /* linear intensity, 0..255 for displayable values */
 } Colour;
@@ -30,6 +32,12 @@ static inline Colour colour_add(Colour a, Colour b)
 static inline Colour colour_scale(Colour a, double s)
 {
     return colour(s * a.r, s * a.g, s * a.b);
+}
+
+/* Returns the largest channel of c. */
+static inline double colour_max(Colour c)
+{
+    return fmax(c.r, fmax(c.g, c.b));
 }
 
 /* Clamps one channel to [0, 255] and rounds it half up: floor(x + 0.5);

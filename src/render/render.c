@@ -5,6 +5,7 @@
 
 #include "scene/camera.h"
 #include "render/sampler.h"
+#include "render/cut.h"
 #include "render/trace.h"
 
 #ifdef _OPENMP
@@ -27,21 +28,19 @@ typedef struct {
 } RenderRow;
 
 /* Returns the mean colour of the grid's samples of pixel (x, y) of row,
- * leaving out what cut allows (cut NULL: nothing). One sample is the
+ * traced by t (leaving out what its cut-off allows). One sample is the
  * pixel's centre through the lens's centre. */
-RENDER_INLINE Colour render_samples(const Scene *scene, const RenderOptions *opts,
-                                    const SamplerGrid *g, const RenderRow *row, int x, int y,
-                                    TraceCut *cut, RayCounts *counts)
+RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const RenderRow *row,
+                                    int x, int y)
 {
-    const Camera *cam = &scene->camera;
+    const Camera *cam = &t->scene->camera;
     Colour sum = colour(0, 0, 0);
 
-    counts->primary += g->n;
+    t->counts->primary += g->n;
     if (g->n == 1) {
         Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
                                : camera_ray(cam, x + 0.5, y + 0.5);
-        return cut ? trace_ray_cut(scene, &ray, opts->max_depth, cut, counts)
-                   : trace_ray(scene, &ray, 0, opts->max_depth, counts);
+        return trace_ray(t, &ray);
     }
     for (unsigned k = 0; k < g->n; k++) {
         double p[2], l[2], disk[2] = {0, 0};
@@ -53,8 +52,7 @@ RENDER_INLINE Colour render_samples(const Scene *scene, const RenderOptions *opt
             sampler_disk(l, disk);
         }
         ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
-        sum = colour_add(sum, cut ? trace_ray_cut(scene, &ray, opts->max_depth, cut, counts)
-                                  : trace_ray(scene, &ray, 0, opts->max_depth, counts));
+        sum = colour_add(sum, trace_ray(t, &ray));
     }
     return colour(sum.r / g->n, sum.g / g->n, sum.b / g->n);
 }
@@ -74,8 +72,8 @@ enum { RENDER_REFINE = 16 };
 
 /*
  * Returns pixel (x, y), whose bytes are those of a render without the
- * cut-off whatever opts->cutoff allows; cut is the thread's, set up by
- * trace_cut_init() (NULL: no cut-off). The rays the cut-off leaves out
+ * cut-off whatever opts->cutoff allows; t->cut is the thread's, set up by
+ * cut_init() (NULL: no cut-off). The rays the cut-off leaves out
  * could have added at most cut->skipped / n to each channel of the mean
  * (each is weight x colour, the colour within the bound trace_cut_init()
  * proves, or weight x E x lit for a shadow ray); leaving them out, or
@@ -89,45 +87,46 @@ enum { RENDER_REFINE = 16 };
  * left-out rays hold the same argument, and in the end the pixel is traced
  * with every ray, which is the uncut render itself.
  */
-RENDER_INLINE Colour render_pixel(const Scene *scene, const RenderOptions *opts,
-                                  const SamplerGrid *g, const RenderRow *row, int x, int y,
-                                  TraceCut *cut, RayCounts *counts)
+RENDER_INLINE Colour render_pixel(const Tracer *t, const RenderOptions *opts,
+                                  const SamplerGrid *g, const RenderRow *row, int x, int y)
 {
+    Cut *cut = t->cut;
     Colour c;
     double level = opts->cutoff, eta; /* this pass's cut-off */
     size_t done = 0;                  /* deferred rays traced so far */
 
     if (!cut)
-        return render_samples(scene, opts, g, row, x, y, NULL, counts);
+        return render_samples(t, g, row, x, y);
     cut->cutoff = level;
     cut->skipped = 0;
     cut->deferred_count = 0;
-    c = render_samples(scene, opts, g, row, x, y, cut, counts);
+    c = render_samples(t, g, row, x, y);
     if (cut->deferred_count == 0) /* nothing left out */
         return c;
-    eta = 1e-9 * trace_cut_bound(cut, opts->max_depth);
+    eta = 1e-9 * cut_bound(cut, opts->max_depth);
     for (;;) {
         double slack = cut->skipped / g->n;
         size_t end = cut->deferred_count;
 
         if (render_same_byte(c.r, slack, eta) && render_same_byte(c.g, slack, eta) &&
             render_same_byte(c.b, slack, eta)) {
-            counts->cut += end - done; /* left out for good */
+            t->counts->cut += end - done; /* left out for good */
             return c;
         }
         if (done == 0) /* the first pass */
-            counts->refined++;
+            t->counts->refined++;
         level /= RENDER_REFINE;
-        if (level < RENDER_CUT_FLOOR)
-            return render_samples(scene, opts, g, row, x, y, NULL, counts);
+        if (level < RENDER_CUT_FLOOR) {
+            Tracer every = *t;
+            every.cut = NULL;
+            return render_samples(&every, g, row, x, y);
+        }
         /* What this pass left out, traced; what that leaves out is the
          * next pass's. */
         cut->cutoff = level;
         cut->skipped = 0;
         for (; done < end; done++)
-            c = colour_add(c, colour_scale(trace_deferred(scene, cut->deferred[done],
-                                                          opts->max_depth, cut, counts),
-                                           1.0 / g->n));
+            c = colour_add(c, colour_scale(trace_deferred(t, cut->deferred[done]), 1.0 / g->n));
     }
 }
 
@@ -144,23 +143,22 @@ static int render_tiles_over(int n)
     return (n + RENDER_TILE - 1) / RENDER_TILE;
 }
 
-/* Renders tile t of the image (numbered left to right, then top to
- * bottom) with the pixels' sample grid g (columns and cut as in
- * render_samples() and render_pixel()). */
-static void render_tile(const Scene *scene, const RenderOptions *opts, const SamplerGrid *g,
-                        Image *img, int t, const CameraStep *columns, TraceCut *cut,
-                        RayCounts *counts)
+/* Renders tile k of the image (numbered left to right, then top to
+ * bottom) with tracer t and the pixels' sample grid g (columns as in
+ * RenderRow). */
+static void render_tile(const Tracer *t, const RenderOptions *opts, const SamplerGrid *g,
+                        Image *img, int k, const CameraStep *columns)
 {
     int across = render_tiles_over(img->width);
-    int x0 = t % across * RENDER_TILE, y0 = t / across * RENDER_TILE;
+    int x0 = k % across * RENDER_TILE, y0 = k / across * RENDER_TILE;
     int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
 
     for (int y = y0; y < y1; y++) {
-        RenderRow row = {columns, camera_row(&scene->camera, y + 0.5)};
+        RenderRow row = {columns, camera_row(&t->scene->camera, y + 0.5)};
 
         for (int x = x0; x < x1; x++)
-            image_set(img, x, y, render_pixel(scene, opts, g, &row, x, y, cut, counts));
+            image_set(img, x, y, render_pixel(t, opts, g, &row, x, y));
     }
 }
 
@@ -179,7 +177,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 {
     int done = 0, used = 1;
     int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
-    TraceCut proto = {0};
+    Cut proto = {0};
     /* The linear floats of PFM would show what the cut-off leaves out. */
     int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
@@ -188,7 +186,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     CameraStep *columns = g.n == 1 ? malloc((size_t)img->width * sizeof *columns) : NULL;
 
     if (cutting)
-        trace_cut_init(&proto, scene, opts->cutoff);
+        cut_init(&proto, scene, opts->cutoff);
     for (int x = 0; columns && x < img->width; x++)
         columns[x] = camera_column(&scene->camera, x + 0.5);
 
@@ -197,7 +195,8 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #endif
     {
         RayCounts mine = {0, 0, 0, 0, 0, 0};
-        TraceCut cut = proto; /* the thread's own: it keeps the rays left out */
+        Cut cut = proto; /* the thread's own: it keeps the rays left out */
+        Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine};
 
 #ifdef _OPENMP
 #pragma omp single
@@ -205,8 +204,8 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         /* Tiles are handed out one at a time: their costs differ widely. */
 #pragma omp for schedule(dynamic, 1)
 #endif
-        for (int t = 0; t < tiles; t++) {
-            render_tile(scene, opts, &g, img, t, columns, cutting ? &cut : NULL, &mine);
+        for (int k = 0; k < tiles; k++) {
+            render_tile(&t, opts, &g, img, k, columns);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)
@@ -221,7 +220,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
             render_add_counts(counts, &mine);
         }
         if (cutting)
-            trace_cut_free(&cut);
+            cut_free(&cut);
     }
     free(columns);
     return used;

@@ -81,7 +81,7 @@ static int obj_numbers(ObjReader *r, size_t *i, const char *what, int min, int m
 
     for (;;) {
         size_t e = obj_token(r, i);
-        double v;
+        double v = 0;
         if (e == *i)
             break;
         if (number_parse(r->line + *i, e - *i, &v) != NUMBER_OK)

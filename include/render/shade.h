@@ -1,0 +1,54 @@
+/*
+ * shade.h: what the point a ray hit looks like, and the light it receives
+ * directly: the course's rule and Blinn-Phong's (docs/scene-format.md).
+ *
+ * The course's local term at a point P of colour Ci (its material's, or its
+ * texture's at P) is
+ *     Ca * Ci / 255 + sum over lights of E * max(0, N . L) * Ci * Cs / 255
+ * channel by channel, with N the shading normal facing the viewer, L the
+ * unit vector from P to the light, Cs the light's colour, Ca the ambient
+ * colour (0 without an ambient: record) and E the share of the light that
+ * reaches P: the product of T over every surface crossing strictly between
+ * P and the light (1 with none, 0 when an opaque surface is crossed). The
+ * keyword format's Blinn-Phong term is
+ *     ka Ia Ci / 255 + sum over lights of E i (kd max(0, N . L) Ci Cs / 255
+ *                                              + ks max(0, N . H)^alpha Cs)
+ * with H the unit vector halfway between L and the direction to the
+ * viewer; its distant lights' shadow rays are unbounded. Each shadow ray is
+ * cast unless the tracer's cut-off allows leaving it out (cut.h).
+ */
+#ifndef RAYTRACE_SHADE_H
+#define RAYTRACE_SHADE_H
+
+#include "geometry/ray.h"
+#include "math/colour.h"
+#include "render/tracer.h"
+#include "render/visibility.h"
+
+/* What shading needs to know about the point a ray hit. */
+typedef struct {
+    SurfacePoint sp;          /* the point, its outward normal and error */
+    const Material *material; /* the object's material */
+    Colour colour;            /* Ci: the material's colour or its texture's */
+} Shade;
+
+/* Returns the shading record of hit, crossed by ray, in scene. */
+Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit);
+
+/* Returns the course's local term at sh, with n its surface normal and ns
+ * its shading normal, both facing the viewer; its shadow rays' light
+ * reaches the pixel with weight (for the cut-off). */
+Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double weight);
+
+/* Returns the Blinn-Phong local term of material pm at sh, seen from
+ * direction view (unit, towards the viewer); n, ns and weight as for
+ * shade_local(). */
+Colour shade_phong(const Tracer *t, const Shade *sh, const PhongMaterial *pm, Vec3 n, Vec3 ns,
+                   Vec3 view, double weight);
+
+/* Casts the shadow ray `shadow` up to tmax and returns the share E of the
+ * light that passes: 1 or 0 in opaque scenes, the product of the
+ * transparencies crossed in others. */
+double shade_light_share(const Tracer *t, const Ray *shadow, real tmax);
+
+#endif

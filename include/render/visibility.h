@@ -1,0 +1,43 @@
+/*
+ * visibility.h: which object a ray meets first, and how much of a light's
+ * light passes along a shadow ray.
+ *
+ * Through the bounding volume hierarchy when the scene has one (planes,
+ * unbounded, always one by one), else object by object: the answers are
+ * the same to the bit. Exact ties go to the object listed first in the
+ * scene file. Only reads the scene: safe on many threads at once.
+ */
+#ifndef RAYTRACE_VISIBILITY_H
+#define RAYTRACE_VISIBILITY_H
+
+#include <stddef.h>
+
+#include "geometry/ray.h"
+#include "scene/scene.h"
+
+/* The kinds of shape a ray can hit. */
+typedef enum { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_TRIANGLE } ShapeKind;
+
+typedef struct {
+    real t;         /* ray parameter of the crossing, > 0 */
+    ShapeKind kind; /* which array the object is in */
+    size_t index;   /* its index there */
+    unsigned order; /* its position among all objects */
+} Hit;
+
+/* Finds the object whose surface the ray crosses first at 0 < t < tmax, the
+ * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
+int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
+
+/* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
+ * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +
+ * ray->dir (ends excluded), tmax = INFINITY the whole ray. */
+int visibility_occluded(const Scene *scene, const Ray *ray, real tmax);
+
+/* Returns the share of light that passes along the ray from t = 0 to tmax:
+ * the product of the transparency T of every surface crossing there, in
+ * the order spheres, planes, triangles, each by index (so the same bits
+ * with or without the hierarchy). */
+double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax);
+
+#endif

@@ -1,0 +1,74 @@
+/* cut.c: the rays the cut-off leaves out, and its bounds (see cut.h). */
+#include "render/cut.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/* Keeps d in cut; returns 1, or 0 when there is no memory for it. */
+static int cut_keep(Cut *cut, const CutRay *d)
+{
+    if (cut->deferred_count == cut->deferred_capacity) {
+        size_t capacity = cut->deferred_capacity ? 2 * cut->deferred_capacity : 64;
+        CutRay *grown;
+
+        if (capacity > SIZE_MAX / sizeof *grown ||
+            !(grown = realloc(cut->deferred, capacity * sizeof *grown)))
+            return 0;
+        cut->deferred = grown;
+        cut->deferred_capacity = capacity;
+    }
+    cut->deferred[cut->deferred_count++] = *d;
+    return 1;
+}
+
+int cut_keep_out(Cut *cut, double most, const CutRay *d)
+{
+    if (!cut_keep(cut, d))
+        return 0;
+    cut->skipped += most;
+    return 1;
+}
+
+void cut_init(Cut *cut, const Scene *scene, double cutoff)
+{
+    double lights = 0, local = 0, bg = colour_max(scene->background);
+
+    cut->cutoff = cutoff;
+    cut->skipped = 0;
+    cut->deferred = NULL;
+    cut->deferred_count = 0;
+    cut->deferred_capacity = 0;
+    for (size_t i = 0; i < scene->light_count; i++)
+        lights += colour_max(scene->lights[i].colour) *
+                  (scene->phong_count > 0 ? scene->lights[i].intensity : 1);
+    if (scene->phong_count == 0) {
+        /* The course's rule: local <= Ca + sum of Cs (Ci <= 255, cos <= 1,
+         * E <= 1), and C = (1 - R - T) local + R Cr + T Ct is a mean of
+         * local, Cr and Ct (weights >= 0 adding to 1; on total internal
+         * reflection too), so no ray sees more than max(background,
+         * local) at any depth. */
+        local = (scene->has_ambient ? colour_max(scene->ambient) : 0) + lights;
+        cut->base = fmax(bg, local);
+        cut->per_level = 0;
+        return;
+    }
+    /* Blinn-Phong: local <= ka Ia + sum of i (kd + ks) Cs, and C = local +
+     * rho Cr + tau Ct with rho + tau <= 1: a ray that may still spawn k
+     * levels of secondary rays sees at most max(background, local) +
+     * k local. */
+    for (size_t i = 0; i < scene->phong_count; i++) {
+        const PhongMaterial *m = &scene->phong[i];
+        local = fmax(local, m->ka * colour_max(scene->ambient) + (m->kd + m->ks) * lights);
+    }
+    cut->base = fmax(bg, local);
+    cut->per_level = local;
+}
+
+void cut_free(Cut *cut)
+{
+    free(cut->deferred);
+    cut->deferred = NULL;
+    cut->deferred_count = 0;
+    cut->deferred_capacity = 0;
+}

@@ -1,0 +1,202 @@
+/* shade.c: surface records and direct light (see shade.h). */
+#include "render/shade.h"
+
+#include <math.h>
+
+#include "math/power.h"
+#include "render/cut.h"
+#include "scene/texture.h"
+
+Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
+{
+    Shade sh;
+    double uv[2] = {0, 0};
+    int clamp_v = 0;
+
+    switch (hit->kind) {
+    case SHAPE_SPHERE: {
+        const Sphere *s = &scene->spheres[hit->index];
+        sh.sp = sphere_surface_at(s, ray_at(ray, hit->t));
+        sh.material = &s->material;
+        if (s->material.texture >= 0)
+            sphere_uv(sh.sp.normal, uv);
+        clamp_v = 1;
+        break;
+    }
+    case SHAPE_PLANE: {
+        const Plane *pl = &scene->planes[hit->index];
+        sh.sp = plane_surface_at(pl, ray_at(ray, hit->t));
+        sh.material = &pl->material;
+        if (pl->material.texture >= 0)
+            plane_uv(pl, sh.sp.point, uv);
+        break;
+    }
+    default: {
+        const Triangle *tri = &scene->triangles[hit->index];
+        sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
+        sh.material = scene_material_of(scene, tri);
+        break;
+    }
+    }
+    if (sh.material->texture >= 0)
+        sh.colour = texture_lookup(&scene->textures[sh.material->texture], uv[0], uv[1],
+                                   sh.material->filter, clamp_v);
+    else
+        sh.colour = sh.material->colour;
+    return sh;
+}
+
+/* Returns the shadow ray from the shaded point sh (whose surface normal n
+ * faces the viewer) to the light in direction to_light (towards a point
+ * light: the vector to it; a distant light: its unit to_light), and in
+ * *tmax where it ends. */
+static inline Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, Vec3 to_light,
+                                   real *tmax)
+{
+    Ray shadow;
+
+    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
+    /* To a point light, the segment ends at the light (t = 1); towards a
+     * distant one, the ray is unbounded. */
+    shadow.dir = light->distant ? to_light : vec3_sub(light->position, shadow.origin);
+    *tmax = light->distant ? INFINITY : 1;
+    return shadow;
+}
+
+double shade_light_share(const Tracer *t, const Ray *shadow, real tmax)
+{
+    t->counts->shadow++;
+    if (t->scene->has_transparency)
+        return visibility_transmittance(t->scene, shadow, tmax);
+    return visibility_occluded(t->scene, shadow, tmax) ? 0 : 1;
+}
+
+/* Says whether cut allows leaving out the shadow ray from sh towards light
+ * (see shade_shadow_ray()), the light adding lit (a colour, E = 1) to a ray
+ * reached with weight: E is then taken as 0, and weight times lit's largest
+ * channel is what the pixel may lack (E is in [0, 1]). */
+static inline int shade_cut_shadow(Cut *cut, double weight, Colour lit, const Shade *sh, Vec3 n,
+                                   const Light *light, Vec3 to_light)
+{
+    CutRay d;
+    double most;
+
+    if (!cut)
+        return 0;
+    most = weight * colour_max(lit);
+    if (!(most < cut->cutoff))
+        return 0;
+    d.ray = shade_shadow_ray(sh, n, light, to_light, &d.tmax);
+    d.kind = RAY_SHADOW;
+    d.depth = 0;
+    d.weight = weight;
+    d.lit = lit;
+    return cut_leave_out(cut, most, &d);
+}
+
+/* Returns the share E of the light that reaches the shaded point sh from
+ * light (see shade_shadow_ray()), casting one shadow ray. */
+static inline double shade_visibility(const Tracer *t, const Shade *sh, Vec3 n,
+                                      const Light *light, Vec3 to_light)
+{
+    real tmax;
+    Ray shadow = shade_shadow_ray(sh, n, light, to_light, &tmax);
+
+    return shade_light_share(t, &shadow, tmax);
+}
+
+/* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the
+ * shaded point sh: ns is its shading normal and n its surface normal, both
+ * facing the viewer; 0 when cut allows leaving out its shadow ray for a
+ * term that reaches the pixel with weight. */
+static inline Colour shade_direct(const Tracer *t, const Light *light, const Shade *sh, Vec3 n,
+                                  Vec3 ns, double weight)
+{
+    Vec3 to_light = vec3_sub(light->position, sh->sp.point);
+    double cos_a = vec3_dot(ns, vec3_normalize(to_light)), e;
+    Colour ci = sh->colour, lit;
+
+    /* Facing away from the light (or the light on the point: NaN) means no
+     * light, whatever E is: no shadow ray needed. */
+    if (!(cos_a > 0))
+        return colour(0, 0, 0);
+    lit = colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
+                 cos_a * (ci.b * light->colour.b / 255));
+    if (shade_cut_shadow(t->cut, weight, lit, sh, n, light, to_light))
+        return colour(0, 0, 0);
+    e = shade_visibility(t, sh, n, light, to_light);
+    if (!(e > 0))
+        return colour(0, 0, 0);
+    if (e != 1)
+        return colour((cos_a * e) * (ci.r * light->colour.r / 255),
+                      (cos_a * e) * (ci.g * light->colour.g / 255),
+                      (cos_a * e) * (ci.b * light->colour.b / 255));
+    return lit;
+}
+
+/* Returns what a light of colour Cs adds to a point of colour ci for
+ * material pm per unit of E i: kd cos_a Ci Cs / 255 + ks max(0, N . H)^alpha
+ * Cs, with ns the shading normal, l and view unit vectors towards the light
+ * and the viewer. */
+static inline Colour shade_phong_light(const PhongMaterial *pm, Colour ci, Colour cs, double cos_a,
+                                       Vec3 ns, Vec3 l, Vec3 view)
+{
+    double nh = vec3_dot(ns, vec3_normalize(vec3_add(l, view)));
+    double spec = nh > 0 ? pm->ks * power(nh < 1 ? nh : 1, pm->shininess) : 0;
+
+    return colour(pm->kd * cos_a * (ci.r * cs.r / 255) + spec * cs.r,
+                  pm->kd * cos_a * (ci.g * cs.g / 255) + spec * cs.g,
+                  pm->kd * cos_a * (ci.b * cs.b / 255) + spec * cs.b);
+}
+
+Colour shade_phong(const Tracer *t, const Shade *sh, const PhongMaterial *pm, Vec3 n, Vec3 ns,
+                   Vec3 view, double weight)
+{
+    const Scene *scene = t->scene;
+    Colour ci = sh->colour, c;
+
+    c = colour(pm->ka * (scene->ambient.r * ci.r / 255), pm->ka * (scene->ambient.g * ci.g / 255),
+               pm->ka * (scene->ambient.b * ci.b / 255));
+    for (size_t i = 0; i < scene->light_count; i++) {
+        const Light *light = &scene->lights[i];
+        Vec3 to_light = light->distant ? light->to_light
+                                       : vec3_sub(light->position, sh->sp.point);
+        Vec3 l = light->distant ? to_light : vec3_normalize(to_light);
+        double cos_a = vec3_dot(ns, l), e;
+        Colour lit;
+        int known = 0;
+
+        if (!(cos_a > 0))
+            continue;
+        if (t->cut) {
+            lit = shade_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
+            known = 1;
+            if (shade_cut_shadow(t->cut, weight, colour_scale(lit, light->intensity), sh, n, light,
+                                 to_light))
+                continue;
+        }
+        e = shade_visibility(t, sh, n, light, to_light) * light->intensity;
+        if (!(e > 0))
+            continue;
+        if (!known)
+            lit = shade_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
+        c = colour_add(c, colour_scale(lit, e));
+    }
+    return c;
+}
+
+Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double weight)
+{
+    const Scene *scene = t->scene;
+    Colour c = shade_direct(t, &scene->lights[0], sh, n, ns, weight);
+
+    for (size_t i = 1; i < scene->light_count; i++)
+        c = colour_add(c, shade_direct(t, &scene->lights[i], sh, n, ns, weight));
+    if (scene->has_ambient)
+        c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
+                              scene->ambient.g * sh->colour.g / 255,
+                              scene->ambient.b * sh->colour.b / 255),
+                       c);
+    return c;
+}
+
