@@ -24,8 +24,9 @@ typedef struct {
     int samples;             /* samples per pixel, 1..SAMPLER_MAX */
     double cutoff;           /* leave out secondary and shadow rays that
                                 could bring less than this many levels
-                                (trace.h); the bytes stay those of an uncut
-                                render (PFM: no cut-off); 0 for none */
+                                (cut.h); the bytes stay those of an uncut
+                                render, but not the colours before they are
+                                quantised (so 0, none, for PFM) */
     int threads;             /* worker threads, >= 1; 1 without OpenMP */
     RenderProgress progress; /* called after each tile, or NULL */
     void *progress_ctx;      /* passed to progress */

@@ -202,6 +202,12 @@ size_t scene_obj_budget(const Scene *scene);
  * 0 once it is used up). */
 size_t scene_memory_left(const Scene *scene);
 
+/* Sets bytes of the memory limit aside for what the scene's render needs
+ * besides the scene (its image): what is added later, and the hierarchy,
+ * must fit in what is left. Returns 0, or SCENE_OVER_LIMIT (nothing set
+ * aside) when the scene already leaves less than that. */
+int scene_set_aside(Scene *scene, size_t bytes);
+
 /* Returns the number of objects (shapes) in the scene. */
 size_t scene_object_count(const Scene *scene);
 

@@ -195,17 +195,38 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, int th
     fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);
 }
 
+/* Reads opts' scene into *scene, reporting any fault; returns 0, or 1 (the
+ * exit status) with *scene empty. */
+static int main_load(const Options *opts, Scene *scene)
+{
+    Error err;
+
+    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
+                        scene, &err) == 0)
+        return 0;
+    main_report(&err);
+    return 1;
+}
+
+/* Says, in *err, why path may not be written from opts' scene: it is the
+ * scene file itself; returns 0 when it may. */
+static int main_check_target(const Options *opts, const char *path, Error *err)
+{
+    if (strcmp(path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
+        main_same_file(opts->scene_path, path)) {
+        error_set(err, path, "the output is the scene file itself: refusing to overwrite it");
+        return -1;
+    }
+    return 0;
+}
+
 /* Reads opts' scene, reports it and renders nothing; returns the exit status. */
 static int main_check(const Options *opts)
 {
     Scene scene;
-    Error err;
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        &scene, &err) != 0) {
-        main_report(&err);
+    if (main_load(opts, &scene) != 0)
         return 1;
-    }
     if (!opts->quiet)
         printf("%s: OK: %d x %d pixels, %zu object%s, %zu light%s\n",
                strcmp(opts->scene_path, "-") == 0 ? "<stdin>" : opts->scene_path,
@@ -225,18 +246,10 @@ static int main_save(const Options *opts)
     Error err;
     int rc;
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        &scene, &err) != 0) {
-        main_report(&err);
+    if (main_load(opts, &scene) != 0)
         return 1;
-    }
-    if (strcmp(opts->save_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
-        main_same_file(opts->scene_path, opts->save_path)) {
-        error_set(&err, opts->save_path, "the output is the scene file itself: refusing to "
-                                         "overwrite it");
-        goto fail;
-    }
-    if (main_open_output(&out, opts->save_path, &err) != 0)
+    if (main_check_target(opts, opts->save_path, &err) != 0 ||
+        main_open_output(&out, opts->save_path, &err) != 0)
         goto fail;
     rc = save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
                       &err);
@@ -256,19 +269,20 @@ fail:
     return 1;
 }
 
-/* Checks that the image and its writing fit in what the memory limit
- * leaves after the scene, and sets that much aside from the limit for the
- * hierarchy still to come; returns 0, or -1 with *err set. */
-static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Options *opts,
-                              Error *err)
+/* Sets aside from the memory limit what the image and its writing need,
+ * failing when the scene leaves less; then builds the scene's bounding
+ * volume hierarchy (unless opts say not to), failing when it would pass
+ * the limit and warning when memory runs out for it. Returns 0, or -1 with
+ * *err set. */
+static int main_prepare(const Options *opts, const WriterOptions *wopts, Scene *scene,
+                        Error *err)
 {
     size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
-    size_t left = scene_memory_left(scene);
     char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
+    size_t n = scene->sphere_count + scene->triangle_count;
+    int rc;
 
-    if (scene->memory_limit == 0)
-        return 0;
-    if (need > left) {
+    if (scene_set_aside(scene, need) != 0) {
         error_set(err, opts->scene_path,
                   "a %d x %d image needs %s to render and write: with the scene's %s, "
                   "more than the memory limit of %s (raise it with --memory-limit)",
@@ -276,82 +290,93 @@ static int main_reserve_image(Scene *scene, const WriterOptions *wopts, const Op
                   number_bytes(b, scene_memory(scene)), number_bytes(c, scene->memory_limit));
         return -1;
     }
-    scene->memory_limit -= need;
+    rc = opts->no_accel ? 0 : scene_build_accel(scene, opts->threads);
+    if (rc == SCENE_OVER_LIMIT) {
+        error_set(err, opts->scene_path,
+                  "the bounding volume hierarchy of %zu objects needs up to %s, more than "
+                  "the %s the memory limit leaves (--memory-limit; --no-accel renders "
+                  "without it, slowly)",
+                  n, number_bytes(a, bvh_build_memory(n)), number_bytes(b, scene_memory_left(scene)));
+        return -1;
+    }
+    if (rc != 0)
+        fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
+                        "hierarchy: every ray will test every object\n");
     return 0;
+}
+
+/* Allocates *img for scene's camera, keeping its linear colours for PFM;
+ * returns 0, or -1 with *err set (and *img empty). */
+static int main_image(const Options *opts, const WriterOptions *wopts, const Scene *scene,
+                      Image *img, Error *err)
+{
+    int w = scene->camera.width, h = scene->camera.height;
+
+    if (image_init(img, w, h) == 0 && (wopts->format != FORMAT_PFM || image_keep_linear(img) == 0))
+        return 0;
+    error_set(err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s", w, h,
+              image_size(w, h), wopts->format == FORMAT_PFM ? ", and 4 times that for PFM" : "");
+    image_free(img);
+    return -1;
+}
+
+/* Renders scene into img as ropts say, with the progress bar on a
+ * terminal; stores the rays cast in *counts and returns the threads used. */
+static int main_trace(const Options *opts, RenderOptions *ropts, const Scene *scene, Image *img,
+                      RayCounts *counts, double *seconds)
+{
+    MainProgress progress = {0, 0, 0};
+    double start = main_now();
+    int threads;
+
+    if (isatty(STDERR_FILENO) && !opts->quiet) {
+        ropts->progress = main_progress;
+        ropts->progress_ctx = &progress;
+    }
+    progress.start = progress.last_draw = start;
+    threads = render(scene, ropts, img, counts);
+    *seconds = main_now() - start;
+    if (progress.drawn) {
+        fputs("\r\033[K", stderr); /* erase the bar */
+        main_bar_shown = 0;
+    }
+    ropts->progress = NULL;
+    return threads;
 }
 
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    RenderOptions ropts = {opts->max_depth, 1, opts->cutoff, opts->threads, NULL, NULL};
     WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
                            opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
-    MainProgress progress = {0, 0, 0};
+    /* The linear colours of PFM would show what the cut-off leaves out. */
+    RenderOptions ropts = {opts->max_depth, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
+                           opts->threads, NULL, NULL};
     RayCounts counts = {0, 0, 0, 0, 0, 0};
-    double start = main_now(), render_start, render_time, accel_start, accel_time;
+    double start = main_now(), read_time, accel_time, render_time;
     Scene scene;
     Image img;
     OutFile out;
     Error err;
-    int threads, rc, tty = isatty(STDERR_FILENO);
+    int threads;
 
-    if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        &scene, &err) != 0) {
-        main_report(&err);
+    if (main_load(opts, &scene) != 0)
         return 1;
-    }
+    read_time = main_now() - start;
     if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
         goto fail_scene;
     }
-    if (strcmp(opts->output_path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
-        main_same_file(opts->scene_path, opts->output_path)) {
-        error_set(&err, opts->output_path, "the output is the scene file itself: refusing to "
-                                           "overwrite it");
+    if (main_check_target(opts, opts->output_path, &err) != 0 ||
+        main_prepare(opts, &wopts, &scene, &err) != 0)
         goto fail_scene;
-    }
+    accel_time = main_now() - start - read_time;
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
-    if (main_reserve_image(&scene, &wopts, opts, &err) != 0)
+    if (main_image(opts, &wopts, &scene, &img, &err) != 0)
         goto fail_scene;
-    accel_start = main_now();
-    rc = opts->no_accel ? 0 : scene_build_accel(&scene, opts->threads);
-    if (rc == SCENE_OVER_LIMIT) {
-        char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX];
-        error_set(&err, opts->scene_path,
-                  "the bounding volume hierarchy of %zu objects needs up to %s, more than "
-                  "the %s the memory limit leaves (--memory-limit; --no-accel renders "
-                  "without it, slowly)",
-                  scene.sphere_count + scene.triangle_count,
-                  number_bytes(a, bvh_build_memory(scene.sphere_count + scene.triangle_count)),
-                  number_bytes(b, scene_memory_left(&scene)));
-        goto fail_scene;
-    }
-    if (rc != 0)
-        fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
-                        "hierarchy: every ray will test every object\n");
-    accel_time = main_now() - accel_start;
-    if (image_init(&img, scene.camera.width, scene.camera.height) != 0 ||
-        (wopts.format == FORMAT_PFM && image_keep_linear(&img) != 0)) {
-        error_set(&err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s",
-                  scene.camera.width, scene.camera.height,
-                  image_size(scene.camera.width, scene.camera.height),
-                  wopts.format == FORMAT_PFM ? ", and 4 times that for PFM" : "");
-        image_free(&img);
-        goto fail_scene;
-    }
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
-    if (tty && !opts->quiet) {
-        ropts.progress = main_progress;
-        ropts.progress_ctx = &progress;
-    }
-    render_start = progress.start = progress.last_draw = main_now();
-    threads = render(&scene, &ropts, &img, &counts);
-    render_time = main_now() - render_start;
-    if (progress.drawn) {
-        fputs("\r\033[K", stderr); /* erase the bar */
-        main_bar_shown = 0;
-    }
+    threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
     /* An interrupt from here on still finds main_temp_path: before the rename
      * it removes the unfinished file, after it the unlink finds nothing. */
     if (writer_write(out.fp, &img, &wopts) != 0) {
@@ -363,15 +388,14 @@ static int main_render(const Options *opts)
         goto fail_image;
     main_temp_path = NULL;
     if (opts->verbose) {
-        fprintf(stderr, "raytrace: read the scene in %.3f s\n", accel_start - start);
+        fprintf(stderr, "raytrace: read the scene in %.3f s\n", read_time);
         if (scene.accel)
             fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
                             "%.3f s%s\n",
                     scene.accel->node_count, scene.accel->depth, accel_time,
                     scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
         main_statistics(&img, &ropts, threads, &counts, render_time);
-    }
-    else if (!opts->quiet && tty)
+    } else if (!opts->quiet && isatty(STDERR_FILENO)) {
         fprintf(stderr,
                 "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "
                 "%.2f s, %d thread%s\n",
@@ -380,6 +404,7 @@ static int main_render(const Options *opts)
                 scene_object_count(&scene) == 1 ? "" : "s", ropts.samples,
                 ropts.samples == 1 ? "" : "s", main_now() - start, threads,
                 threads == 1 ? "" : "s");
+    }
     image_free(&img);
     scene_free(&scene);
     return 0;

@@ -1,6 +1,7 @@
 /* options.c: command-line parsing (see options.h). */
 #include "cli/options.h"
 
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -8,7 +9,8 @@
 #include "math/number.h"
 #include "render/sampler.h"
 #include "image/writer.h"
-#include "render/trace.h"
+#include "render/tracer.h"
+#include "scene/scene.h"
 
 enum { OPTIONS_MAX_THREADS = 1024 };
 
@@ -115,12 +117,62 @@ static int options_size(const char *text, size_t *out)
     return 0;
 }
 
-/* An option that takes a whole number. */
+/* What an option is, and where its value goes. */
+typedef enum {
+    OPTION_FLAG, /* no value: the int field is set to 1 */
+    OPTION_INT,  /* a whole number from lo to hi, into an int field */
+    OPTION_REAL, /* a decimal number from lo to hi, into a double field */
+    OPTION_SIZE, /* a size in bytes (options_size()), into a size_t field */
+    OPTION_WORD, /* one of words, whose value goes into an int field */
+    OPTION_TEXT, /* any string, into a const char * field */
+    OPTION_ACT   /* no value: options_parse() returns `act` at once */
+} OptionKind;
+
+/* A word an option may take, and the value it stands for. */
+typedef struct {
+    const char *word;
+    int value;
+} OptionWord;
+
+/* An option of the command line. */
 typedef struct {
     const char *long_name;  /* "--max-depth" */
-    const char *short_name; /* "-d" */
-    int lo, hi;             /* accepted range */
-} IntOption;
+    const char *short_name; /* "-d", or NULL */
+    OptionKind kind;
+    size_t field;           /* offsetof(Options, its field) */
+    double lo, hi;          /* INT and REAL: the accepted range */
+    const OptionWord *words; /* WORD: its words, ending with a NULL word */
+    OptionsAction act;      /* ACT: what it asks for */
+} OptionSpec;
+
+static const OptionWord options_formats[] = {
+    {"ppm", FORMAT_PPM}, {"png", FORMAT_PNG}, {"pfm", FORMAT_PFM}, {NULL, 0}};
+static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
+static const OptionWord options_scene_formats[] = {
+    {"course", SCENE_COURSE}, {"keyword", SCENE_KEYWORD}, {"auto", SCENE_AUTO}, {NULL, 0}};
+
+#define OPT(name, kind, field) name, kind, offsetof(Options, field)
+static const OptionSpec options_table[] = {
+    {"--help", "-h", OPTION_ACT, 0, 0, 0, NULL, OPTIONS_HELP},
+    {"--version", "-V", OPTION_ACT, 0, 0, 0, NULL, OPTIONS_VERSION},
+    {"--quiet", OPT("-q", OPTION_FLAG, quiet), 0, 0, NULL, 0},
+    {"--verbose", OPT("-v", OPTION_FLAG, verbose), 0, 0, NULL, 0},
+    {"--check", OPT(NULL, OPTION_FLAG, check), 0, 0, NULL, 0},
+    {"--ascii", OPT(NULL, OPTION_FLAG, ascii), 0, 0, NULL, 0},
+    {"--no-accel", OPT(NULL, OPTION_FLAG, no_accel), 0, 0, NULL, 0},
+    {"--max-depth", OPT("-d", OPTION_INT, max_depth), 0, TRACE_MAX_DEPTH_LIMIT, NULL, 0},
+    {"--threads", OPT("-j", OPTION_INT, threads), 1, OPTIONS_MAX_THREADS, NULL, 0},
+    {"--spp", OPT("-s", OPTION_INT, samples), 1, SAMPLER_MAX, NULL, 0},
+    {"--format", OPT(NULL, OPTION_WORD, format), 0, 0, options_formats, 0},
+    {"--png-deflate", OPT(NULL, OPTION_WORD, png_stored), 0, 0, options_deflates, 0},
+    {"--scene-format", OPT(NULL, OPTION_WORD, scene_format), 0, 0, options_scene_formats, 0},
+    {"--save", OPT(NULL, OPTION_TEXT, save_path), 0, 0, NULL, 0},
+    {"--cutoff", OPT(NULL, OPTION_REAL, cutoff), 0, 255, NULL, 0},
+    {"--memory-limit", OPT(NULL, OPTION_SIZE, memory_limit), 0, 0, NULL, 0},
+};
+#undef OPT
+
+enum { OPTIONS_COUNT = sizeof options_table / sizeof options_table[0] };
 
 /* If argv[*i] is the option long_name (or short_name, which may be NULL),
  * as "--name V", "--name=V", "-x V" or "-xV", points *value at V and
@@ -150,122 +202,123 @@ static int options_match_value(const char *long_name, const char *short_name, in
     return 1;
 }
 
-/* If argv[*i] is the option long_name, reads its value, a decimal number
- * from lo to hi, into *out and returns 1 (or -1 on a bad value, with msg
- * set); returns 0 when argv[*i] is another argument. */
-static int options_match_real(const char *long_name, double lo, double hi, int argc, char **argv,
-                              int *i, double *out, char *msg, size_t msg_size)
+/* Writes "option 'NAME' takes W1, W2 or W3, found 'VALUE'" to msg. */
+static void options_fail_word(const OptionSpec *o, const char *value, char *msg, size_t msg_size)
 {
-    const char *value;
-    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
+    size_t n = (size_t)snprintf(msg, msg_size, "option '%s' takes ", o->long_name);
+    int count = 0;
+
+    while (o->words[count].word)
+        count++;
+    for (int k = 0; k < count && n < msg_size; k++)
+        n += (size_t)snprintf(msg + n, msg_size - n, "%s%s",
+                              k == 0 ? "" : k == count - 1 ? " or " : ", ", o->words[k].word);
+    if (n < msg_size)
+        snprintf(msg + n, msg_size - n, ", found '%.40s'", value);
+}
+
+/* Reads value, the value of option o, into its field of *opts; returns 0,
+ * or -1 with msg set when it is not one o takes. */
+static int options_store(const OptionSpec *o, const char *value, Options *opts, char *msg,
+                         size_t msg_size)
+{
+    char *field = (char *)opts + o->field;
     double v;
+    int n;
 
-    if (m <= 0)
-        return m;
-    if (number_parse(value, strlen(value), &v) != NUMBER_OK || !(v >= lo && v <= hi)) {
-        snprintf(msg, msg_size, "option '%s' takes a number from %g to %g, found '%.40s'",
-                 long_name, lo, hi, value);
-        return -1;
-    }
-    *out = v;
-    return 1;
-}
-
-/* If argv[*i] is the option long_name, reads its value, a size (see
- * options_size()), into *out and returns 1 (or -1 on a bad value, with msg
- * set); returns 0 when argv[*i] is another argument. */
-static int options_match_size(const char *long_name, int argc, char **argv, int *i, size_t *out,
-                              char *msg, size_t msg_size)
-{
-    const char *value;
-    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
-
-    if (m <= 0)
-        return m;
-    if (options_size(value, out) != 0) {
-        snprintf(msg, msg_size, "option '%s' takes a size in bytes such as 512M or 8G (0: no "
-                                "limit), found '%.40s'", long_name, value);
-        return -1;
-    }
-    return 1;
-}
-
-/* If argv[*i] is opt, reads its value into *out and returns 1 (or -1 on a
- * bad value, with msg set); returns 0 when argv[*i] is another argument. */
-static int options_match_int(const IntOption *opt, int argc, char **argv, int *i, int *out,
-                             char *msg, size_t msg_size)
-{
-    const char *value;
-    int m = options_match_value(opt->long_name, opt->short_name, argc, argv, i, &value, msg,
-                                msg_size);
-
-    if (m <= 0)
-        return m;
-    if (options_int(value, opt->lo, opt->hi, out) != 0) {
-        snprintf(msg, msg_size, "option '%s' takes a whole number from %d to %d, found '%.40s'",
-                 opt->long_name, opt->lo, opt->hi, value);
-        return -1;
-    }
-    return 1;
-}
-
-/* If argv[*i] is the option long_name, whose value must be one of the
- * count words of choices, stores the index of the word in *out and returns
- * 1 (or -1 on another value, with msg set); returns 0 for another argument. */
-static int options_match_word(const char *long_name, const char *const *choices, int count,
-                              int argc, char **argv, int *i, int *out, char *msg,
-                              size_t msg_size)
-{
-    const char *value;
-    int m = options_match_value(long_name, NULL, argc, argv, i, &value, msg, msg_size);
-
-    if (m <= 0)
-        return m;
-    for (int k = 0; k < count; k++) {
-        if (strcmp(value, choices[k]) == 0) {
-            *out = k;
-            return 1;
+    switch (o->kind) {
+    case OPTION_INT:
+        if (options_int(value, (int)o->lo, (int)o->hi, &n) != 0) {
+            snprintf(msg, msg_size, "option '%s' takes a whole number from %d to %d, found '%.40s'",
+                     o->long_name, (int)o->lo, (int)o->hi, value);
+            return -1;
         }
+        memcpy(field, &n, sizeof n);
+        return 0;
+    case OPTION_REAL:
+        if (number_parse(value, strlen(value), &v) != NUMBER_OK || !(v >= o->lo && v <= o->hi)) {
+            snprintf(msg, msg_size, "option '%s' takes a number from %g to %g, found '%.40s'",
+                     o->long_name, o->lo, o->hi, value);
+            return -1;
+        }
+        memcpy(field, &v, sizeof v);
+        return 0;
+    case OPTION_SIZE: {
+        size_t size;
+        if (options_size(value, &size) != 0) {
+            snprintf(msg, msg_size,
+                     "option '%s' takes a size in bytes such as 512M or 8G (0: no limit), "
+                     "found '%.40s'",
+                     o->long_name, value);
+            return -1;
+        }
+        memcpy(field, &size, sizeof size);
+        return 0;
     }
-    {
-        size_t n = (size_t)snprintf(msg, msg_size, "option '%s' takes ", long_name);
-        for (int k = 0; k < count && n < msg_size; k++)
-            n += (size_t)snprintf(msg + n, msg_size - n, "%s%s",
-                                  k == 0 ? "" : k == count - 1 ? " or " : ", ", choices[k]);
-        if (n < msg_size)
-            snprintf(msg + n, msg_size - n, ", found '%.40s'", value);
+    case OPTION_WORD:
+        for (const OptionWord *w = o->words; w->word; w++)
+            if (strcmp(value, w->word) == 0) {
+                memcpy(field, &w->value, sizeof w->value);
+                return 0;
+            }
+        options_fail_word(o, value, msg, msg_size);
+        return -1;
+    default: /* OPTION_TEXT */
+        memcpy(field, &value, sizeof value);
+        return 0;
     }
+}
+
+/* Reads the option at argv[*i] (and its value, which may be the next
+ * argument) into *opts; returns 0, -1 with msg set on a usage error, or
+ * 1 with *act set when it asks for something at once (--help). */
+static int options_one(Options *opts, int argc, char **argv, int *i, OptionsAction *act,
+                       char *msg, size_t msg_size)
+{
+    const char *arg = argv[*i], *value;
+
+    for (int k = 0; k < OPTIONS_COUNT; k++) {
+        const OptionSpec *o = &options_table[k];
+        int m;
+
+        if (o->kind == OPTION_ACT || o->kind == OPTION_FLAG) {
+            if (strcmp(arg, o->long_name) != 0 && !(o->short_name && strcmp(arg, o->short_name) == 0))
+                continue;
+            if (o->kind == OPTION_ACT) {
+                *act = o->act;
+                return 1;
+            }
+            *(int *)(void *)((char *)opts + o->field) = 1;
+            return 0;
+        }
+        m = options_match_value(o->long_name, o->short_name, argc, argv, i, &value, msg,
+                                msg_size);
+        if (m < 0)
+            return -1;
+        if (m > 0)
+            return options_store(o, value, opts, msg, msg_size);
+    }
+    snprintf(msg, msg_size, "unknown option '%.40s'", arg);
     return -1;
 }
 
 OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
                             size_t msg_size)
 {
-    static const IntOption depth = {"--max-depth", "-d", 0, TRACE_MAX_DEPTH_LIMIT};
-    static const IntOption threads = {"--threads", "-j", 1, OPTIONS_MAX_THREADS};
-    static const IntOption spp = {"--spp", "-s", 1, SAMPLER_MAX};
-    static const char *const formats[] = {"ppm", "png", "pfm"};
-    static const char *const deflates[] = {"stored", "fixed"};
-    static const char *const scene_formats[] = {"course", "keyword", "auto"};
     const char *positional[2];
-    int npos = 0, only_positional = 0, deflate = 1, scene_format = 2;
+    int npos = 0, only_positional = 0;
 
-    opts->scene_path = opts->output_path = NULL;
+    memset(opts, 0, sizeof *opts);
     opts->max_depth = 10;
     opts->threads = default_threads;
-    opts->quiet = 0;
-    opts->verbose = 0;
-    opts->check = 0;
-    opts->samples = 0;
     opts->format = -1;
-    opts->ascii = 0;
-    opts->no_accel = 0;
-    opts->save_path = NULL;
+    opts->scene_format = SCENE_AUTO;
     opts->cutoff = OPTIONS_DEFAULT_CUTOFF;
     opts->memory_limit = OPTIONS_DEFAULT_MEMORY_LIMIT;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
-        int m;
+        OptionsAction act;
+        int rc;
 
         if (only_positional || arg[0] != '-' || strcmp(arg, "-") == 0) {
             if (npos == 2) {
@@ -276,47 +329,10 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
             positional[npos++] = arg;
         } else if (strcmp(arg, "--") == 0) {
             only_positional = 1;
-        } else if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-            return OPTIONS_HELP;
-        } else if (strcmp(arg, "-V") == 0 || strcmp(arg, "--version") == 0) {
-            return OPTIONS_VERSION;
-        } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-            opts->quiet = 1;
-        } else if (strcmp(arg, "-v") == 0 || strcmp(arg, "--verbose") == 0) {
-            opts->verbose = 1;
-        } else if (strcmp(arg, "--check") == 0) {
-            opts->check = 1;
-        } else if (strcmp(arg, "--ascii") == 0) {
-            opts->ascii = 1;
-        } else if (strcmp(arg, "--no-accel") == 0) {
-            opts->no_accel = 1;
-        } else if ((m = options_match_int(&depth, argc, argv, &i, &opts->max_depth, msg,
-                                          msg_size)) != 0 ||
-                   (m = options_match_int(&threads, argc, argv, &i, &opts->threads, msg,
-                                          msg_size)) != 0 ||
-                   (m = options_match_int(&spp, argc, argv, &i, &opts->samples, msg,
-                                          msg_size)) != 0 ||
-                   (m = options_match_word("--format", formats, 3, argc, argv, &i,
-                                           &opts->format, msg, msg_size)) != 0 ||
-                   (m = options_match_word("--png-deflate", deflates, 2, argc, argv, &i,
-                                           &deflate, msg, msg_size)) != 0 ||
-                   (m = options_match_word("--scene-format", scene_formats, 3, argc, argv, &i,
-                                           &scene_format, msg, msg_size)) != 0 ||
-                   (m = options_match_value("--save", NULL, argc, argv, &i, &opts->save_path,
-                                            msg, msg_size)) != 0 ||
-                   (m = options_match_real("--cutoff", 0, 255, argc, argv, &i, &opts->cutoff,
-                                           msg, msg_size)) != 0 ||
-                   (m = options_match_size("--memory-limit", argc, argv, &i,
-                                           &opts->memory_limit, msg, msg_size)) != 0) {
-            if (m < 0)
-                return OPTIONS_USAGE;
-        } else {
-            snprintf(msg, msg_size, "unknown option '%.40s'", arg);
-            return OPTIONS_USAGE;
+        } else if ((rc = options_one(opts, argc, argv, &i, &act, msg, msg_size)) != 0) {
+            return rc > 0 ? act : OPTIONS_USAGE;
         }
     }
-    opts->png_stored = deflate == 0;
-    opts->scene_format = scene_format == 2 ? -1 : scene_format;
     if (opts->check && opts->save_path) {
         snprintf(msg, msg_size, "--check and --save cannot be combined");
         return OPTIONS_USAGE;

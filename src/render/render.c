@@ -178,8 +178,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     int done = 0, used = 1;
     int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
     Cut proto = {0};
-    /* The linear floats of PFM would show what the cut-off leaves out. */
-    int cutting = opts->cutoff > 0 && !img->linear && opts->max_depth > 0;
+    int cutting = opts->cutoff > 0 && opts->max_depth > 0;
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */

@@ -83,6 +83,16 @@ size_t scene_memory_left(const Scene *scene)
     return used >= scene->memory_limit ? 0 : scene->memory_limit - used;
 }
 
+int scene_set_aside(Scene *scene, size_t bytes)
+{
+    if (scene->memory_limit == 0)
+        return 0;
+    if (bytes > scene_memory_left(scene))
+        return SCENE_OVER_LIMIT;
+    scene->memory_limit -= bytes;
+    return 0;
+}
+
 size_t scene_obj_budget(const Scene *scene)
 {
     size_t left = scene_memory_left(scene);
