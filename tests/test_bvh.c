@@ -5,12 +5,12 @@
 #include <string.h>
 
 #include "accel/bvh.h"
+#include "render/trace.h"
+#include "render/visibility.h"
 #include "rng.h"
 #include "scene/scale.h"
 #include "scene/scene.h"
 #include "test.h"
-#include "render/trace.h"
-#include "render/visibility.h"
 
 /* Adds n random spheres and n random triangles (some transparent, some
  * exact duplicates, for ties) around the origin at scale s, and a plane. */

@@ -5,15 +5,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "math/number.h"
+#include "render/trace.h"
+#include "rng.h"
 #include "scene/camera.h"
 #include "scenefile/keyword.h"
 #include "scenefile/load.h"
-#include "math/number.h"
-#include "rng.h"
 #include "scenefile/save.h"
 #include "shading.h"
 #include "test.h"
-#include "render/trace.h"
 
 #define SEED                                                                                  \
     "camera 0. 0. 0. 0. 0. 5. 2.0943951 700 500\n"                                             \

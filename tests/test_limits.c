@@ -6,14 +6,14 @@
 #include <string.h>
 
 #include "accel/bvh.h"
-#include "image/deflate.h"
 #include "base/file.h"
-#include "math/number.h"
-#include "scenefile/obj.h"
-#include "scenefile/course.h"
-#include "scene/scene.h"
-#include "test.h"
+#include "image/deflate.h"
 #include "image/writer.h"
+#include "math/number.h"
+#include "scene/scene.h"
+#include "scenefile/course.h"
+#include "scenefile/obj.h"
+#include "test.h"
 
 static void limits_sizes_read_for_people(void)
 {

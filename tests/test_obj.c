@@ -4,11 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scenefile/obj.h"
+#include "base/threads.h"
 #include "scenefile/course.h"
+#include "scenefile/obj.h"
 #include "shading.h"
 #include "test.h"
-#include "base/threads.h"
 
 /* Writes text (len bytes) to build/t.obj and loads it. */
 static int load(const char *text, size_t len, ObjMesh *m, Error *err)

@@ -4,12 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scenefile/load.h"
-#include "math/number.h"
-#include "scenefile/course.h"
-#include "rng.h"
-#include "test.h"
 #include "base/threads.h"
+#include "math/number.h"
+#include "rng.h"
+#include "scenefile/course.h"
+#include "scenefile/load.h"
+#include "test.h"
 
 /* A valid header: the screen is 2 x 2 at z = 1, so 4 x 4 pixels. */
 #define CAMERA "0 0 0\n"

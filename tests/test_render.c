@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/camera.h"
-#include "scenefile/load.h"
-#include "scenefile/course.h"
 #include "render/render.h"
-#include "rng.h"
 #include "render/trace.h"
+#include "rng.h"
+#include "scene/camera.h"
+#include "scenefile/course.h"
+#include "scenefile/load.h"
 #include "test.h"
 
 static Camera camera_square(void)

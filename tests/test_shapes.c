@@ -3,9 +3,9 @@
 
 #include "geometry/plane.h"
 #include "geometry/ray.h"
+#include "geometry/triangle.h"
 #include "rng.h"
 #include "test.h"
-#include "geometry/triangle.h"
 
 static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1};
 

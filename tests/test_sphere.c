@@ -2,8 +2,8 @@
 #include <math.h>
 
 #include "geometry/ray.h"
-#include "rng.h"
 #include "geometry/sphere.h"
+#include "rng.h"
 #include "test.h"
 
 #define PI 3.14159265358979323846

@@ -3,12 +3,12 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scenefile/course.h"
-#include "shading.h"
 #include "geometry/sphere.h"
-#include "test.h"
 #include "scene/texture.h"
+#include "scenefile/course.h"
 #include "scenefile/texture_file.h"
+#include "shading.h"
+#include "test.h"
 
 /* Writes text (len bytes) to path. */
 static void write_file(const char *path, const char *text, size_t len)

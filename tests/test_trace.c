@@ -1,11 +1,11 @@
 /* test_trace.c: shading on tiny scenes whose colours are known exactly. */
 #include <math.h>
 
+#include "render/trace.h"
+#include "render/visibility.h"
 #include "scene/scene.h"
 #include "shading.h"
 #include "test.h"
-#include "render/trace.h"
-#include "render/visibility.h"
 
 #define PI 3.14159265358979323846
 

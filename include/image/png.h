@@ -14,8 +14,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "image/deflate.h"
 #include "base/error.h"
+#include "image/deflate.h"
 
 /* Writes the width x height image rgb (rows top to bottom, 3 bytes a
  * pixel) to f as a PNG compressed with mode; returns 0, or -1 with errno

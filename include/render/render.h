@@ -12,8 +12,8 @@
 #define RAYTRACE_RENDER_H
 
 #include "image/image.h"
-#include "scene/scene.h"
 #include "render/trace.h"
+#include "scene/scene.h"
 
 /* Told, one call at a time, that done of the image's total parts (tiles)
  * are finished; ctx is RenderOptions' progress_ctx. */

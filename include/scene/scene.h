@@ -12,13 +12,13 @@
 
 #include <stddef.h>
 
-#include "scene/camera.h"
-#include "math/colour.h"
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
-#include "scene/texture.h"
 #include "geometry/triangle.h"
+#include "math/colour.h"
 #include "math/vec3.h"
+#include "scene/camera.h"
+#include "scene/texture.h"
 
 typedef struct {
     Vec3 position;    /* a point light: where it is, scene units; a distant

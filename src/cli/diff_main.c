@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image/compare.h"
 #include "base/outfile.h"
+#include "image/compare.h"
 #include "image/writer.h"
 
 #define DIFF_VERSION "0.1.0"

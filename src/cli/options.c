@@ -6,9 +6,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "image/writer.h"
 #include "math/number.h"
 #include "render/sampler.h"
-#include "image/writer.h"
 #include "render/tracer.h"
 #include "scene/scene.h"
 

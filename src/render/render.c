@@ -3,10 +3,10 @@
 
 #include <stdlib.h>
 
-#include "scene/camera.h"
-#include "render/sampler.h"
 #include "render/cut.h"
+#include "render/sampler.h"
 #include "render/trace.h"
+#include "scene/camera.h"
 
 #ifdef _OPENMP
 #include <omp.h>

@@ -22,11 +22,11 @@
 #include <string.h>
 
 #include "math/angle.h"
-#include "scenefile/lex.h"
 #include "math/number.h"
+#include "scene/scale.h"
+#include "scenefile/lex.h"
 #include "scenefile/mesh.h"
 #include "scenefile/obj.h"
-#include "scene/scale.h"
 
 /* The reader's state. */
 typedef struct {

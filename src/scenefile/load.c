@@ -5,9 +5,9 @@
 #include <string.h>
 
 #include "base/file.h"
-#include "scenefile/keyword.h"
 #include "math/number.h"
 #include "scenefile/course.h"
+#include "scenefile/keyword.h"
 
 SceneFormat load_detect(const char *text, size_t len)
 {

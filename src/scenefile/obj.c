@@ -9,9 +9,9 @@
 
 #include "base/file.h"
 #include "base/grow.h"
-#include "scenefile/lex.h"
-#include "math/number.h"
 #include "base/threads.h"
+#include "math/number.h"
+#include "scenefile/lex.h"
 
 /* Where the reader is: the file and the line being read. */
 typedef struct {

@@ -7,8 +7,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "scenefile/load.h"
 #include "render/render.h"
+#include "scenefile/load.h"
 
 static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)
 {
