@@ -8,13 +8,9 @@
 
 RT=$1
 DIFF=$2
-T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-cli.XXXXXX") || exit 2
-trap 'rm -rf "$T"' EXIT
-passed=0
-failed=0
+SUITE=cli
+. "$(dirname "$0")/check.sh"
 
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL $1" >&2; [ -n "$2" ] && printf '%s\n' "$2" | sed 's/^/    /' >&2; }
 
 # expect_exit NAME CODE COMMAND...: runs COMMAND, keeps its output in $T/out
 # and $T/err, and checks its exit status.
@@ -417,5 +413,4 @@ interrupt() {
 interrupt INT 130
 interrupt TERM 143
 
-echo "cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

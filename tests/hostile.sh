@@ -11,13 +11,9 @@
 # Usage: sh tests/hostile.sh RAYTRACE   (run from the repository root)
 
 RT=$1
-T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-hostile.XXXXXX") || exit 2
-trap 'chmod -R u+rwx "$T" 2>/dev/null; rm -rf "$T"' EXIT
-passed=0
-failed=0
+SUITE=hostile
+. "$(dirname "$0")/check.sh"
 TAB=$(printf '\t')
-
-fail() { failed=$((failed + 1)); echo "FAIL $1" >&2; [ -n "$2" ] && printf '%s\n' "$2" | sed 's/^/    /' >&2; }
 
 # check NAME CODE FIRST-LINE OUTPUT ARGS...: runs raytrace ARGS with OUTPUT
 # holding "keep me"; checks the exit status, the first line on standard
@@ -133,5 +129,4 @@ if [ -w /dev/full ]; then
         "" "$T/ok.txt" /dev/full
 fi
 
-echo "hostile: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -4,13 +4,9 @@
 #
 # Usage: sh tests/install.sh   (run from the repository root, after make)
 
-T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-install.XXXXXX") || exit 2
-trap 'rm -rf "$T"' EXIT
-passed=0
-failed=0
+SUITE=install
+. "$(dirname "$0")/check.sh"
 
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL $1" >&2; [ -n "$2" ] && printf '%s\n' "$2" | sed 's/^/    /' >&2; }
 
 root="$T/root"
 make -s install DESTDIR="$root" PREFIX=/opt/rt >"$T/log" 2>&1 && pass || fail "make install" "$(cat "$T/log")"
@@ -36,5 +32,4 @@ elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
     fail "man is missing: the manual pages are not checked"
 fi
 
-echo "install: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

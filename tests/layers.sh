@@ -13,13 +13,9 @@
 
 LAYERS="base math image geometry accel scene scenefile render cli"
 
-T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-layers.XXXXXX") || exit 2
-trap 'rm -rf "$T"' EXIT
-passed=0
-failed=0
+SUITE=layers
+. "$(dirname "$0")/check.sh"
 
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL $1" >&2; [ -n "$2" ] && printf '%s\n' "$2" | sed 's/^/    /' >&2; }
 
 # edges ROOT: "FROM TO" for each quoted include of a file under ROOT's src/
 # and include/, as modules FOLDER/NAME (a bare "NAME.h" is a header beside
@@ -70,5 +66,4 @@ printf '#include "geometry/plane.h"\n' >>"$T/tree/include/geometry/ray.h"
 printf '#include "geometry/ray.h"\n' >>"$T/tree/src/geometry/plane.c"
 check "$T/tree" | grep -q 'loop' && pass || fail "a circle of modules goes unseen"
 
-echo "layers: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -13,7 +13,7 @@
 #endif
 
 /* The pixel's steps, folded into the tile loop: measured, 3% of the course
- * scene's instructions were their calls (docs/design.md). */
+ * scene's instructions were their calls (docs/log.md). */
 #if defined(__GNUC__)
 #define RENDER_INLINE static inline __attribute__((always_inline))
 #else
@@ -134,7 +134,7 @@ RENDER_INLINE Colour render_pixel(const Tracer *t, const RenderOptions *opts,
  * on the right and bottom edges smaller), handed to threads one at a time:
  * a tile's neighbouring rays visit the same tree nodes and shapes, which a
  * row's far ends do not (32: the 100,000-sphere field's cache misses fell
- * by half, docs/design.md). */
+ * by half, docs/log.md). */
 enum { RENDER_TILE = 32 };
 
 /* Returns the number of tiles that cover n pixels in a line. */
