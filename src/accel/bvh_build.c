@@ -1,90 +1,20 @@
-/* bvh_build.c: building the bounding volume hierarchy (see bvh.h): the boxes,
- * the frame and the steps in order; its queries are in bvh_query.c. */
-#include "bvh_build.h"
+/* bvh_build.c: building the bounding volume hierarchy (see bvh.h): its
+ * frame and the steps in order (boxes: bvh_box.c; the binary tree:
+ * bvh_sah.c; wide nodes: bvh_collapse.c); its queries are in bvh_query.c. */
+#include "accel/bvh.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "bvh_box.h"
+#include "bvh_collapse.h"
+#include "bvh_sah.h"
+
 enum {
     BVH_FRAME_SAMPLE = 4095 /* centroids the frame's median is taken of */
 };
-
-/* The padding of every box, in units of the scene's largest coordinate
- * times REAL_EPSILON. The primitive tests round at a few REAL_EPSILON of the
- * distances involved, all below twice that coordinate. Double takes 2^16
- * (boxes 1.5e-11 of the scene wider: a 10^4-fold margin that costs nothing
- * measurable); float takes 2^6 (7.6e-6 of the scene), as 2^16 would widen
- * every box by 1/128 of the scene. Spheres' radii grow by 1/16 of that. */
-#ifdef RAYTRACE_REAL_FLOAT
-#define BVH_PAD_ULPS 0x1p6
-#else
-#define BVH_PAD_ULPS 0x1p16
-#endif
-
-/* Returns the larger of m and vec3_max_abs(p), for finite coordinates,
- * by comparisons (fmax() is a library call, once per vertex here). */
-static inline real bvh_farther(real m, Vec3 p)
-{
-    real x = fabs(p.x), y = fabs(p.y), z = fabs(p.z);
-
-    m = x > m ? x : m;
-    m = y > m ? y : m;
-    return z > m ? z : m;
-}
-
-/* Returns the padding of every box for shapes and the reach bvh_build()
- * is given. */
-static real bvh_padding(const BvhShapes *shapes, real reach, int threads)
-{
-    real m = reach;
-    size_t spheres = shapes->sphere_count, triangles = shapes->triangle_count;
-
-    (void)threads;
-    /* The largest of finite values, whatever the order: the same on any
-     * number of threads. */
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) reduction(max : m) if (spheres >= BVH_TASK_MIN)
-#endif
-    for (size_t i = 0; i < spheres; i++) {
-        const Sphere *sp = &shapes->spheres[i];
-        real r = bvh_farther(0, sp->centre) + sp->radius;
-        m = r > m ? r : m;
-    }
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) reduction(max : m) if (triangles >= BVH_TASK_MIN)
-#endif
-    for (size_t i = 0; i < triangles; i++)
-        for (int k = 0; k < 3; k++)
-            m = bvh_farther(m, shapes->triangles[i].v[k]);
-    return m * (REAL_EPSILON * BVH_PAD_ULPS);
-}
-
-void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p)
-{
-    p->ref = ref;
-    if (ref & BVH_TRIANGLE) {
-        const Triangle *t = &shapes->triangles[ref & ~BVH_TRIANGLE];
-        box_empty(&p->box);
-        for (int k = 0; k < 3; k++) {
-            real v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
-            box_grow_point(&p->box, v);
-        }
-        for (int a = 0; a < 3; a++) {
-            p->box.lo[a] -= pad;
-            p->box.hi[a] += pad;
-        }
-    } else {
-        const Sphere *s = &shapes->spheres[ref];
-        real c[3] = {s->centre.x, s->centre.y, s->centre.z};
-        real r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
-        for (int a = 0; a < 3; a++) {
-            p->box.lo[a] = c[a] - r;
-            p->box.hi[a] = c[a] + r;
-        }
-    }
-}
 
 static int bvh_real_order(const void *a, const void *b)
 {

@@ -1,6 +1,6 @@
 /* bvh_collapse.c: the binary tree's nodes gathered into the wide nodes of
- * bvh.h, their boxes rounded outwards to floats (see bvh_build.h). */
-#include "bvh_build.h"
+ * bvh.h, their boxes rounded outwards to floats (see bvh_collapse.h). */
+#include "bvh_collapse.h"
 
 #include <string.h>
 

@@ -1,6 +1,6 @@
 /* bvh_sah.c: the hierarchy's binary tree, split by the surface area
- * heuristic on binned centroids (see bvh_build.h). */
-#include "bvh_build.h"
+ * heuristic on binned centroids (see bvh_sah.h). */
+#include "bvh_sah.h"
 
 #include <stddef.h>
 

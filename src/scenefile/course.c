@@ -31,7 +31,9 @@
 
 #include <string.h>
 
-#include "course_parser.h"
+#include "course_bulk.h"
+#include "course_fields.h"
+#include "course_records.h"
 #include "math/number.h"
 #include "scene/scale.h"
 
@@ -39,15 +41,6 @@ static const char *const course_xyz_names[] = {"x", "y", "z"};
 static const FieldKind course_xyz_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD};
 static const char *const course_rgb_names[] = {"red", "green", "blue"};
 static const FieldKind course_rgb_kinds[] = {FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
-static const char *const course_light_names[] = {"x", "y", "z", "red", "green", "blue"};
-static const FieldKind course_light_kinds[] = {FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
-                                              FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
-static const char *const course_sphere_names[] = {
-    "centre x", "centre y", "centre z",   "radius",          "red",
-    "green",    "blue",     "reflection", "transparency", "refractive index"};
-static const FieldKind course_sphere_kinds[] = {
-    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 
 static const RecordSpec course_camera_spec = {"the camera position", NULL, 3, 0, 0, course_xyz_names,
                                         course_xyz_kinds};
@@ -59,12 +52,6 @@ static const RecordSpec course_bottom_left_spec = {"the screen's bottom-left cor
                                              course_xyz_names, course_xyz_kinds};
 static const RecordSpec course_background_spec = {"the background colour", NULL, 3, 0, 0,
                                             course_rgb_names, course_rgb_kinds};
-const RecordSpec course_light_spec = {"the light", "x y z r g b", 6, 0, 0, course_light_names,
-                                       course_light_kinds};
-static const RecordSpec course_sphere_spec = {"the sphere",
-                                        "cx cy cz radius r g b reflection"
-                                        " [transparency index]",
-                                        8, 2, 0, course_sphere_names, course_sphere_kinds};
 
 /* Reads the next record, which must be the header record spec, in which a
  * keyword is out of place; returns 0, or -1 with the fault recorded. */
@@ -139,22 +126,6 @@ static int course_colour(CourseParser *P, const RecordSpec *spec, Record *rec, C
     return 0;
 }
 
-/* Records that rec's element could not be stored, scene_add_*() having
- * returned rc; returns -1. */
-int course_fail_memory(CourseParser *P, const Record *rec, const Scene *scene, long rc)
-{
-    return lex_fail_memory(&P->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
-}
-
-/* Appends the light of values v (x y z r g b), the record rec, to the scene. */
-int course_add_light(CourseParser *P, const Record *rec, const double *v, Scene *scene)
-{
-    Light light = light_point(vec3(v[0], v[1], v[2]), colour(v[3], v[4], v[5]));
-    int rc = scene_add_light(scene, &light);
-
-    return rc != 0 ? course_fail_memory(P, rec, scene, rc) : 0;
-}
-
 /* light -> x y z r g b */
 static int course_light_record(CourseParser *P, Record *rec, Scene *scene)
 {
@@ -220,52 +191,6 @@ static int course_header(CourseParser *P, Scene *scene)
     if (course_colour(P, &course_background_spec, &rec, &scene->background) != 0 ||
         course_light_record(P, &rec, scene) != 0)
         return -1;
-    return 0;
-}
-
-/* material -> r g b reflection [transparency index]: the numbers of spec
- * from values[first] on, read by course_expect_numbers() (n of them in all)
- * from rec's tokens, the first number being token tok0; checks R + T <= 1. */
-int course_material(CourseParser *P, const Record *rec, const RecordSpec *spec, int tok0,
-                          int first, const double *values, int n, Material *m)
-{
-    const double *v = values + first;
-
-    *m = material_plain(colour(v[0], v[1], v[2]), v[3]);
-    if (n == spec->count + spec->optional) {
-        /* A little slack, so that 0.1 + 0.9 passes whatever the rounding. */
-        if (v[3] + v[4] > 1 + 1e-12) {
-            const Token *t = &rec->tok[tok0 + first + 4];
-            course_fail(P, &rec->line, t->column,
-                       "%s's reflection plus transparency must be at most 1, found %g + %g",
-                       spec->what, v[3], v[4]);
-            return -1;
-        }
-        m->transparency = v[4];
-        m->ior = v[5];
-    }
-    return 0;
-}
-
-/* Remembers the object just added, for a texture: record after it. */
-void course_note_object(CourseParser *P, int kind, size_t index)
-{
-    P->has_last = 1;
-    P->last_kind = kind;
-    P->last_index = index;
-}
-
-/* sphere -> 'sphere:' cx cy cz radius r g b reflection [transparency index]:
- * reads rec, a sphere: record, into *s (its order aside). */
-int course_sphere_fields(CourseParser *P, const Record *rec, Sphere *s)
-{
-    double v[10];
-    int n = lex_numbers(&P->lex, rec, 1, &course_sphere_spec, v);
-
-    if (n < 0 || course_material(P, rec, &course_sphere_spec, 1, 4, v, n, &s->material) != 0)
-        return -1;
-    s->centre = vec3(v[0], v[1], v[2]);
-    s->radius = v[3];
     return 0;
 }
 

@@ -1,6 +1,6 @@
 /* course_bulk.c: large fields of sphere: records read on every thread
- * (see course_parser.h). */
-#include "course_parser.h"
+ * (see course_bulk.h). */
+#include "course_bulk.h"
 
 #include <string.h>
 

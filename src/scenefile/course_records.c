@@ -1,6 +1,6 @@
-/* course_records.c: the course format's bonus records (see course_parser.h,
+/* course_records.c: the course format's bonus records (see course_records.h,
  * docs/scene-format.md). */
-#include "course_parser.h"
+#include "course_records.h"
 
 #include <stdlib.h>
 #include <string.h>

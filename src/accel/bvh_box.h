@@ -1,11 +1,10 @@
 /*
- * bvh_build.h: what the steps of building the hierarchy share, private to
- * them: bvh_build.c (the boxes, the frame and the steps in order), bvh_sah.c
- * (the binary tree, by the surface area heuristic) and bvh_collapse.c (its
- * nodes gathered into the wide nodes of bvh.h).
+ * bvh_box.h: the boxes the hierarchy's build works with, private to it:
+ * each primitive's padded box (bvh_box.c, the padding rule in one place),
+ * and the box helpers bvh_sah.c and bvh_collapse.c share.
  */
-#ifndef RAYTRACE_BVH_BUILD_H
-#define RAYTRACE_BVH_BUILD_H
+#ifndef RAYTRACE_BVH_BOX_H
+#define RAYTRACE_BVH_BOX_H
 
 #include <math.h>
 #include <stdint.h>
@@ -79,37 +78,12 @@ static inline real bvh_centroid(const BuildPrim *p, int axis)
     return 0.5 * p->box.lo[axis] + 0.5 * p->box.hi[axis];
 }
 
-/* A piece of work: build the subtree of prims[start..end) at depth, its
- * root at node. A subtree of m primitives takes nodes node .. node + 2m - 2
- * (fewer when leaves hold several): its left child is node + 1, its right
- * node + 2 m_left, so the tree is the same whichever thread builds what. */
-typedef struct {
-    size_t start, end;
-    int depth;
-    size_t node;
-} BuildTask;
+/* Returns the padding of every box for shapes and the reach bvh_build()
+ * is given: the largest coordinate of any of them times a few thousand
+ * units of the real type's precision. */
+real bvh_padding(const BvhShapes *shapes, real reach, int threads);
 
 /* Stores in *p the box of primitive ref of shapes, padded by pad. */
 void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p);
-
-/* Builds the binary subtree of task into nodes (see BuildTask), reordering
- * prims[task.start..task.end) by leaf; in an OpenMP parallel region, right
- * subtrees of BVH_TASK_MIN primitives or more become tasks (bvh_sah.c). */
-void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root);
-
-/* Moves the binary tree's nodes to the front of nodes in depth-first
- * order, closing the gaps the fixed offsets leave; returns how many there
- * are (bvh_sah.c). */
-size_t bvh_compact(BuildNode *nodes);
-
-/* Returns how many wide nodes collapsing binary node id's subtree makes
- * (bvh_collapse.c). */
-size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id);
-
-/* Writes the wide node made from binary node id, and its subtree's, into
- * bvh->nodes from self on; stores their bounds in *bounds and the depth of
- * the deepest in *deepest; returns how many it wrote (bvh_collapse.c). */
-size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
-                    Bvh *bvh, Box *bounds, int *deepest);
 
 #endif

@@ -1,10 +1,10 @@
 /*
- * course_parser.h: what the course format's reader (course.c) shares with
- * its bonus records (course_records.c) and its reader of large sphere
- * fields (course_bulk.c); private to the three.
+ * course_fields.h: the course format's reader state and what every record
+ * is read with (course_fields.c): materials, lights, spheres' fields;
+ * private to the course reader (course.c, course_records.c, course_bulk.c).
  */
-#ifndef RAYTRACE_COURSE_PARSER_H
-#define RAYTRACE_COURSE_PARSER_H
+#ifndef RAYTRACE_COURSE_FIELDS_H
+#define RAYTRACE_COURSE_FIELDS_H
 
 #include <stddef.h>
 
@@ -51,23 +51,5 @@ void course_note_object(CourseParser *P, int kind, size_t index);
 
 /* Reads rec, a sphere: record, into *s (its order aside). */
 int course_sphere_fields(CourseParser *P, const Record *rec, Sphere *s);
-
-/* The bonus records (course_records.c), each reading rec into the scene;
- * 0, or -1 with the fault recorded. */
-int course_plane_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_triangle_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_texture_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_extra_light_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_ambient_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_samples_record(CourseParser *P, const Record *rec, Scene *scene);
-int course_lens_record(CourseParser *P, const Record *rec, Scene *scene);
-
-/* Reads the rest of the input on every thread when it is large and holds
- * sphere: records alone (the benchmark's fields), into the same scene as
- * the serial reading (course_bulk.c); returns 1 when it did, 0 when the
- * serial reading must (then also when something is wrong: it says what,
- * as it would have). */
-int course_spheres_parallel(CourseParser *P, Scene *scene);
 
 #endif

@@ -1,0 +1,21 @@
+/*
+ * bvh_collapse.h: the binary tree gathered into the wide nodes of bvh.h
+ * (bvh_collapse.c), private to the build.
+ */
+#ifndef RAYTRACE_BVH_COLLAPSE_H
+#define RAYTRACE_BVH_COLLAPSE_H
+
+#include <stddef.h>
+
+#include "bvh_box.h"
+
+/* Returns how many wide nodes collapsing binary node id's subtree makes. */
+size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id);
+
+/* Writes the wide node made from binary node id, and its subtree's, into
+ * bvh->nodes from self on; stores their bounds in *bounds and the depth of
+ * the deepest in *deepest; returns how many it wrote. */
+size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
+                    Bvh *bvh, Box *bounds, int *deepest);
+
+#endif
