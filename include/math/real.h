@@ -34,6 +34,15 @@ typedef uint64_t real_bits;
 #define REAL_NAME "double"
 #endif
 
+/* Returns pbrt's gamma(n) = n u / (1 - n u), u = REAL_EPSILON / 2: a bound
+ * on the relative error of n roundings, used for the shapes' error bounds. */
+static inline real real_gamma(real n)
+{
+    real u = REAL_EPSILON / 2;
+
+    return n * u / (1 - n * u);
+}
+
 /* Returns the real next to x, a finite real, above it (up = 1) or below it
  * (up = 0): what nextafter() returns, stepped on the bits without a libm
  * call. */
