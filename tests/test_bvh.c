@@ -55,7 +55,8 @@ static void random_scene(Scene *sc, int n, double s)
  * tests have no rays) with threads threads; returns bvh_build()'s answer. */
 static int build_over(Bvh *bvh, const Scene *sc, int threads)
 {
-    BvhShapes shapes = {sc->spheres, sc->sphere_count, sc->triangles, sc->triangle_count};
+    BvhShapes shapes = {sc->spheres, sc->sphere_count, sc->triangles, sc->triangle_count,
+                        sc->cubes,   sc->cube_count,   sc->squares,   sc->square_count};
 
     return bvh_build(bvh, &shapes, 0, threads);
 }
@@ -98,11 +99,12 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
         for (uint32_t i = n->child[k]; n->count[k] > 0 && i < n->child[k] + n->count[k]; i++) {
             uint32_t ref = bvh->prims[i];
-            size_t slot = ref & BVH_TRIANGLE ? sc->sphere_count + (ref & ~BVH_TRIANGLE) : ref;
+            size_t slot = bvh_kind(ref) == BVH_TRIANGLE ? sc->sphere_count + bvh_index(ref)
+                                                        : bvh_index(ref);
             Vec3 lo, hi;
             seen[slot]++;
-            if (ref & BVH_TRIANGLE) {
-                const Triangle *t = &sc->triangles[ref & ~BVH_TRIANGLE];
+            if (bvh_kind(ref) == BVH_TRIANGLE) {
+                const Triangle *t = &sc->triangles[bvh_index(ref)];
                 lo = hi = t->v[0];
                 for (int j = 1; j < 3; j++) {
                     lo = vec3(fmin(lo.x, t->v[j].x), fmin(lo.y, t->v[j].y), fmin(lo.z, t->v[j].z));

@@ -38,14 +38,14 @@ static void keyword_reads_the_seed_scene(void)
     CHECK_INT(700, sc.camera.width);
     CHECK_INT(500, sc.camera.height);
     CHECK_NEAR(2.0943951, sc.fov, 0);
-    CHECK_INT(1, (long long)sc.phong_count);
-    CHECK(strcmp(sc.phong[0].name, "sphereMat") == 0);
-    CHECK_NEAR(1, sc.phong[0].ka, 0);
-    CHECK_NEAR(0.6, sc.phong[0].kd, 0);
-    CHECK_NEAR(0.7, sc.phong[0].ks, 0);
-    CHECK_NEAR(10, sc.phong[0].shininess, 0);
+    CHECK_INT(1, (long long)sc.named_count);
+    CHECK(strcmp(sc.named[0].name, "sphereMat") == 0);
+    CHECK_NEAR(1, sc.named[0].ka, 0);
+    CHECK_NEAR(0.6, sc.named[0].kd, 0);
+    CHECK_NEAR(0.7, sc.named[0].ks, 0);
+    CHECK_NEAR(10, sc.named[0].shininess, 0);
     CHECK_INT(1, (long long)sc.sphere_count);
-    CHECK_INT(0, sc.spheres[0].material.phong);
+    CHECK_INT(0, sc.spheres[0].material.named);
     CHECK_NEAR(255, sc.spheres[0].material.colour.r, 0);
     CHECK_NEAR(0, sc.spheres[0].material.reflection, 0);
     CHECK_NEAR(0.4, sc.spheres[0].radius, 0);
@@ -405,7 +405,7 @@ static void keyword_finds_many_materials_by_name(void)
                                 n - 1 - i);
     CHECK_INT(0, kw(text, &sc, &err));
     for (size_t i = 0; i < n && sc.sphere_count == n; i++)
-        ok &= sc.spheres[i].material.phong == (int)(n - 1 - i) &&
+        ok &= sc.spheres[i].material.named == (int)(n - 1 - i) &&
               sc.spheres[i].material.colour.r == (double)((n - 1 - i) % 256);
     CHECK(ok);
     scene_free(&sc);
@@ -492,7 +492,7 @@ static int same_material(const Material *a, const Material *b)
 {
     return SAME(a->colour, b->colour) && SAME(a->reflection, b->reflection) &&
            SAME(a->transparency, b->transparency) && SAME(a->ior, b->ior) &&
-           a->texture == b->texture && a->filter == b->filter && a->phong == b->phong;
+           a->texture == b->texture && a->filter == b->filter && a->named == b->named;
 }
 
 static int same_light(const Light *a, const Light *b)
@@ -515,7 +515,7 @@ static int same_scene(const Scene *a, const Scene *b)
 {
     int same = same_camera(&a->camera, &b->camera) && SAME(a->background, b->background) &&
                SAME(a->ambient, b->ambient) && a->has_ambient == b->has_ambient &&
-               a->light_count == b->light_count && a->phong_count == b->phong_count &&
+               a->light_count == b->light_count && a->named_count == b->named_count &&
                a->sphere_count == b->sphere_count && a->plane_count == b->plane_count &&
                a->triangle_count == b->triangle_count &&
                a->length_exponent == b->length_exponent && SAME(a->fov, b->fov) &&
@@ -523,8 +523,8 @@ static int same_scene(const Scene *a, const Scene *b)
 
     for (size_t i = 0; same && i < a->light_count; i++)
         same = same_light(&a->lights[i], &b->lights[i]);
-    for (size_t i = 0; same && i < a->phong_count; i++) {
-        const PhongMaterial *p = &a->phong[i], *q = &b->phong[i];
+    for (size_t i = 0; same && i < a->named_count; i++) {
+        const NamedMaterial *p = &a->named[i], *q = &b->named[i];
         same = strcmp(p->name, q->name) == 0 && same_material(&p->base, &q->base) &&
                SAME(p->ka, q->ka) && SAME(p->kd, q->kd) && SAME(p->ks, q->ks) &&
                SAME(p->shininess, q->shininess);

@@ -7,7 +7,7 @@
 #include "rng.h"
 #include "test.h"
 
-static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1};
+static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
 
 static Triangle triangle_of(Vec3 a, Vec3 b, Vec3 c)
 {

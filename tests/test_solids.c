@@ -11,7 +11,7 @@
 #include "rng.h"
 #include "test.h"
 
-static const Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1};
+static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
 
 static Ray ray_from(double ox, double oy, double oz, double dx, double dy, double dz)
 {

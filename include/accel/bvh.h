@@ -1,8 +1,9 @@
 /*
- * bvh.h: a bounding volume hierarchy over arrays of spheres and triangles,
- * built with the surface area heuristic on binned centroids.
+ * bvh.h: a bounding volume hierarchy over arrays of bounded shapes
+ * (spheres, triangles, cubes and squares), built with the surface area
+ * heuristic on binned centroids.
  *
- * Planes are unbounded and stay outside it. The binary tree the heuristic
+ * Unbounded shapes (planes, cylinders, cones) stay outside it. The binary tree the heuristic
  * builds is then collapsed into nodes of BVH_WIDTH children, whose boxes a
  * ray is tested against together (GNU C vector extensions: gcc and clang
  * turn them into SIMD instructions). Each box is padded so that every ray
@@ -18,8 +19,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "geometry/cube.h"
 #include "geometry/ray.h"
 #include "geometry/sphere.h"
+#include "geometry/square.h"
 #include "geometry/triangle.h"
 
 enum {
@@ -57,8 +60,31 @@ static inline float bvh_float_above(double x)
     return isinf(x) ? (float)x : (float)(x + bvh_margin(x));
 }
 
-/* A primitive reference: BVH_TRIANGLE set for a triangle, the index below. */
-#define BVH_TRIANGLE 0x80000000u
+/* A primitive reference: its kind in the top two bits, its index in the
+ * kind's array below them. The kinds' order (spheres, triangles, cubes,
+ * squares) is the order crossings are sorted in. */
+enum { BVH_SPHERE = 0, BVH_TRIANGLE = 1, BVH_CUBE = 2, BVH_SQUARE = 3 };
+#define BVH_KIND_SHIFT 30
+#define BVH_INDEX_MASK 0x3fffffffu
+#define BVH_MAX_OF_KIND (BVH_INDEX_MASK + 1u) /* shapes of one kind, at most */
+
+/* Returns the reference of the shape of kind and index. */
+static inline uint32_t bvh_ref(unsigned kind, size_t index)
+{
+    return (uint32_t)kind << BVH_KIND_SHIFT | (uint32_t)index;
+}
+
+/* Returns the kind of reference ref. */
+static inline unsigned bvh_kind(uint32_t ref)
+{
+    return ref >> BVH_KIND_SHIFT;
+}
+
+/* Returns the index of reference ref in its kind's array. */
+static inline size_t bvh_index(uint32_t ref)
+{
+    return ref & BVH_INDEX_MASK;
+}
 
 /* A node: up to BVH_WIDTH children, each a node or a leaf (a run of
  * primitive references), their boxes laid out by coordinate so that one
@@ -83,6 +109,10 @@ typedef struct {
     size_t sphere_count;
     const Triangle *triangles;
     size_t triangle_count;
+    const Cube *cubes;
+    size_t cube_count;
+    const Square *squares;
+    size_t square_count;
 } BvhShapes;
 
 typedef struct Bvh {
@@ -103,13 +133,13 @@ typedef struct Bvh {
                             processor has them; 0 runs the other */
 } Bvh;
 
-/* Builds the hierarchy of shapes' spheres and triangles into *bvh in
+/* Builds the hierarchy of shapes' bounded shapes into *bvh in
  * O(n log n), with up to threads threads (in OpenMP builds; the hierarchy
  * is the same whatever their number). reach is the largest magnitude of
  * any coordinate, other than the shapes' own, that rays start from or
  * aim at (camera, screen, lights, unbounded shapes): the boxes' padding
  * grows with it. Returns 0, or -1 (nothing allocated) when memory runs out
- * or there are 2^31 shapes of a kind or of both. */
+ * or there are BVH_MAX_OF_KIND shapes of a kind, or 2^31 in all. */
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
 
 /* Releases what *bvh owns. */
@@ -128,11 +158,11 @@ typedef struct {
     unsigned order; /* the object's position among all objects */
 } BvhHit;
 
-/* Finds the sphere or triangle the ray crosses first at 0 < t < tmax (the
+/* Finds the shape the ray crosses first at 0 < t < tmax (the
  * earliest-listed on an exact tie); returns 1 with *hit set, or 0. */
 int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
 
-/* Returns 1 when some sphere or triangle crosses the ray at 0 < t < tmax
+/* Returns 1 when some shape crosses the ray at 0 < t < tmax
  * (tmax = 1: the segment from ray->origin to ray->origin + ray->dir), else 0. */
 int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax);
 
@@ -141,7 +171,7 @@ int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax);
  * value that ends the walk. */
 typedef int (*BvhVisit)(void *ctx, uint32_t prim, int crossings);
 
-/* Calls visit(ctx, ...) for each sphere and triangle the ray crosses at
+/* Calls visit(ctx, ...) for each shape the ray crosses at
  * 0 < t < tmax, in no set order, until one call returns non-zero; returns
  * that value, or 0 when every crossing was visited. */
 int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);

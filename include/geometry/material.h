@@ -23,25 +23,41 @@ typedef struct {
     int texture;           /* index in the scene's textures, or -1: Ci is
                               then the colour above */
     TextureFilter filter;  /* lookup used with the texture */
-    int phong;             /* index in the scene's Blinn-Phong materials, or
-                              -1: the course's shading rule (trace.h) */
+    int named;             /* index in the scene's named materials, whose
+                              model shades it (shade.h), or -1: the
+                              course's rule (trace.h) */
+    int stripes;           /* 1: Ci is striped (seed 001's pattern, shade.h):
+                              the colour, then black, across the shape */
 } Material;
 
-/* A material of seed 002's keyword format: a named Material (its colour,
- * rho_r as the mirror weight, tau as the transparency, eta_r as the index),
- * shaded by Blinn-Phong with the weights below (docs/scene-format.md). */
+/* How a named material is shaded (shade.h, trace.h): the keyword format's
+ * Blinn-Phong and Whitted sum, or one of the MPL format's four kinds. */
+typedef enum {
+    MODEL_PHONG,     /* ka, kd, ks, alpha; C = local + R Cr + T Ct */
+    MODEL_MATTE,     /* diffuse only */
+    MODEL_PLASTIC,   /* diffuse and specular, a mirror weighted by Fresnel */
+    MODEL_METALLIC,  /* a mirror tinted by the colour, and specular */
+    MODEL_DIELECTRIC /* glass: Fresnel's mirror and refraction, and specular */
+} ShadingModel;
+
+/* A named material of the keyword format (a Material: its colour, rho_r as
+ * the mirror weight, tau as the transparency, eta_r as the index, shaded
+ * by Blinn-Phong with the weights below) or of the MPL format (its kind,
+ * colour, stripes, specular weight as ks, glossiness as alpha, texture and
+ * index). */
 typedef struct {
-    char *name;        /* as written; owned by the scene */
-    Material base;     /* what the shapes that use it copy */
-    double ka, kd, ks; /* ambient, diffuse and specular weights, >= 0 */
-    double shininess;  /* the Blinn-Phong exponent alpha, >= 0 */
-    int line;          /* line of its definition, for messages */
-} PhongMaterial;
+    char *name;          /* as written; owned by the scene */
+    Material base;       /* what the shapes that use it copy */
+    ShadingModel model;  /* how it is shaded */
+    double ka, kd, ks;   /* ambient, diffuse and specular weights, >= 0 */
+    double shininess;    /* the Blinn-Phong exponent alpha, >= 0 */
+    int line;            /* line of its definition, for messages */
+} NamedMaterial;
 
 /* Returns the opaque, untextured material of colour c and mirror weight r. */
 static inline Material material_plain(Colour c, double r)
 {
-    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST, -1};
+    Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
     return m;
 }
 

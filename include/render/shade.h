@@ -43,7 +43,7 @@ Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double wei
 /* Returns the Blinn-Phong local term of material pm at sh, seen from
  * direction view (unit, towards the viewer); n, ns and weight as for
  * shade_local(). */
-Colour shade_phong(const Tracer *t, const Shade *sh, const PhongMaterial *pm, Vec3 n, Vec3 ns,
+Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Vec3 n, Vec3 ns,
                    Vec3 view, double weight);
 
 /* Casts the shadow ray `shadow` up to tmax and returns the share E of the

@@ -15,8 +15,18 @@
 #include "geometry/ray.h"
 #include "scene/scene.h"
 
-/* The kinds of shape a ray can hit. */
-typedef enum { SHAPE_SPHERE, SHAPE_PLANE, SHAPE_TRIANGLE } ShapeKind;
+/* The kinds of shape a ray can hit, in the order transmittance multiplies
+ * their crossings. */
+typedef enum {
+    SHAPE_SPHERE,
+    SHAPE_PLANE,
+    SHAPE_TRIANGLE,
+    SHAPE_CUBE,
+    SHAPE_SQUARE,
+    SHAPE_CYLINDER,
+    SHAPE_CONE,
+    SHAPE_KINDS
+} ShapeKind;
 
 typedef struct {
     real t;         /* ray parameter of the crossing, > 0 */
@@ -29,6 +39,9 @@ typedef struct {
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
 int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
 
+/* Returns the material of the shape of kind and index in scene. */
+const Material *visibility_material(const Scene *scene, ShapeKind kind, size_t index);
+
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +
  * ray->dir (ends excluded), tmax = INFINITY the whole ray. */
@@ -36,8 +49,8 @@ int visibility_occluded(const Scene *scene, const Ray *ray, real tmax);
 
 /* Returns the share of light that passes along the ray from t = 0 to tmax:
  * the product of the transparency T of every surface crossing there, in
- * the order spheres, planes, triangles, each by index (so the same bits
- * with or without the hierarchy). */
+ * the order of ShapeKind, each kind by index (so the same bits with or
+ * without the hierarchy). */
 double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax);
 
 #endif

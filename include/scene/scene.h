@@ -12,8 +12,12 @@
 
 #include <stddef.h>
 
+#include "geometry/cone.h"
+#include "geometry/cube.h"
+#include "geometry/cylinder.h"
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
+#include "geometry/square.h"
 #include "geometry/triangle.h"
 #include "math/colour.h"
 #include "math/vec3.h"
@@ -70,6 +74,18 @@ typedef struct Scene {
     Triangle *triangles;    /* file order; NULL when there are none */
     size_t triangle_count;
     size_t triangle_capacity;
+    Cube *cubes;            /* file order; NULL when there are none */
+    size_t cube_count;
+    size_t cube_capacity;
+    Square *squares;        /* file order; NULL when there are none */
+    size_t square_count;
+    size_t square_capacity;
+    Cylinder *cylinders;    /* file order; NULL when there are none */
+    size_t cylinder_count;
+    size_t cylinder_capacity;
+    Cone *cones;            /* file order; NULL when there are none */
+    size_t cone_count;
+    size_t cone_capacity;
     Material *materials;    /* the triangles' (spheres and planes hold
                                their own) */
     size_t material_count;
@@ -81,9 +97,9 @@ typedef struct Scene {
     Texture *textures;      /* one per distinct texture file */
     size_t texture_count;
     size_t texture_capacity;
-    PhongMaterial *phong;   /* the keyword format's named materials */
-    size_t phong_count;
-    size_t phong_capacity;
+    NamedMaterial *named;   /* the keyword and MPL formats' named materials */
+    size_t named_count;
+    size_t named_capacity;
     SceneMesh *meshes;      /* the keyword format's mesh lines */
     size_t mesh_count;
     size_t mesh_capacity;
@@ -91,8 +107,9 @@ typedef struct Scene {
     Vec3 look_from;         /* keyword: the camera line as written */
     Vec3 look_at;
     double fov;
-    struct Bvh *accel;      /* hierarchy over spheres and triangles, or NULL:
-                               every ray then tests every object */
+    struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
+                               triangles, cubes, squares), or NULL: every ray
+                               then tests every object */
     int has_transparency;   /* some object has T > 0 */
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
@@ -123,6 +140,10 @@ int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, const Sphere *s);
 int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
+int scene_add_cube(Scene *scene, const Cube *c);
+int scene_add_square(Scene *scene, const Square *s);
+int scene_add_cylinder(Scene *scene, const Cylinder *c);
+int scene_add_cone(Scene *scene, const Cone *c);
 
 /* Appends n >= 1 spheres at once, as n calls of scene_add_sphere() would (the
  * same room; their positions among the objects set here): fill(room, ctx)
@@ -173,7 +194,7 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
 
 /* Appends *m, taking ownership of its name (freed on failure); returns its
  * index, or -1 when memory runs out. */
-int scene_add_phong(Scene *scene, PhongMaterial *m);
+int scene_add_named(Scene *scene, NamedMaterial *m);
 
 /* Appends *mesh, taking ownership of its strings (freed on failure);
  * returns 0, or -1 when memory runs out. */
@@ -183,8 +204,12 @@ int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
  * -1 (tex released) when memory runs out. */
 int scene_add_texture(Scene *scene, Texture *tex);
 
+/* Returns how many of the scene's shapes are bounded, and so go into the
+ * hierarchy: spheres, triangles, cubes and squares. */
+size_t scene_bounded_count(const Scene *scene);
+
 /* Builds the acceleration structure (bvh.h) when the scene has enough
- * spheres and triangles to gain from one, with up to threads threads;
+ * bounded shapes to gain from one, with up to threads threads;
  * returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
  * would pass the memory limit, or -1 when memory runs out (the scene is
  * then left without one, and still renders). */

@@ -47,25 +47,66 @@ real bvh_padding(const BvhShapes *shapes, real reach, int threads)
     for (size_t i = 0; i < triangles; i++)
         for (int k = 0; k < 3; k++)
             m = bvh_farther(m, shapes->triangles[i].v[k]);
+    for (size_t i = 0; i < shapes->cube_count; i++)
+        m = bvh_farther(bvh_farther(m, shapes->cubes[i].lo), shapes->cubes[i].hi);
+    for (size_t i = 0; i < shapes->square_count; i++) {
+        const Square *sq = &shapes->squares[i];
+        real r = bvh_farther(0, sq->centre) + 2 * sq->half;
+        m = r > m ? r : m;
+    }
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
+}
+
+/* Pads p's box by pad on every side. */
+static void bvh_pad(BuildPrim *p, real pad)
+{
+    for (int a = 0; a < 3; a++) {
+        p->box.lo[a] -= pad;
+        p->box.hi[a] += pad;
+    }
 }
 
 void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p)
 {
+    size_t i = bvh_index(ref);
+
     p->ref = ref;
-    if (ref & BVH_TRIANGLE) {
-        const Triangle *t = &shapes->triangles[ref & ~BVH_TRIANGLE];
+    switch (bvh_kind(ref)) {
+    case BVH_TRIANGLE: {
+        const Triangle *t = &shapes->triangles[i];
         box_empty(&p->box);
         for (int k = 0; k < 3; k++) {
             real v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
             box_grow_point(&p->box, v);
         }
-        for (int a = 0; a < 3; a++) {
-            p->box.lo[a] -= pad;
-            p->box.hi[a] += pad;
+        bvh_pad(p, pad);
+        break;
+    }
+    case BVH_CUBE: {
+        const Cube *c = &shapes->cubes[i];
+        real lo[3] = {c->lo.x, c->lo.y, c->lo.z}, hi[3] = {c->hi.x, c->hi.y, c->hi.z};
+        box_empty(&p->box);
+        box_grow_point(&p->box, lo);
+        box_grow_point(&p->box, hi);
+        bvh_pad(p, pad);
+        break;
+    }
+    case BVH_SQUARE: {
+        /* Its four corners; the plane test rounds like a triangle's. */
+        const Square *sq = &shapes->squares[i];
+        Vec3 u = vec3_scale(sq->axis_u, sq->half), v = vec3_scale(sq->axis_v, sq->half);
+        box_empty(&p->box);
+        for (int k = 0; k < 4; k++) {
+            Vec3 q = vec3_add(vec3_add(sq->centre, k & 1 ? u : vec3_neg(u)), k & 2 ? v : vec3_neg(v));
+            real c[3] = {q.x, q.y, q.z};
+            box_grow_point(&p->box, c);
         }
-    } else {
-        const Sphere *s = &shapes->spheres[ref];
+        /* The corners round by a few ulps of the square's size too. */
+        bvh_pad(p, pad + 2 * sq->half * REAL_EPSILON * BVH_PAD_ULPS);
+        break;
+    }
+    default: {
+        const Sphere *s = &shapes->spheres[i];
         real c[3] = {s->centre.x, s->centre.y, s->centre.z};
         real r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
         for (int a = 0; a < 3; a++) {
@@ -73,5 +114,5 @@ void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p)
             p->box.hi[a] = c[a] + r;
         }
     }
+    }
 }
-

@@ -63,7 +63,10 @@ static int bvh_has_avx2(void)
 
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 {
-    size_t n = shapes->sphere_count + shapes->triangle_count;
+    size_t n = shapes->sphere_count + shapes->triangle_count + shapes->cube_count +
+               shapes->square_count;
+    size_t first[4] = {0, shapes->sphere_count, shapes->sphere_count + shapes->triangle_count,
+                       n - shapes->square_count};
     BuildPrim *prims;
     BuildNode *nodes;
     real pad = bvh_padding(shapes, reach, threads);
@@ -72,8 +75,9 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     bvh->shapes = *shapes;
     bvh->avx2 = bvh_has_avx2();
     /* Binary nodes are numbered below 2n in 32 bits. */
-    if (shapes->sphere_count >= BVH_TRIANGLE || shapes->triangle_count >= BVH_TRIANGLE || n == 0 ||
-        n > UINT32_MAX / 2)
+    if (shapes->sphere_count >= BVH_MAX_OF_KIND || shapes->triangle_count >= BVH_MAX_OF_KIND ||
+        shapes->cube_count >= BVH_MAX_OF_KIND || shapes->square_count >= BVH_MAX_OF_KIND ||
+        n == 0 || n > UINT32_MAX / 2)
         return -1;
     prims = malloc(n * sizeof *prims);
     nodes = malloc((2 * n - 1) * sizeof *nodes);
@@ -88,11 +92,10 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 #pragma omp parallel for num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #endif
     for (size_t i = 0; i < n; i++) {
-        if (i < shapes->sphere_count)
-            bvh_prim_box(shapes, (uint32_t)i, pad, &prims[i]);
-        else
-            bvh_prim_box(shapes, (uint32_t)(i - shapes->sphere_count) | BVH_TRIANGLE, pad,
-                         &prims[i]);
+        unsigned kind = i >= first[3] ? BVH_SQUARE : i >= first[2] ? BVH_CUBE
+                        : i >= first[1]               ? BVH_TRIANGLE
+                                                      : BVH_SPHERE;
+        bvh_prim_box(shapes, bvh_ref(kind, i - first[kind]), pad, &prims[i]);
     }
     bvh_frame(bvh, prims, n);
 #ifdef _OPENMP
@@ -134,8 +137,8 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
         return -1;
     }
     for (size_t i = 0; i < n && bvh->balls; i++) {
-        if (!(bvh->prims[i] & BVH_TRIANGLE)) {
-            const Sphere *s = &shapes->spheres[bvh->prims[i]];
+        if (bvh_kind(bvh->prims[i]) == BVH_SPHERE) {
+            const Sphere *s = &shapes->spheres[bvh_index(bvh->prims[i])];
             bvh->balls[i][0] = s->centre.x;
             bvh->balls[i][1] = s->centre.y;
             bvh->balls[i][2] = s->centre.z;

@@ -320,18 +320,34 @@ static inline int bvh_prim_hit(const Bvh *bvh, uint32_t k, const Ray *ray,
                                real tmin, real tmax, real *t)
 {
     uint32_t ref = bvh->prims[k];
+    unsigned kind = bvh_kind(ref);
     const real *b;
 
-    if (ref & BVH_TRIANGLE)
-        return triangle_intersect(&bvh->shapes.triangles[ref & ~BVH_TRIANGLE], ray, tmin, tmax, t);
-    b = bvh->balls[k]; /* there when there are spheres */
-    return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
+    if (kind == BVH_SPHERE) {
+        b = bvh->balls[k]; /* there when there are spheres */
+        return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
+    }
+    if (kind == BVH_TRIANGLE)
+        return triangle_intersect(&bvh->shapes.triangles[bvh_index(ref)], ray, tmin, tmax, t);
+    if (kind == BVH_CUBE)
+        return cube_intersect(&bvh->shapes.cubes[bvh_index(ref)], ray, tmin, tmax, t);
+    return square_intersect(&bvh->shapes.squares[bvh_index(ref)], ray, tmin, tmax, t);
 }
 
 static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
 {
-    return ref & BVH_TRIANGLE ? bvh->shapes.triangles[ref & ~BVH_TRIANGLE].order
-                              : bvh->shapes.spheres[ref].order;
+    size_t i = bvh_index(ref);
+
+    switch (bvh_kind(ref)) {
+    case BVH_SPHERE:
+        return bvh->shapes.spheres[i].order;
+    case BVH_TRIANGLE:
+        return bvh->shapes.triangles[i].order;
+    case BVH_CUBE:
+        return bvh->shapes.cubes[i].order;
+    default:
+        return bvh->shapes.squares[i].order;
+    }
 }
 
 /* A child still to visit: a node (count 0) or a leaf. */
@@ -488,12 +504,21 @@ int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count)) {
         for (uint32_t k = first; k < first + count; k++) {
             uint32_t ref = bvh->prims[k];
+            size_t i = bvh_index(ref);
             int c, rc;
-            if (ref & BVH_TRIANGLE)
-                c = triangle_intersect(&bvh->shapes.triangles[ref & ~BVH_TRIANGLE], ray, 0, tmax,
-                                       &t);
-            else
-                c = sphere_crossings(&bvh->shapes.spheres[ref], ray, 0, tmax);
+            switch (bvh_kind(ref)) {
+            case BVH_SPHERE:
+                c = sphere_crossings(&bvh->shapes.spheres[i], ray, 0, tmax);
+                break;
+            case BVH_TRIANGLE:
+                c = triangle_intersect(&bvh->shapes.triangles[i], ray, 0, tmax, &t);
+                break;
+            case BVH_CUBE:
+                c = cube_crossings(&bvh->shapes.cubes[i], ray, 0, tmax);
+                break;
+            default:
+                c = square_intersect(&bvh->shapes.squares[i], ray, 0, tmax, &t);
+            }
             if (c != 0 && (rc = visit(ctx, ref, c)) != 0)
                 return rc;
         }

@@ -41,8 +41,8 @@ void cut_init(Cut *cut, const Scene *scene, double cutoff)
     cut->deferred_capacity = 0;
     for (size_t i = 0; i < scene->light_count; i++)
         lights += colour_max(scene->lights[i].colour) *
-                  (scene->phong_count > 0 ? scene->lights[i].intensity : 1);
-    if (scene->phong_count == 0) {
+                  (scene->named_count > 0 ? scene->lights[i].intensity : 1);
+    if (scene->named_count == 0) {
         /* The course's rule: local <= Ca + sum of Cs (Ci <= 255, cos <= 1,
          * E <= 1), and C = (1 - R - T) local + R Cr + T Ct is a mean of
          * local, Cr and Ct (weights >= 0 adding to 1; on total internal
@@ -57,8 +57,8 @@ void cut_init(Cut *cut, const Scene *scene, double cutoff)
      * rho Cr + tau Ct with rho + tau <= 1: a ray that may still spawn k
      * levels of secondary rays sees at most max(background, local) +
      * k local. */
-    for (size_t i = 0; i < scene->phong_count; i++) {
-        const PhongMaterial *m = &scene->phong[i];
+    for (size_t i = 0; i < scene->named_count; i++) {
+        const NamedMaterial *m = &scene->named[i];
         local = fmax(local, m->ka * colour_max(scene->ambient) + (m->kd + m->ks) * lights);
     }
     cut->base = fmax(bg, local);

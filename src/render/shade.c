@@ -7,18 +7,40 @@
 #include "render/cut.h"
 #include "scene/texture.h"
 
+/* Returns seed 001's stripes' count along u on the shape of kind: by its
+ * program's rule, 10 around most shapes (30 r on a sphere of radius r < 1,
+ * 10 r on a larger one), half / 10 across a square, 1 on a plane or a
+ * triangle. */
+static double shade_stripe_count(const Scene *scene, const Hit *hit)
+{
+    switch (hit->kind) {
+    case SHAPE_SPHERE: {
+        double r = scene->spheres[hit->index].radius;
+        return r < 1 ? 30 * r : 10 * r;
+    }
+    case SHAPE_SQUARE:
+        return scene->squares[hit->index].half / 10;
+    case SHAPE_PLANE:
+    case SHAPE_TRIANGLE:
+        return 1;
+    default:
+        return 10;
+    }
+}
+
 Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
 {
     Shade sh;
     double uv[2] = {0, 0};
-    int clamp_v = 0;
+    int clamp_v = 0, want_uv;
 
+    sh.material = visibility_material(scene, hit->kind, hit->index);
+    want_uv = sh.material->texture >= 0 || sh.material->stripes;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         const Sphere *s = &scene->spheres[hit->index];
         sh.sp = sphere_surface_at(s, ray_at(ray, hit->t));
-        sh.material = &s->material;
-        if (s->material.texture >= 0)
+        if (want_uv)
             sphere_uv(sh.sp.normal, uv);
         clamp_v = 1;
         break;
@@ -26,23 +48,53 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
     case SHAPE_PLANE: {
         const Plane *pl = &scene->planes[hit->index];
         sh.sp = plane_surface_at(pl, ray_at(ray, hit->t));
-        sh.material = &pl->material;
-        if (pl->material.texture >= 0)
+        if (want_uv)
             plane_uv(pl, sh.sp.point, uv);
         break;
     }
-    default: {
+    case SHAPE_TRIANGLE: {
         const Triangle *tri = &scene->triangles[hit->index];
         sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
-        sh.material = scene_material_of(scene, tri);
+        break;
+    }
+    case SHAPE_CUBE: {
+        const Cube *c = &scene->cubes[hit->index];
+        sh.sp = cube_surface_at(c, ray_at(ray, hit->t));
+        if (want_uv)
+            cube_uv(c, sh.sp.point, sh.sp.normal, uv);
+        break;
+    }
+    case SHAPE_SQUARE: {
+        const Square *q = &scene->squares[hit->index];
+        sh.sp = square_surface_at(q, ray_at(ray, hit->t));
+        if (want_uv)
+            square_uv(q, sh.sp.point, uv);
+        break;
+    }
+    case SHAPE_CYLINDER: {
+        const Cylinder *c = &scene->cylinders[hit->index];
+        sh.sp = cylinder_surface_at(c, ray_at(ray, hit->t));
+        if (want_uv)
+            cylinder_uv(c, sh.sp.point, sh.sp.normal, uv);
+        break;
+    }
+    default: {
+        const Cone *c = &scene->cones[hit->index];
+        sh.sp = cone_surface_at(c, ray_at(ray, hit->t));
+        if (want_uv)
+            cone_uv(c, sh.sp.point, uv);
         break;
     }
     }
-    if (sh.material->texture >= 0)
+    if (sh.material->texture >= 0) {
         sh.colour = texture_lookup(&scene->textures[sh.material->texture], uv[0], uv[1],
                                    sh.material->filter, clamp_v);
-    else
+    } else if (sh.material->stripes) {
+        double x = uv[0] * shade_stripe_count(scene, hit);
+        sh.colour = x - floor(x) < 0.5 ? sh.material->colour : colour(0, 0, 0);
+    } else {
         sh.colour = sh.material->colour;
+    }
     return sh;
 }
 
@@ -138,7 +190,7 @@ static inline Colour shade_direct(const Tracer *t, const Light *light, const Sha
  * material pm per unit of E i: kd cos_a Ci Cs / 255 + ks max(0, N . H)^alpha
  * Cs, with ns the shading normal, l and view unit vectors towards the light
  * and the viewer. */
-static inline Colour shade_phong_light(const PhongMaterial *pm, Colour ci, Colour cs, double cos_a,
+static inline Colour shade_phong_light(const NamedMaterial *pm, Colour ci, Colour cs, double cos_a,
                                        Vec3 ns, Vec3 l, Vec3 view)
 {
     double nh = vec3_dot(ns, vec3_normalize(vec3_add(l, view)));
@@ -149,7 +201,7 @@ static inline Colour shade_phong_light(const PhongMaterial *pm, Colour ci, Colou
                   pm->kd * cos_a * (ci.b * cs.b / 255) + spec * cs.b);
 }
 
-Colour shade_phong(const Tracer *t, const Shade *sh, const PhongMaterial *pm, Vec3 n, Vec3 ns,
+Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Vec3 n, Vec3 ns,
                    Vec3 view, double weight)
 {
     const Scene *scene = t->scene;

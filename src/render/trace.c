@@ -81,10 +81,10 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     r = sh.material->reflection;
     tr = sh.material->transparency;
     own = 1 - r - tr;
-    if (sh.material->phong >= 0)
+    if (sh.material->named >= 0)
         /* Whitted's sum: the Blinn-Phong weights already scale the local
          * term. */
-        c = shade_phong(t, &sh, &scene->phong[sh.material->phong], n, ns,
+        c = shade_phong(t, &sh, &scene->named[sh.material->named], n, ns,
                         vec3_normalize(vec3_neg(ray->dir)), weight);
     else
         c = colour_scale(shade_local(t, &sh, n, ns, weight * (own > 0 ? own : 0)),

@@ -6,6 +6,115 @@
 
 #include "accel/bvh.h"
 
+/* The hierarchy's kinds of shape, as ShapeKinds. */
+static const ShapeKind visibility_of_bvh[4] = {SHAPE_SPHERE, SHAPE_TRIANGLE, SHAPE_CUBE,
+                                               SHAPE_SQUARE};
+
+/* Returns how many shapes of kind the scene has. */
+static size_t visibility_count(const Scene *scene, ShapeKind kind)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return scene->sphere_count;
+    case SHAPE_PLANE:
+        return scene->plane_count;
+    case SHAPE_TRIANGLE:
+        return scene->triangle_count;
+    case SHAPE_CUBE:
+        return scene->cube_count;
+    case SHAPE_SQUARE:
+        return scene->square_count;
+    case SHAPE_CYLINDER:
+        return scene->cylinder_count;
+    default:
+        return scene->cone_count;
+    }
+}
+
+const Material *visibility_material(const Scene *scene, ShapeKind kind, size_t k)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return &scene->spheres[k].material;
+    case SHAPE_PLANE:
+        return &scene->planes[k].material;
+    case SHAPE_TRIANGLE:
+        return scene_material_of(scene, &scene->triangles[k]);
+    case SHAPE_CUBE:
+        return &scene->cubes[k].material;
+    case SHAPE_SQUARE:
+        return &scene->squares[k].material;
+    case SHAPE_CYLINDER:
+        return &scene->cylinders[k].material;
+    default:
+        return &scene->cones[k].material;
+    }
+}
+
+/* Returns the position among all objects of shape k of kind. */
+static unsigned visibility_order(const Scene *scene, ShapeKind kind, size_t k)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return scene->spheres[k].order;
+    case SHAPE_PLANE:
+        return scene->planes[k].order;
+    case SHAPE_TRIANGLE:
+        return scene->triangles[k].order;
+    case SHAPE_CUBE:
+        return scene->cubes[k].order;
+    case SHAPE_SQUARE:
+        return scene->squares[k].order;
+    case SHAPE_CYLINDER:
+        return scene->cylinders[k].order;
+    default:
+        return scene->cones[k].order;
+    }
+}
+
+/* Finds where the ray first crosses shape k of kind with 0 < t < tmax;
+ * returns 1 with *t, or 0. */
+static int visibility_hit(const Scene *scene, ShapeKind kind, size_t k, const Ray *ray, real tmax,
+                          real *t)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, t);
+    case SHAPE_PLANE:
+        return plane_intersect(&scene->planes[k], ray, 0, tmax, t);
+    case SHAPE_TRIANGLE:
+        return triangle_intersect(&scene->triangles[k], ray, 0, tmax, t);
+    case SHAPE_CUBE:
+        return cube_intersect(&scene->cubes[k], ray, 0, tmax, t);
+    case SHAPE_SQUARE:
+        return square_intersect(&scene->squares[k], ray, 0, tmax, t);
+    case SHAPE_CYLINDER:
+        return cylinder_intersect(&scene->cylinders[k], ray, 0, tmax, t);
+    default:
+        return cone_intersect(&scene->cones[k], ray, 0, tmax, t);
+    }
+}
+
+/* Returns how many times the ray crosses shape k of kind at 0 < t < tmax. */
+static int visibility_crossings(const Scene *scene, ShapeKind kind, size_t k, const Ray *ray,
+                                real tmax)
+{
+    real t;
+
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return sphere_crossings(&scene->spheres[k], ray, 0, tmax);
+    case SHAPE_CUBE:
+        return cube_crossings(&scene->cubes[k], ray, 0, tmax);
+    case SHAPE_CYLINDER:
+        return cylinder_crossings(&scene->cylinders[k], ray, 0, tmax);
+    case SHAPE_CONE:
+        return cone_crossings(&scene->cones[k], ray, 0, tmax);
+    default: /* flat: once or never */
+        return visibility_hit(scene, kind, k, ray, tmax, &t);
+    }
+}
+
 /* Stores in *hit the object of kind, index and order crossed at t. */
 static void visibility_set_hit(Hit *hit, real t, ShapeKind kind, size_t index, unsigned order)
 {
@@ -15,27 +124,26 @@ static void visibility_set_hit(Hit *hit, real t, ShapeKind kind, size_t index, u
     hit->order = order;
 }
 
-/* Says whether a crossing at t of the object of position order beats *hit
- * (t is at most hit->t): it is nearer, or as near and listed first. */
-static int visibility_beats(const Hit *hit, int found, real t, unsigned order)
-{
-    return !found || t < hit->t || order < hit->order;
-}
-
-/* Continues visibility_nearest() over planes, after *hit (when found); returns
- * whether any object is hit. */
-static int visibility_nearest_planes(const Scene *scene, const Ray *ray, real tmax, Hit *hit,
-                                int found)
+/* Continues visibility_nearest() over the shapes of kind, one by one,
+ * after *hit (when found); returns whether any object is hit. */
+static int visibility_nearest_of(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax,
+                                 Hit *hit, int found)
 {
     /* An exact tie with an earlier-listed object must be seen: the bound is
      * the next real above the best t. */
     real bound = found ? real_next(hit->t, 1) : tmax;
+    size_t n = visibility_count(scene, kind);
 
-    for (size_t k = 0; k < scene->plane_count; k++) {
-        const Plane *pl = &scene->planes[k];
+    for (size_t k = 0; k < n; k++) {
         real t;
-        if (plane_intersect(pl, ray, 0, bound, &t) && visibility_beats(hit, found, t, pl->order)) {
-            visibility_set_hit(hit, t, SHAPE_PLANE, k, pl->order);
+        unsigned order;
+        if (!visibility_hit(scene, kind, k, ray, bound, &t))
+            continue;
+        /* t is at most hit->t: it wins when nearer, or as near and listed
+         * first. */
+        order = visibility_order(scene, kind, k);
+        if (!found || t < hit->t || order < hit->order) {
+            visibility_set_hit(hit, t, kind, k, order);
             found = 1;
             bound = real_next(t, 1);
         }
@@ -43,35 +151,22 @@ static int visibility_nearest_planes(const Scene *scene, const Ray *ray, real tm
     return found;
 }
 
-/* Continues visibility_nearest() over triangles, tested one by one. */
-static int visibility_nearest_triangles(const Scene *scene, const Ray *ray, real tmax, Hit *hit,
-                                   int found)
-{
-    real bound = found ? real_next(hit->t, 1) : tmax;
+/* The unbounded kinds, which the hierarchy leaves to the loops. */
+static const ShapeKind visibility_unbounded[] = {SHAPE_PLANE, SHAPE_CYLINDER, SHAPE_CONE};
 
-    for (size_t k = 0; k < scene->triangle_count; k++) {
-        const Triangle *tri = &scene->triangles[k];
-        real t;
-        if (triangle_intersect(tri, ray, 0, bound, &t) &&
-            visibility_beats(hit, found, t, tri->order)) {
-            visibility_set_hit(hit, t, SHAPE_TRIANGLE, k, tri->order);
-            found = 1;
-            bound = real_next(t, 1);
-        }
-    }
-    return found;
-}
-
-/* visibility_nearest() through the hierarchy, planes aside. */
+/* visibility_nearest() through the hierarchy, the unbounded shapes aside. */
 static int visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     BvhHit bh;
     int found = bvh_nearest(scene->accel, ray, tmax, &bh);
 
     if (found)
-        visibility_set_hit(hit, bh.t, bh.prim & BVH_TRIANGLE ? SHAPE_TRIANGLE : SHAPE_SPHERE,
-                      bh.prim & ~BVH_TRIANGLE, bh.order);
-    return scene->plane_count > 0 ? visibility_nearest_planes(scene, ray, tmax, hit, found) : found;
+        visibility_set_hit(hit, bh.t, visibility_of_bvh[bvh_kind(bh.prim)], bvh_index(bh.prim),
+                           bh.order);
+    for (int i = 0; i < 3; i++)
+        if (visibility_count(scene, visibility_unbounded[i]) > 0)
+            found = visibility_nearest_of(scene, visibility_unbounded[i], ray, tmax, hit, found);
+    return found;
 }
 
 int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
@@ -95,27 +190,34 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
     }
     if (found)
         visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
-    if (scene->plane_count > 0)
-        found = visibility_nearest_planes(scene, ray, tmax, hit, found);
-    if (scene->triangle_count > 0)
-        found = visibility_nearest_triangles(scene, ray, tmax, hit, found);
+    for (int kind = SHAPE_PLANE; kind < SHAPE_KINDS; kind++)
+        if (visibility_count(scene, (ShapeKind)kind) > 0)
+            found = visibility_nearest_of(scene, (ShapeKind)kind, ray, tmax, hit, found);
     return found;
+}
+
+/* Says whether some shape of kind crosses the ray at 0 < t < tmax. */
+static int visibility_occluded_by(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax)
+{
+    size_t n = visibility_count(scene, kind);
+    real t;
+
+    for (size_t k = 0; k < n; k++)
+        if (visibility_hit(scene, kind, k, ray, tmax, &t))
+            return 1;
+    return 0;
 }
 
 int visibility_occluded(const Scene *scene, const Ray *ray, real tmax)
 {
-    real t;
-
-    for (size_t k = 0; k < scene->plane_count; k++)
-        if (plane_intersect(&scene->planes[k], ray, 0, tmax, &t))
+    for (int i = 0; i < 3; i++)
+        if (visibility_occluded_by(scene, visibility_unbounded[i], ray, tmax))
             return 1;
     if (scene->accel)
         return bvh_occluded(scene->accel, ray, tmax);
-    for (size_t k = 0; k < scene->sphere_count; k++)
-        if (sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, &t))
-            return 1;
-    for (size_t k = 0; k < scene->triangle_count; k++)
-        if (triangle_intersect(&scene->triangles[k], ray, 0, tmax, &t))
+    for (int kind = SHAPE_SPHERE; kind < SHAPE_KINDS; kind++)
+        if (kind != SHAPE_PLANE && kind != SHAPE_CYLINDER && kind != SHAPE_CONE &&
+            visibility_occluded_by(scene, (ShapeKind)kind, ray, tmax))
             return 1;
     return 0;
 }
@@ -129,18 +231,17 @@ static int visibility_attenuate(double *share, const Material *m, int crossings)
     return *share > 0;
 }
 
-/* Multiplies *share by the transparency of every plane the ray crosses at
- * 0 < t < tmax; returns 0 once nothing is left, else 1. */
-static int visibility_attenuate_planes(const Scene *scene, const Ray *ray, real tmax,
-                                  double *share)
+/* Multiplies *share by the transparency of every shape of kind the ray
+ * crosses at 0 < t < tmax, by index; returns 0 once nothing is left. */
+static int visibility_attenuate_by(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax,
+                                   double *share)
 {
-    real t;
+    size_t n = visibility_count(scene, kind);
 
-    for (size_t k = 0; k < scene->plane_count; k++) {
-        const Plane *pl = &scene->planes[k];
-        if (!visibility_attenuate(share, &pl->material, plane_intersect(pl, ray, 0, tmax, &t)))
+    for (size_t k = 0; k < n; k++)
+        if (!visibility_attenuate(share, visibility_material(scene, kind, k),
+                                  visibility_crossings(scene, kind, k, ray, tmax)))
             return 0;
-    }
     return 1;
 }
 
@@ -159,17 +260,19 @@ typedef struct {
     int n;
 } VisibilityCrossings;
 
+/* Returns the material of the hierarchy's primitive prim. */
+static const Material *visibility_material_of(const Scene *scene, uint32_t prim)
+{
+    return visibility_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim));
+}
+
 /* bvh_crossings()'s visit: keeps the crossing; returns -2 at an opaque
  * surface (no light passes) and -1 when the list is full. */
 static int visibility_keep_crossing(void *ctx, uint32_t prim, int crossings)
 {
     VisibilityCrossings *tc = ctx;
-    const Scene *scene = tc->scene;
-    const Material *m = prim & BVH_TRIANGLE
-                            ? scene_material_of(scene, &scene->triangles[prim & ~BVH_TRIANGLE])
-                            : &scene->spheres[prim].material;
 
-    if (!(m->transparency > 0))
+    if (!(visibility_material_of(tc->scene, prim)->transparency > 0))
         return -2;
     if (tc->n == VISIBILITY_CROSSINGS_MAX)
         return -1;
@@ -179,10 +282,10 @@ static int visibility_keep_crossing(void *ctx, uint32_t prim, int crossings)
     return 0;
 }
 
-/* visibility_transmittance() through the hierarchy: the crossings it lists are
- * sorted and multiplied in the order of the loop below (spheres, planes,
- * triangles, each by index), so the product has the very same bits.
- * Returns -1 when there are too many crossings to list. */
+/* visibility_transmittance() through the hierarchy: the crossings it lists
+ * are sorted and multiplied in the order of the loops below (ShapeKind's,
+ * each kind by index), so the product has the very same bits. Returns -1
+ * when there are too many crossings to list. */
 static double visibility_transmittance_accel(const Scene *scene, const Ray *ray, real tmax)
 {
     VisibilityCrossings tc;
@@ -197,8 +300,8 @@ static double visibility_transmittance_accel(const Scene *scene, const Ray *ray,
     if (rc < 0)
         return -1;
     n = tc.n;
-    /* Insertion sort by reference (spheres first: BVH_TRIANGLE is the top
-     * bit): the lists are short. */
+    /* Insertion sort by reference (by kind, spheres first, then by index):
+     * the lists are short. */
     for (int j = 1; j < n; j++) {
         VisibilityCrossing c = tc.c[j];
         int k = j;
@@ -208,42 +311,33 @@ static double visibility_transmittance_accel(const Scene *scene, const Ray *ray,
         }
         tc.c[k] = c;
     }
-    for (; i < n && !(tc.c[i].prim & BVH_TRIANGLE); i++)
-        if (!visibility_attenuate(&share, &scene->spheres[tc.c[i].prim].material, tc.c[i].crossings))
+    for (; i < n && bvh_kind(tc.c[i].prim) == BVH_SPHERE; i++)
+        if (!visibility_attenuate(&share, visibility_material_of(scene, tc.c[i].prim),
+                                  tc.c[i].crossings))
             return 0;
-    if (!visibility_attenuate_planes(scene, ray, tmax, &share))
+    if (!visibility_attenuate_by(scene, SHAPE_PLANE, ray, tmax, &share))
         return 0;
     for (; i < n; i++)
-        if (!visibility_attenuate(
-                &share, scene_material_of(scene, &scene->triangles[tc.c[i].prim & ~BVH_TRIANGLE]),
-                tc.c[i].crossings))
+        if (!visibility_attenuate(&share, visibility_material_of(scene, tc.c[i].prim),
+                                  tc.c[i].crossings))
             return 0;
-    return share;
+    return visibility_attenuate_by(scene, SHAPE_CYLINDER, ray, tmax, &share) &&
+                   visibility_attenuate_by(scene, SHAPE_CONE, ray, tmax, &share)
+               ? share
+               : 0;
 }
 
 double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)
 {
     double share = 1;
-    real t;
 
     if (scene->accel) {
         double s = visibility_transmittance_accel(scene, ray, tmax);
         if (s >= 0)
             return s;
     }
-    for (size_t k = 0; k < scene->sphere_count; k++) {
-        const Sphere *s = &scene->spheres[k];
-        if (!visibility_attenuate(&share, &s->material, sphere_crossings(s, ray, 0, tmax)))
+    for (int kind = SHAPE_SPHERE; kind < SHAPE_KINDS; kind++)
+        if (!visibility_attenuate_by(scene, (ShapeKind)kind, ray, tmax, &share))
             return 0;
-    }
-    if (!visibility_attenuate_planes(scene, ray, tmax, &share))
-        return 0;
-    for (size_t k = 0; k < scene->triangle_count; k++) {
-        const Triangle *tri = &scene->triangles[k];
-        if (!visibility_attenuate(&share, scene_material_of(scene, tri),
-                             triangle_intersect(tri, ray, 0, tmax, &t)))
-            return 0;
-    }
     return share;
 }
-

@@ -2,6 +2,7 @@
 #include "scene/scene.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,7 @@ void scene_init(Scene *scene)
     scene->planes = NULL;
     scene->triangles = NULL;
     scene->textures = NULL;
-    scene->phong = NULL;
+    scene->named = NULL;
     scene->meshes = NULL;
     scene->accel = NULL;
 }
@@ -31,9 +32,9 @@ void scene_free(Scene *scene)
     for (size_t i = 0; i < scene->texture_count; i++)
         texture_free(&scene->textures[i]);
     free(scene->textures);
-    for (size_t i = 0; i < scene->phong_count; i++)
-        free(scene->phong[i].name);
-    free(scene->phong);
+    for (size_t i = 0; i < scene->named_count; i++)
+        free(scene->named[i].name);
+    free(scene->named);
     for (size_t i = 0; i < scene->mesh_count; i++) {
         free(scene->meshes[i].path);
         free(scene->meshes[i].opened);
@@ -43,6 +44,10 @@ void scene_free(Scene *scene)
     free(scene->spheres);
     free(scene->planes);
     free(scene->triangles);
+    free(scene->cubes);
+    free(scene->squares);
+    free(scene->cylinders);
+    free(scene->cones);
     free(scene->materials);
     free(scene->shading);
     scene_init(scene);
@@ -62,10 +67,14 @@ size_t scene_memory(const Scene *scene)
     scene_sum(&m, scene->sphere_capacity * sizeof *scene->spheres);
     scene_sum(&m, scene->plane_capacity * sizeof *scene->planes);
     scene_sum(&m, scene->triangle_capacity * sizeof *scene->triangles);
+    scene_sum(&m, scene->cube_capacity * sizeof *scene->cubes);
+    scene_sum(&m, scene->square_capacity * sizeof *scene->squares);
+    scene_sum(&m, scene->cylinder_capacity * sizeof *scene->cylinders);
+    scene_sum(&m, scene->cone_capacity * sizeof *scene->cones);
     scene_sum(&m, scene->material_capacity * sizeof *scene->materials);
     scene_sum(&m, scene->shading_capacity * sizeof *scene->shading);
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
-    scene_sum(&m, scene->phong_capacity * sizeof *scene->phong);
+    scene_sum(&m, scene->named_capacity * sizeof *scene->named);
     scene_sum(&m, scene->mesh_capacity * sizeof *scene->meshes);
     for (size_t i = 0; i < scene->texture_count; i++)
         scene_sum(&m, texture_memory(&scene->textures[i]));
@@ -126,7 +135,7 @@ static real scene_farther(real m, Vec3 p)
 }
 
 /* Returns the hierarchy's reach (bvh.h): the largest coordinate of the
- * camera, its screen, the lights and the planes. */
+ * camera, its screen, the lights and the unbounded shapes. */
 static real scene_reach(const Scene *scene)
 {
     const Camera *cam = &scene->camera;
@@ -137,15 +146,25 @@ static real scene_reach(const Scene *scene)
         m = scene_farther(m, scene->lights[i].position);
     for (size_t i = 0; i < scene->plane_count; i++)
         m = scene_farther(m, scene->planes[i].point);
+    for (size_t i = 0; i < scene->cylinder_count; i++)
+        m = scene_farther(m, scene->cylinders[i].centre);
+    for (size_t i = 0; i < scene->cone_count; i++)
+        m = scene_farther(scene_farther(m, scene->cones[i].base), scene->cones[i].apex);
     return m;
+}
+
+size_t scene_bounded_count(const Scene *scene)
+{
+    return scene->sphere_count + scene->triangle_count + scene->cube_count + scene->square_count;
 }
 
 int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
-    size_t n = scene->sphere_count + scene->triangle_count;
-    BvhShapes shapes = {scene->spheres, scene->sphere_count, scene->triangles,
-                        scene->triangle_count};
+    size_t n = scene_bounded_count(scene);
+    BvhShapes shapes = {scene->spheres,  scene->sphere_count, scene->triangles,
+                        scene->triangle_count, scene->cubes, scene->cube_count,
+                        scene->squares,  scene->square_count};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
@@ -162,7 +181,8 @@ int scene_build_accel(Scene *scene, int threads)
 
 size_t scene_object_count(const Scene *scene)
 {
-    return scene->sphere_count + scene->plane_count + scene->triangle_count;
+    return scene->sphere_count + scene->plane_count + scene->triangle_count + scene->cube_count +
+           scene->square_count + scene->cylinder_count + scene->cone_count;
 }
 
 int scene_add_light(Scene *scene, const Light *light)
@@ -176,32 +196,65 @@ int scene_add_light(Scene *scene, const Light *light)
     return 0;
 }
 
-int scene_add_sphere(Scene *scene, const Sphere *s)
+/* Appends the size bytes at item to the array *items of *count items (room
+ * for *capacity), giving it its position among the objects (the unsigned
+ * at byte `order` of it) and noting its material m's transparency;
+ * returns 0 or what scene_reserve() returned. */
+static int scene_push_shape(Scene *scene, void **items, size_t *capacity, size_t *count,
+                            const void *item, size_t size, size_t order, const Material *m)
 {
-    int rc = scene_reserve(scene, (void **)&scene->spheres, &scene->sphere_capacity,
-                           scene->sphere_count, sizeof *s);
+    int rc = scene_reserve(scene, items, capacity, *count, size);
+    unsigned position = (unsigned)scene_object_count(scene);
+    char *at;
 
     if (rc != 0)
         return rc;
-    scene->spheres[scene->sphere_count] = *s;
-    scene->spheres[scene->sphere_count].order = (unsigned)scene_object_count(scene);
-    scene->sphere_count++;
-    scene->has_transparency |= s->material.transparency > 0;
+    at = (char *)*items + *count * size;
+    memcpy(at, item, size);
+    memcpy(at + order, &position, sizeof position);
+    (*count)++;
+    scene->has_transparency |= m->transparency > 0;
     return 0;
+}
+
+int scene_add_sphere(Scene *scene, const Sphere *s)
+{
+    return scene_push_shape(scene, (void **)&scene->spheres, &scene->sphere_capacity,
+                            &scene->sphere_count, s, sizeof *s, offsetof(Sphere, order),
+                            &s->material);
 }
 
 int scene_add_plane(Scene *scene, const Plane *p)
 {
-    int rc = scene_reserve(scene, (void **)&scene->planes, &scene->plane_capacity,
-                           scene->plane_count, sizeof *p);
+    return scene_push_shape(scene, (void **)&scene->planes, &scene->plane_capacity,
+                            &scene->plane_count, p, sizeof *p, offsetof(Plane, order),
+                            &p->material);
+}
 
-    if (rc != 0)
-        return rc;
-    scene->planes[scene->plane_count] = *p;
-    scene->planes[scene->plane_count].order = (unsigned)scene_object_count(scene);
-    scene->plane_count++;
-    scene->has_transparency |= p->material.transparency > 0;
-    return 0;
+int scene_add_cube(Scene *scene, const Cube *c)
+{
+    return scene_push_shape(scene, (void **)&scene->cubes, &scene->cube_capacity,
+                            &scene->cube_count, c, sizeof *c, offsetof(Cube, order), &c->material);
+}
+
+int scene_add_square(Scene *scene, const Square *s)
+{
+    return scene_push_shape(scene, (void **)&scene->squares, &scene->square_capacity,
+                            &scene->square_count, s, sizeof *s, offsetof(Square, order),
+                            &s->material);
+}
+
+int scene_add_cylinder(Scene *scene, const Cylinder *c)
+{
+    return scene_push_shape(scene, (void **)&scene->cylinders, &scene->cylinder_capacity,
+                            &scene->cylinder_count, c, sizeof *c, offsetof(Cylinder, order),
+                            &c->material);
+}
+
+int scene_add_cone(Scene *scene, const Cone *c)
+{
+    return scene_push_shape(scene, (void **)&scene->cones, &scene->cone_capacity,
+                            &scene->cone_count, c, sizeof *c, offsetof(Cone, order), &c->material);
 }
 
 long scene_add_material(Scene *scene, const Material *m)
@@ -390,17 +443,17 @@ int scene_add_texture(Scene *scene, Texture *tex)
     return (int)scene->texture_count++;
 }
 
-int scene_add_phong(Scene *scene, PhongMaterial *m)
+int scene_add_named(Scene *scene, NamedMaterial *m)
 {
-    int rc = scene_reserve(scene, (void **)&scene->phong, &scene->phong_capacity,
-                           scene->phong_count, sizeof *m);
+    int rc = scene_reserve(scene, (void **)&scene->named, &scene->named_capacity,
+                           scene->named_count, sizeof *m);
 
     if (rc != 0) {
         free(m->name);
         return rc;
     }
-    scene->phong[scene->phong_count] = *m;
-    return (int)scene->phong_count++;
+    scene->named[scene->named_count] = *m;
+    return (int)scene->named_count++;
 }
 
 int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)

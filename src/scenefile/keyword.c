@@ -123,7 +123,7 @@ static int keyword_find(const Keyword *K, const Scene *scene, const Token *t)
         const char *name;
         if (slot == 0)
             return -1;
-        name = scene->phong[slot - 1].name;
+        name = scene->named[slot - 1].name;
         if (strlen(name) == t->len && memcmp(name, t->text, t->len) == 0)
             return (int)slot - 1;
     }
@@ -139,7 +139,7 @@ static int keyword_file_name(Keyword *K, const Scene *scene, const Token *t, siz
         if (!table)
             return keyword_fail_memory(K);
         for (size_t k = 0; k < index; k++) {
-            Token name = {scene->phong[k].name, strlen(scene->phong[k].name), 0};
+            Token name = {scene->named[k].name, strlen(scene->named[k].name), 0};
             size_t i = keyword_hash(&name) & (size - 1);
             while (table[i])
                 i = (i + 1) & (size - 1);
@@ -214,7 +214,7 @@ static int keyword_numbers_and_material(Keyword *K, const Record *rec, int first
                      lex_quote(q, sizeof q, name), spec->what);
         return -1;
     }
-    *m = scene->phong[index].base;
+    *m = scene->named[index].base;
     return 0;
 }
 
@@ -273,7 +273,7 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
 {
     double v[10];
     const Token *name = rec->count > 1 ? &rec->tok[1] : NULL;
-    PhongMaterial pm;
+    NamedMaterial pm;
     char q[64];
     int n, index;
 
@@ -287,7 +287,7 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     index = keyword_find(K, scene, name);
     if (index >= 0) {
         keyword_fail(K, &rec->line, name->column, "the material %s is already defined, on line %d",
-                     lex_quote(q, sizeof q, name), scene->phong[index].line);
+                     lex_quote(q, sizeof q, name), scene->named[index].line);
         return -1;
     }
     n = lex_numbers(&K->lex, rec, 2, &keyword_material, v);
@@ -318,10 +318,10 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
         return keyword_fail_memory(K);
     memcpy(pm.name, name->text, name->len);
     pm.name[name->len] = '\0';
-    index = scene_add_phong(scene, &pm);
+    index = scene_add_named(scene, &pm);
     if (index < 0)
         return keyword_fail_store(K, rec, scene, index);
-    scene->phong[index].base.phong = index;
+    scene->named[index].base.named = index;
     return keyword_file_name(K, scene, name, (size_t)index);
 }
 

@@ -75,14 +75,14 @@ static int save_mesh_path(FILE *fp, const SceneMesh *m, const char *scene_name,
 /* Returns the name of material m's Blinn-Phong entry. */
 static const char *save_name(const Scene *scene, const Material *m)
 {
-    return scene->phong[m->phong].name;
+    return scene->named[m->named].name;
 }
 
 /* Writes the materials, each with all the fields its values need. */
 static void save_materials(FILE *fp, const Scene *scene)
 {
-    for (size_t i = 0; i < scene->phong_count; i++) {
-        const PhongMaterial *pm = &scene->phong[i];
+    for (size_t i = 0; i < scene->named_count; i++) {
+        const NamedMaterial *pm = &scene->named[i];
         const Material *b = &pm->base;
         double v[7] = {pm->ka, pm->kd, pm->ks, pm->shininess, b->reflection, b->ior,
                        b->transparency};
