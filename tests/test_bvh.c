@@ -12,8 +12,9 @@
 #include "scene/scene.h"
 #include "test.h"
 
-/* Adds n random spheres and n random triangles (some transparent, some
- * exact duplicates, for ties) around the origin at scale s, and a plane. */
+/* Adds n random spheres, triangles, cubes and squares (some transparent,
+ * some exact duplicates, for ties) around the origin at scale s, a plane,
+ * a cylinder and a cone. */
 static void random_scene(Scene *sc, int n, double s)
 {
     Light light = light_point(vec3(0, 10 * s, 0), colour(255, 255, 255));
@@ -42,6 +43,29 @@ static void random_scene(Scene *sc, int n, double s)
             if (i % 10 == 5)
                 CHECK_INT(0, scene_add_triangle(sc, &tri, &m));
         }
+        if (i % 2 == 0) {
+            Cube cube;
+            Square sq;
+            Vec3 q = vec3_scale(rng_unit_vector(), s * rng_uniform());
+            cube_make(&cube, q, s * 0.04 * rng_log_scale(-1, 0), m);
+            CHECK_INT(0, scene_add_cube(sc, &cube));
+            if (i % 10 == 0)
+                CHECK_INT(0, scene_add_cube(sc, &cube));
+            q = vec3_scale(rng_unit_vector(), s * rng_uniform());
+            CHECK_INT(0, square_make(&sq, q, rng_unit_vector(), s * 0.05, m));
+            CHECK_INT(0, scene_add_square(sc, &sq));
+        }
+    }
+    {
+        Cylinder cyl = {vec3(0.5 * s, 0, 0.5 * s), 0.05 * s, material_plain(colour(1, 2, 3), 0), 0};
+        Cone cone;
+        Material glass = material_plain(colour(1, 2, 3), 0);
+        glass.transparency = 0.7;
+        glass.ior = 1.5;
+        cyl.material = glass;
+        CHECK_INT(0, scene_add_cylinder(sc, &cyl));
+        cone_make(&cone, vec3(-0.5 * s, 0, -0.5 * s), 0.1 * s, 0.5 * s, glass);
+        CHECK_INT(0, scene_add_cone(sc, &cone));
     }
     {
         Plane pl;
@@ -99,8 +123,9 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
         for (uint32_t i = n->child[k]; n->count[k] > 0 && i < n->child[k] + n->count[k]; i++) {
             uint32_t ref = bvh->prims[i];
-            size_t slot = bvh_kind(ref) == BVH_TRIANGLE ? sc->sphere_count + bvh_index(ref)
-                                                        : bvh_index(ref);
+            size_t base[4] = {0, sc->sphere_count, sc->sphere_count + sc->triangle_count,
+                              sc->sphere_count + sc->triangle_count + sc->cube_count};
+            size_t slot = base[bvh_kind(ref)] + bvh_index(ref);
             Vec3 lo, hi;
             seen[slot]++;
             if (bvh_kind(ref) == BVH_TRIANGLE) {
@@ -110,8 +135,17 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
                     lo = vec3(fmin(lo.x, t->v[j].x), fmin(lo.y, t->v[j].y), fmin(lo.z, t->v[j].z));
                     hi = vec3(fmax(hi.x, t->v[j].x), fmax(hi.y, t->v[j].y), fmax(hi.z, t->v[j].z));
                 }
+            } else if (bvh_kind(ref) == BVH_CUBE) {
+                lo = sc->cubes[bvh_index(ref)].lo;
+                hi = sc->cubes[bvh_index(ref)].hi;
+            } else if (bvh_kind(ref) == BVH_SQUARE) {
+                const Square *q = &sc->squares[bvh_index(ref)];
+                Vec3 u = vec3_scale(q->axis_u, q->half), v = vec3_scale(q->axis_v, q->half);
+                Vec3 e = vec3_add(vec3_abs(u), vec3_abs(v));
+                lo = vec3_sub(q->centre, e);
+                hi = vec3_add(q->centre, e);
             } else {
-                const Sphere *s = &sc->spheres[ref];
+                const Sphere *s = &sc->spheres[bvh_index(ref)];
                 Vec3 r = vec3(s->radius, s->radius, s->radius);
                 lo = vec3_sub(s->centre, r);
                 hi = vec3_add(s->centre, r);
@@ -146,7 +180,7 @@ static void bvh_holds_every_primitive_once_in_nested_boxes(void)
     size_t n;
 
     random_scene(&sc, 3000, 10);
-    n = sc.sphere_count + sc.triangle_count;
+    n = scene_bounded_count(&sc);
     CHECK_INT(0, build_over(&bvh, &sc, 1));
     seen = calloc(n, 1);
     check_subtree(&bvh, &sc, 0, 0, seen, &bad);
@@ -188,7 +222,7 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
  * boxes (check_subtree()). */
 static int bvh_holds_each_once(const Bvh *bvh, const Scene *sc)
 {
-    size_t n = sc->sphere_count + sc->triangle_count;
+    size_t n = scene_bounded_count(sc);
     unsigned char *seen = calloc(n, 1);
     int bad = 0;
 

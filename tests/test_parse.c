@@ -478,9 +478,19 @@ static const BadScene parse_bad_scenes[] = {
      "unknown record 'SPHERE:': keywords are lower case ('sphere:')"},
     {HEADER "sphere 0 0 5 1 200 100 50 0.25\n", 8, 1,
      "expected 'sphere:' with its colon attached, found 'sphere'"},
-    {HEADER "  cube: 0 0 0\n", 8, 3,
-     "unknown record 'cube:' (expected 'sphere:', 'plane:', 'triangle:', 'mesh:', 'light:', "
-     "'ambient:', 'samples:', 'lens:' or 'texture:')"},
+    {HEADER "  torus: 0 0 0\n", 8, 3,
+     "unknown record 'torus:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', "
+     "'cylinder:', 'cone:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:')"},
+    {HEADER "  cube: 0 0 0\n", 8, 14,
+     "expected 8 or 10 numbers for the cube (cx cy cz half-edge r g b reflection "
+     "[transparency index]), found 3"},
+    {HEADER "cone: 0 0 0 1 0 200 100 50 0\n", 8, 15,
+     "the cone's height must not be 0: its apex is that far above (or below) the centre of its "
+     "circle"},
+    {HEADER "square: 0 0 0 0 0 0 1 200 100 50 0\n", 8, 15,
+     "the square's normal is the zero vector: it must give a direction"},
+    {HEADER "cylinder: 0 0 0 -1 200 100 50 0\n", 8, 17,
+     "the cylinder's radius must be greater than 0, found '-1'"},
     {HEADER "Plane: 0 0 0 0 1 0 1 2 3 0\n", 8, 1,
      "unknown record 'Plane:': keywords are lower case ('plane:')"},
     {HEADER "triangle 0 0 0 1 0 0 0 1 0 1 2 3 0\n", 8, 1,

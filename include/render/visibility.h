@@ -15,18 +15,6 @@
 #include "geometry/ray.h"
 #include "scene/scene.h"
 
-/* The kinds of shape a ray can hit, in the order transmittance multiplies
- * their crossings. */
-typedef enum {
-    SHAPE_SPHERE,
-    SHAPE_PLANE,
-    SHAPE_TRIANGLE,
-    SHAPE_CUBE,
-    SHAPE_SQUARE,
-    SHAPE_CYLINDER,
-    SHAPE_CONE,
-    SHAPE_KINDS
-} ShapeKind;
 
 typedef struct {
     real t;         /* ray parameter of the crossing, > 0 */
@@ -38,9 +26,6 @@ typedef struct {
 /* Finds the object whose surface the ray crosses first at 0 < t < tmax, the
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
 int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
-
-/* Returns the material of the shape of kind and index in scene. */
-const Material *visibility_material(const Scene *scene, ShapeKind kind, size_t index);
 
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +

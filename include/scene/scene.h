@@ -40,6 +40,19 @@ static inline Light light_point(Vec3 position, Colour c)
     return light;
 }
 
+/* The kinds of shape a scene holds, in the order of its arrays (and the
+ * order in which a shadow ray's transmittance multiplies crossings). */
+typedef enum {
+    SHAPE_SPHERE,
+    SHAPE_PLANE,
+    SHAPE_TRIANGLE,
+    SHAPE_CUBE,
+    SHAPE_SQUARE,
+    SHAPE_CYLINDER,
+    SHAPE_CONE,
+    SHAPE_KINDS
+} ShapeKind;
+
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
 typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD } SceneFormat;
@@ -110,6 +123,8 @@ typedef struct Scene {
     struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
                                triangles, cubes, squares), or NULL: every ray
                                then tests every object */
+    unsigned kinds;         /* bit k set: the scene holds shapes of ShapeKind
+                               k (so the loops pass over absent kinds) */
     int has_transparency;   /* some object has T > 0 */
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
@@ -163,6 +178,13 @@ static inline Material *scene_material_of(const Scene *scene, const Triangle *tr
 {
     return &scene->materials[tri->material];
 }
+
+/* Returns how many shapes of kind the scene holds. */
+size_t scene_count_of(const Scene *scene, ShapeKind kind);
+
+/* Returns the material of the shape of kind and index in scene (writable:
+ * the readers' texture records set it; a mesh's triangles share one). */
+Material *scene_material(const Scene *scene, ShapeKind kind, size_t index);
 
 /* Returns tri's shading, a triangle of scene, or NULL when it is plain. */
 static inline const TriangleShading *scene_shading_of(const Scene *scene, const Triangle *tri)

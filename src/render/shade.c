@@ -34,7 +34,7 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
     double uv[2] = {0, 0};
     int clamp_v = 0, want_uv;
 
-    sh.material = visibility_material(scene, hit->kind, hit->index);
+    sh.material = scene_material(scene, hit->kind, hit->index);
     want_uv = sh.material->texture >= 0 || sh.material->stripes;
     switch (hit->kind) {
     case SHAPE_SPHERE: {

@@ -10,47 +10,6 @@
 static const ShapeKind visibility_of_bvh[4] = {SHAPE_SPHERE, SHAPE_TRIANGLE, SHAPE_CUBE,
                                                SHAPE_SQUARE};
 
-/* Returns how many shapes of kind the scene has. */
-static size_t visibility_count(const Scene *scene, ShapeKind kind)
-{
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return scene->sphere_count;
-    case SHAPE_PLANE:
-        return scene->plane_count;
-    case SHAPE_TRIANGLE:
-        return scene->triangle_count;
-    case SHAPE_CUBE:
-        return scene->cube_count;
-    case SHAPE_SQUARE:
-        return scene->square_count;
-    case SHAPE_CYLINDER:
-        return scene->cylinder_count;
-    default:
-        return scene->cone_count;
-    }
-}
-
-const Material *visibility_material(const Scene *scene, ShapeKind kind, size_t k)
-{
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return &scene->spheres[k].material;
-    case SHAPE_PLANE:
-        return &scene->planes[k].material;
-    case SHAPE_TRIANGLE:
-        return scene_material_of(scene, &scene->triangles[k]);
-    case SHAPE_CUBE:
-        return &scene->cubes[k].material;
-    case SHAPE_SQUARE:
-        return &scene->squares[k].material;
-    case SHAPE_CYLINDER:
-        return &scene->cylinders[k].material;
-    default:
-        return &scene->cones[k].material;
-    }
-}
-
 /* Returns the position among all objects of shape k of kind. */
 static unsigned visibility_order(const Scene *scene, ShapeKind kind, size_t k)
 {
@@ -132,7 +91,7 @@ static int visibility_nearest_of(const Scene *scene, ShapeKind kind, const Ray *
     /* An exact tie with an earlier-listed object must be seen: the bound is
      * the next real above the best t. */
     real bound = found ? real_next(hit->t, 1) : tmax;
-    size_t n = visibility_count(scene, kind);
+    size_t n = scene_count_of(scene, kind);
 
     for (size_t k = 0; k < n; k++) {
         real t;
@@ -151,8 +110,16 @@ static int visibility_nearest_of(const Scene *scene, ShapeKind kind, const Ray *
     return found;
 }
 
-/* The unbounded kinds, which the hierarchy leaves to the loops. */
-static const ShapeKind visibility_unbounded[] = {SHAPE_PLANE, SHAPE_CYLINDER, SHAPE_CONE};
+/* The unbounded kinds, which the hierarchy leaves to the loops, and the
+ * bounded ones, as masks of Scene.kinds. */
+#define VISIBILITY_UNBOUNDED (1u << SHAPE_PLANE | 1u << SHAPE_CYLINDER | 1u << SHAPE_CONE)
+#define VISIBILITY_BOUNDED ((1u << SHAPE_KINDS) - 1 - VISIBILITY_UNBOUNDED)
+
+/* Returns the first kind of mask (not 0), which the caller then clears. */
+static inline ShapeKind visibility_first(unsigned mask)
+{
+    return (ShapeKind)__builtin_ctz(mask);
+}
 
 /* visibility_nearest() through the hierarchy, the unbounded shapes aside. */
 static int visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
@@ -163,9 +130,8 @@ static int visibility_nearest_accel(const Scene *scene, const Ray *ray, real tma
     if (found)
         visibility_set_hit(hit, bh.t, visibility_of_bvh[bvh_kind(bh.prim)], bvh_index(bh.prim),
                            bh.order);
-    for (int i = 0; i < 3; i++)
-        if (visibility_count(scene, visibility_unbounded[i]) > 0)
-            found = visibility_nearest_of(scene, visibility_unbounded[i], ray, tmax, hit, found);
+    for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED; m != 0; m &= m - 1)
+        found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
 }
 
@@ -190,16 +156,15 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
     }
     if (found)
         visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
-    for (int kind = SHAPE_PLANE; kind < SHAPE_KINDS; kind++)
-        if (visibility_count(scene, (ShapeKind)kind) > 0)
-            found = visibility_nearest_of(scene, (ShapeKind)kind, ray, tmax, hit, found);
+    for (unsigned m = scene->kinds & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
+        found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
 }
 
 /* Says whether some shape of kind crosses the ray at 0 < t < tmax. */
 static int visibility_occluded_by(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax)
 {
-    size_t n = visibility_count(scene, kind);
+    size_t n = scene_count_of(scene, kind);
     real t;
 
     for (size_t k = 0; k < n; k++)
@@ -210,14 +175,13 @@ static int visibility_occluded_by(const Scene *scene, ShapeKind kind, const Ray 
 
 int visibility_occluded(const Scene *scene, const Ray *ray, real tmax)
 {
-    for (int i = 0; i < 3; i++)
-        if (visibility_occluded_by(scene, visibility_unbounded[i], ray, tmax))
+    for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED; m != 0; m &= m - 1)
+        if (visibility_occluded_by(scene, visibility_first(m), ray, tmax))
             return 1;
     if (scene->accel)
         return bvh_occluded(scene->accel, ray, tmax);
-    for (int kind = SHAPE_SPHERE; kind < SHAPE_KINDS; kind++)
-        if (kind != SHAPE_PLANE && kind != SHAPE_CYLINDER && kind != SHAPE_CONE &&
-            visibility_occluded_by(scene, (ShapeKind)kind, ray, tmax))
+    for (unsigned m = scene->kinds & VISIBILITY_BOUNDED; m != 0; m &= m - 1)
+        if (visibility_occluded_by(scene, visibility_first(m), ray, tmax))
             return 1;
     return 0;
 }
@@ -236,10 +200,10 @@ static int visibility_attenuate(double *share, const Material *m, int crossings)
 static int visibility_attenuate_by(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax,
                                    double *share)
 {
-    size_t n = visibility_count(scene, kind);
+    size_t n = scene_count_of(scene, kind);
 
     for (size_t k = 0; k < n; k++)
-        if (!visibility_attenuate(share, visibility_material(scene, kind, k),
+        if (!visibility_attenuate(share, scene_material(scene, kind, k),
                                   visibility_crossings(scene, kind, k, ray, tmax)))
             return 0;
     return 1;
@@ -263,7 +227,7 @@ typedef struct {
 /* Returns the material of the hierarchy's primitive prim. */
 static const Material *visibility_material_of(const Scene *scene, uint32_t prim)
 {
-    return visibility_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim));
+    return scene_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim));
 }
 
 /* bvh_crossings()'s visit: keeps the crossing; returns -2 at an opaque
@@ -336,8 +300,9 @@ double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)
         if (s >= 0)
             return s;
     }
-    for (int kind = SHAPE_SPHERE; kind < SHAPE_KINDS; kind++)
-        if (!visibility_attenuate_by(scene, (ShapeKind)kind, ray, tmax, &share))
+    /* Kind by kind, in ShapeKind's order (the lowest bit first). */
+    for (unsigned m = scene->kinds; m != 0; m &= m - 1)
+        if (!visibility_attenuate_by(scene, visibility_first(m), ray, tmax, &share))
             return 0;
     return share;
 }

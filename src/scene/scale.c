@@ -35,6 +35,17 @@ static double scene_max_length(const Scene *scene)
                         scene->planes[i].material.texture >= 0 ? scene->planes[i].tile : 0));
     for (size_t i = 0; i < scene->triangle_count; i++)
         m = fmax(m, scene_points_max(scene->triangles[i].v, 3));
+    for (size_t i = 0; i < scene->cube_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->cubes[i].centre), scene->cubes[i].half));
+    for (size_t i = 0; i < scene->square_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->squares[i].centre), scene->squares[i].half));
+    for (size_t i = 0; i < scene->cylinder_count; i++)
+        m = fmax(m, fmax(vec3_max_abs(scene->cylinders[i].centre), scene->cylinders[i].radius));
+    for (size_t i = 0; i < scene->cone_count; i++) {
+        const Cone *c = &scene->cones[i];
+        m = fmax(m, fmax(fmax(vec3_max_abs(c->base), vec3_max_abs(c->apex)),
+                         fmax(c->radius, fabs(c->height))));
+    }
     return m;
 }
 
@@ -67,5 +78,29 @@ void scene_fit_scale(Scene *scene)
     for (size_t i = 0; i < scene->triangle_count; i++)
         for (int j = 0; j < 3; j++)
             scene->triangles[i].v[j] = vec3_ldexp(scene->triangles[i].v[j], k);
+    /* Corners, apexes and the rest scale exactly with what they were made
+     * from; angles and unit vectors do not change. */
+    for (size_t i = 0; i < scene->cube_count; i++) {
+        Cube *c = &scene->cubes[i];
+        c->centre = vec3_ldexp(c->centre, k);
+        c->lo = vec3_ldexp(c->lo, k);
+        c->hi = vec3_ldexp(c->hi, k);
+        c->half = ldexp(c->half, k);
+    }
+    for (size_t i = 0; i < scene->square_count; i++) {
+        scene->squares[i].centre = vec3_ldexp(scene->squares[i].centre, k);
+        scene->squares[i].half = ldexp(scene->squares[i].half, k);
+    }
+    for (size_t i = 0; i < scene->cylinder_count; i++) {
+        scene->cylinders[i].centre = vec3_ldexp(scene->cylinders[i].centre, k);
+        scene->cylinders[i].radius = ldexp(scene->cylinders[i].radius, k);
+    }
+    for (size_t i = 0; i < scene->cone_count; i++) {
+        Cone *c = &scene->cones[i];
+        c->base = vec3_ldexp(c->base, k);
+        c->apex = vec3_ldexp(c->apex, k);
+        c->radius = ldexp(c->radius, k);
+        c->height = ldexp(c->height, k);
+    }
     scene->length_exponent = k;
 }

@@ -153,6 +153,46 @@ static real scene_reach(const Scene *scene)
     return m;
 }
 
+size_t scene_count_of(const Scene *scene, ShapeKind kind)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return scene->sphere_count;
+    case SHAPE_PLANE:
+        return scene->plane_count;
+    case SHAPE_TRIANGLE:
+        return scene->triangle_count;
+    case SHAPE_CUBE:
+        return scene->cube_count;
+    case SHAPE_SQUARE:
+        return scene->square_count;
+    case SHAPE_CYLINDER:
+        return scene->cylinder_count;
+    default:
+        return scene->cone_count;
+    }
+}
+
+Material *scene_material(const Scene *scene, ShapeKind kind, size_t k)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return &scene->spheres[k].material;
+    case SHAPE_PLANE:
+        return &scene->planes[k].material;
+    case SHAPE_TRIANGLE:
+        return scene_material_of(scene, &scene->triangles[k]);
+    case SHAPE_CUBE:
+        return &scene->cubes[k].material;
+    case SHAPE_SQUARE:
+        return &scene->squares[k].material;
+    case SHAPE_CYLINDER:
+        return &scene->cylinders[k].material;
+    default:
+        return &scene->cones[k].material;
+    }
+}
+
 size_t scene_bounded_count(const Scene *scene)
 {
     return scene->sphere_count + scene->triangle_count + scene->cube_count + scene->square_count;
@@ -200,8 +240,9 @@ int scene_add_light(Scene *scene, const Light *light)
  * for *capacity), giving it its position among the objects (the unsigned
  * at byte `order` of it) and noting its material m's transparency;
  * returns 0 or what scene_reserve() returned. */
-static int scene_push_shape(Scene *scene, void **items, size_t *capacity, size_t *count,
-                            const void *item, size_t size, size_t order, const Material *m)
+static int scene_push_shape(Scene *scene, ShapeKind kind, void **items, size_t *capacity,
+                            size_t *count, const void *item, size_t size, size_t order,
+                            const Material *m)
 {
     int rc = scene_reserve(scene, items, capacity, *count, size);
     unsigned position = (unsigned)scene_object_count(scene);
@@ -213,47 +254,48 @@ static int scene_push_shape(Scene *scene, void **items, size_t *capacity, size_t
     memcpy(at, item, size);
     memcpy(at + order, &position, sizeof position);
     (*count)++;
+    scene->kinds |= 1u << kind;
     scene->has_transparency |= m->transparency > 0;
     return 0;
 }
 
 int scene_add_sphere(Scene *scene, const Sphere *s)
 {
-    return scene_push_shape(scene, (void **)&scene->spheres, &scene->sphere_capacity,
+    return scene_push_shape(scene, SHAPE_SPHERE, (void **)&scene->spheres, &scene->sphere_capacity,
                             &scene->sphere_count, s, sizeof *s, offsetof(Sphere, order),
                             &s->material);
 }
 
 int scene_add_plane(Scene *scene, const Plane *p)
 {
-    return scene_push_shape(scene, (void **)&scene->planes, &scene->plane_capacity,
+    return scene_push_shape(scene, SHAPE_PLANE, (void **)&scene->planes, &scene->plane_capacity,
                             &scene->plane_count, p, sizeof *p, offsetof(Plane, order),
                             &p->material);
 }
 
 int scene_add_cube(Scene *scene, const Cube *c)
 {
-    return scene_push_shape(scene, (void **)&scene->cubes, &scene->cube_capacity,
+    return scene_push_shape(scene, SHAPE_CUBE, (void **)&scene->cubes, &scene->cube_capacity,
                             &scene->cube_count, c, sizeof *c, offsetof(Cube, order), &c->material);
 }
 
 int scene_add_square(Scene *scene, const Square *s)
 {
-    return scene_push_shape(scene, (void **)&scene->squares, &scene->square_capacity,
+    return scene_push_shape(scene, SHAPE_SQUARE, (void **)&scene->squares, &scene->square_capacity,
                             &scene->square_count, s, sizeof *s, offsetof(Square, order),
                             &s->material);
 }
 
 int scene_add_cylinder(Scene *scene, const Cylinder *c)
 {
-    return scene_push_shape(scene, (void **)&scene->cylinders, &scene->cylinder_capacity,
+    return scene_push_shape(scene, SHAPE_CYLINDER, (void **)&scene->cylinders, &scene->cylinder_capacity,
                             &scene->cylinder_count, c, sizeof *c, offsetof(Cylinder, order),
                             &c->material);
 }
 
 int scene_add_cone(Scene *scene, const Cone *c)
 {
-    return scene_push_shape(scene, (void **)&scene->cones, &scene->cone_capacity,
+    return scene_push_shape(scene, SHAPE_CONE, (void **)&scene->cones, &scene->cone_capacity,
                             &scene->cone_count, c, sizeof *c, offsetof(Cone, order), &c->material);
 }
 
@@ -282,6 +324,7 @@ int scene_append_triangle(Scene *scene, const Triangle *t, size_t material,
     scene->triangles[scene->triangle_count].shading = TRIANGLE_PLAIN;
     scene->triangles[scene->triangle_count].material = (unsigned)material;
     scene->triangle_count++;
+    scene->kinds |= 1u << SHAPE_TRIANGLE;
     if (sh && (rc = scene_shade_triangle(scene, scene->triangle_count - 1, sh)) != 0)
         scene->triangle_count--;
     return rc;
@@ -380,6 +423,7 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
         transparent |= room[k].material.transparency > 0;
     }
     scene->sphere_count += n;
+    scene->kinds |= 1u << SHAPE_SPHERE;
     scene->has_transparency |= transparent;
     return 0;
 }
@@ -418,6 +462,8 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
     /* Give back the room of those without area: the capacities are those
      * that adding the kept ones one by one would make. */
     scene->triangle_count = first + kept;
+    if (kept > 0)
+        scene->kinds |= 1u << SHAPE_TRIANGLE;
     scene_fit((void **)&scene->triangles, &scene->triangle_capacity,
               scene_fit_capacity(scene->triangle_capacity, scene->triangle_count, entry_tris),
               sizeof *scene->triangles);

@@ -205,7 +205,7 @@ static int course_sphere_record(CourseParser *P, const Record *rec, Scene *scene
     rc = scene_add_sphere(scene, &s);
     if (rc != 0)
         return course_fail_memory(P, rec, scene, rc);
-    course_note_object(P, COURSE_SHAPE_SPHERE, scene->sphere_count - 1);
+    course_note_object(P, SHAPE_SPHERE, scene->sphere_count - 1);
     return 0;
 }
 /* A record that may follow the header, and what reads it. */
@@ -219,14 +219,16 @@ static const RecordKind course_record_kinds[] = {
     {"triangle:", course_triangle_record}, {"light:", course_extra_light_record},
     {"ambient:", course_ambient_record}, {"samples:", course_samples_record},
     {"lens:", course_lens_record},       {"texture:", course_texture_record},
-    {"mesh:", course_mesh_record},
+    {"mesh:", course_mesh_record},       {"cube:", course_cube_record},
+    {"square:", course_square_record},   {"cylinder:", course_cylinder_record},
+    {"cone:", course_cone_record},
 };
 
 enum { COURSE_RECORD_KINDS = sizeof course_record_kinds / sizeof course_record_kinds[0] };
 
 #define COURSE_KEYWORD_LIST                                                                    \
-    "'sphere:', 'plane:', 'triangle:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' "   \
-    "or 'texture:'"
+    "'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', 'cylinder:', 'cone:', 'mesh:', "    \
+    "'light:', 'ambient:', 'samples:', 'lens:' or 'texture:'"
 
 /* Records why the first token of rec is not a known record keyword. */
 static void course_fail_keyword(CourseParser *P, const Record *rec)
@@ -296,7 +298,7 @@ int course_parse_text(const char *name, const char *text, size_t len, size_t mem
     lex_init(&P.lex, name, text, len, err);
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;
-    P.last_kind = COURSE_SHAPE_SPHERE;
+    P.last_kind = SHAPE_SPHERE;
     P.last_index = 0;
     if (course_header(&P, scene) != 0 || course_objects(&P, scene) != 0) {
         scene_free(scene);

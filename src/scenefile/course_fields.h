@@ -18,7 +18,8 @@ typedef struct {
     int samples_line;  /* line of the samples: record, 0 before it */
     int lens_line;     /* line of the lens: record, 0 before it */
     int has_last;      /* an object has been read */
-    int last_kind;     /* which shape the last object is (a COURSE_SHAPE_*) */
+    int last_kind;     /* which shape the last object is (a ShapeKind, or
+                          COURSE_MESH) */
     size_t last_index; /* its index among the scene's shapes of that kind (a
                           mesh: its first triangle's) */
 } CourseParser;
@@ -26,8 +27,8 @@ typedef struct {
 /* Records a fault at column of line. */
 #define course_fail(P, line, column, ...) lex_fail(&(P)->lex, line, column, __VA_ARGS__)
 
-/* The shapes a texture: record may follow. */
-enum { COURSE_SHAPE_SPHERE, COURSE_SHAPE_PLANE, COURSE_SHAPE_TRIANGLE, COURSE_SHAPE_MESH };
+/* last_kind after a mesh: record (its triangles, of one material). */
+#define COURSE_MESH SHAPE_KINDS
 
 /* light -> x y z r g b: the header's light and a light: record's numbers. */
 extern const RecordSpec course_light_spec;
@@ -45,7 +46,8 @@ int course_add_light(CourseParser *P, const Record *rec, const double *v, Scene 
 int course_material(CourseParser *P, const Record *rec, const RecordSpec *spec, int tok0,
                     int first, const double *values, int n, Material *m);
 
-/* Remembers the object just added (a COURSE_SHAPE_* and its index), for a
+/* Remembers the object just added (a ShapeKind, or COURSE_MESH, and its
+ * index), for a
  * texture: record after it. */
 void course_note_object(CourseParser *P, int kind, size_t index);
 

@@ -8,6 +8,7 @@
 #include "math/number.h"
 #include "scenefile/mesh.h"
 #include "scenefile/obj.h"
+#include "scenefile/shapes.h"
 #include "scenefile/texture_file.h"
 
 static const char *const course_material_names[] = {"red",        "green",        "blue",
@@ -45,6 +46,45 @@ static const RecordSpec course_triangle_spec = {"the triangle",
                                           "x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection"
                                           " [transparency index]",
                                           13, 2, 0, course_triangle_names, course_triangle_kinds};
+static const char *const course_cube_names[] = {
+    "centre x", "centre y", "centre z",     "half-edge",       "red",
+    "green",    "blue",     "reflection", "transparency", "refractive index"};
+static const FieldKind course_cube_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR,
+    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const char *const course_square_names[] = {
+    "centre x", "centre y", "centre z",   "normal x",     "normal y",        "normal z",
+    "half-edge", "red",     "green",      "blue",         "reflection", "transparency",
+    "refractive index"};
+static const FieldKind course_square_kinds[] = {
+    FIELD_COORD,    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
+    FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR,
+    FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const char *const course_cylinder_names[] = {
+    "axis x", "axis y", "axis z",     "radius",       "red",
+    "green",  "blue",   "reflection", "transparency", "refractive index"};
+static const char *const course_cone_names[] = {
+    "x",   "y",    "z",          "radius",       "height", "red",
+    "green", "blue", "reflection", "transparency", "refractive index"};
+static const FieldKind course_cone_kinds[] = {
+    FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_POSITIVE, FIELD_COORD, FIELD_COLOUR,
+    FIELD_COLOUR, FIELD_COLOUR,   FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
+static const RecordSpec course_cube_spec = {"the cube",
+                                            "cx cy cz half-edge r g b reflection"
+                                            " [transparency index]",
+                                            8, 2, 0, course_cube_names, course_cube_kinds};
+static const RecordSpec course_square_spec = {"the square",
+                                              "cx cy cz nx ny nz half-edge r g b reflection"
+                                              " [transparency index]",
+                                              11, 2, 0, course_square_names, course_square_kinds};
+static const RecordSpec course_cylinder_spec = {"the cylinder",
+                                                "x y z radius r g b reflection"
+                                                " [transparency index]",
+                                                8, 2, 0, course_cylinder_names, course_cube_kinds};
+static const RecordSpec course_cone_spec = {"the cone",
+                                            "x y z radius height r g b reflection"
+                                            " [transparency index]",
+                                            9, 2, 0, course_cone_names, course_cone_kinds};
 static const RecordSpec course_ambient_spec = {"the ambient light", "r g b", 3, 0, 0, course_rgb_names,
                                          course_rgb_kinds};
 static const RecordSpec course_lens_spec = {"the lens", "aperture focal_distance", 2, 0, 0,
@@ -60,65 +100,83 @@ static const RecordSpec course_mesh_texture_spec = {"the mesh's texture", "path 
 static const RecordSpec course_triangle_texture_spec = {"the triangle's texture",
                                                   "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6, 0,
                                                   course_uv_names, course_uv_kinds};
+static const RecordSpec course_cube_texture_spec = {"the cube's texture", "path [filter]", 0, 0, 0,
+                                                    NULL, NULL};
+static const RecordSpec course_square_texture_spec = {"the square's texture", "path [filter]", 0, 0,
+                                                      0, NULL, NULL};
+static const RecordSpec course_cylinder_texture_spec = {"the cylinder's texture", "path [filter]",
+                                                        0, 0, 0, NULL, NULL};
+static const RecordSpec course_cone_texture_spec = {"the cone's texture", "path [filter]", 0, 0, 0,
+                                                    NULL, NULL};
 
 /* Returns the material of the last object read (there must be one). */
 static Material *course_last_material(CourseParser *P, Scene *scene)
 {
-    switch (P->last_kind) {
-    case COURSE_SHAPE_PLANE:
-        return &scene->planes[P->last_index].material;
-    case COURSE_SHAPE_TRIANGLE:
-    case COURSE_SHAPE_MESH: /* a mesh's triangles share it */
-        return scene_material_of(scene, &scene->triangles[P->last_index]);
-    default:
-        return &scene->spheres[P->last_index].material;
+    /* A mesh's triangles share their material. */
+    return scene_material(scene, P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : P->last_kind,
+                          P->last_index);
+}
+
+/* shape -> 'KIND:' geometry r g b reflection [transparency index]: reads
+ * rec, a record of a shape of kind whose numbers spec names, into the
+ * scene. */
+static int course_shape_record(CourseParser *P, const Record *rec, Scene *scene, ShapeKind kind,
+                               const RecordSpec *spec)
+{
+    double v[SHAPES_NUMBERS_MAX + 6];
+    int n = lex_numbers(&P->lex, rec, 1, spec, v), rc, field = 0;
+    const char *fault = NULL;
+    Material m;
+
+    if (n < 0 || course_material(P, rec, spec, 1, shapes_count[kind], v, n, &m) != 0)
+        return -1;
+    rc = shapes_add(scene, kind, v, &m, &fault, &field);
+    if (rc == SHAPES_INVALID) {
+        course_fail(P, &rec->line, rec->tok[field < 0 ? 0 : 1 + field].column, "%s", fault);
+        return -1;
     }
+    if (rc != 0)
+        return course_fail_memory(P, rec, scene, rc);
+    course_note_object(P, kind, scene_count_of(scene, kind) - 1);
+    return 0;
 }
 
 /* plane -> 'plane:' px py pz nx ny nz r g b reflection [transparency index] */
 int course_plane_record(CourseParser *P, const Record *rec, Scene *scene)
 {
-    double v[12];
-    int n = lex_numbers(&P->lex, rec, 1, &course_plane_spec, v), rc;
-    Material m;
-    Plane pl;
-
-    if (n < 0 || course_material(P, rec, &course_plane_spec, 1, 6, v, n, &m) != 0)
-        return -1;
-    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
-        course_fail(P, &rec->line, rec->tok[4].column,
-                   "the plane's normal is the zero vector: it must give a direction");
-        return -1;
-    }
-    rc = scene_add_plane(scene, &pl);
-    if (rc != 0)
-        return course_fail_memory(P, rec, scene, rc);
-    course_note_object(P, COURSE_SHAPE_PLANE, scene->plane_count - 1);
-    return 0;
+    return course_shape_record(P, rec, scene, SHAPE_PLANE, &course_plane_spec);
 }
 
 /* triangle -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection
  *             [transparency index] */
 int course_triangle_record(CourseParser *P, const Record *rec, Scene *scene)
 {
-    double v[15];
-    int n = lex_numbers(&P->lex, rec, 1, &course_triangle_spec, v), rc;
-    Material m;
-    Triangle tri;
+    return course_shape_record(P, rec, scene, SHAPE_TRIANGLE, &course_triangle_spec);
+}
 
-    if (n < 0 || course_material(P, rec, &course_triangle_spec, 1, 9, v, n, &m) != 0)
-        return -1;
-    if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
-                      vec3(v[6], v[7], v[8])) != 0) {
-        course_fail(P, &rec->line, rec->tok[0].column,
-                   "the triangle's three vertices lie on one line: it has no area");
-        return -1;
-    }
-    rc = scene_add_triangle(scene, &tri, &m);
-    if (rc != 0)
-        return course_fail_memory(P, rec, scene, rc);
-    course_note_object(P, COURSE_SHAPE_TRIANGLE, scene->triangle_count - 1);
-    return 0;
+/* cube -> 'cube:' cx cy cz half-edge r g b reflection [transparency index] */
+int course_cube_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    return course_shape_record(P, rec, scene, SHAPE_CUBE, &course_cube_spec);
+}
+
+/* square -> 'square:' cx cy cz nx ny nz half-edge r g b reflection
+ *           [transparency index] */
+int course_square_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    return course_shape_record(P, rec, scene, SHAPE_SQUARE, &course_square_spec);
+}
+
+/* cylinder -> 'cylinder:' x y z radius r g b reflection [transparency index] */
+int course_cylinder_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    return course_shape_record(P, rec, scene, SHAPE_CYLINDER, &course_cylinder_spec);
+}
+
+/* cone -> 'cone:' x y z radius height r g b reflection [transparency index] */
+int course_cone_record(CourseParser *P, const Record *rec, Scene *scene)
+{
+    return course_shape_record(P, rec, scene, SHAPE_CONE, &course_cone_spec);
 }
 
 /* light -> 'light:' x y z r g b */
@@ -245,17 +303,19 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
                    lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
     }
-    course_note_object(P, COURSE_SHAPE_MESH, scene->triangle_count - (size_t)added);
+    course_note_object(P, COURSE_MESH, scene->triangle_count - (size_t)added);
     return 0;
 }
 
 /* texture -> 'texture:' path [nearest | bilinear] number*, for the object
- * just before: none for a sphere, [tile_size] for a plane, [u0 v0 u1 v1 u2
- * v2] for a triangle. */
+ * just before: [tile_size] for a plane, [u0 v0 u1 v1 u2 v2] for a
+ * triangle, none for the others. */
 int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
 {
-    static const RecordSpec *const specs[] = {&course_sphere_texture_spec, &course_plane_texture_spec,
-                                              &course_triangle_texture_spec, &course_mesh_texture_spec};
+    static const RecordSpec *const specs[] = {
+        &course_sphere_texture_spec, &course_plane_texture_spec,    &course_triangle_texture_spec,
+        &course_cube_texture_spec,   &course_square_texture_spec,   &course_cylinder_texture_spec,
+        &course_cone_texture_spec,   &course_mesh_texture_spec};
     const RecordSpec *spec;
     int first = 2, n, index;
     double v[6];
@@ -305,9 +365,9 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
     m = course_last_material(P, scene);
     m->texture = index;
     m->filter = filter;
-    if (P->last_kind == COURSE_SHAPE_PLANE && n == 1)
+    if (P->last_kind == SHAPE_PLANE && n == 1)
         scene->planes[P->last_index].tile = v[0];
-    if (P->last_kind == COURSE_SHAPE_TRIANGLE && n == 6) {
+    if (P->last_kind == SHAPE_TRIANGLE && n == 6) {
         TriangleShading sh = triangle_plain_shading(&scene->triangles[P->last_index]);
         int rc;
         for (int k = 0; k < 3; k++) {

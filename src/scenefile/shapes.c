@@ -1,0 +1,98 @@
+/* shapes.c: shapes from their records' numbers (see shapes.h). */
+#include "scenefile/shapes.h"
+
+static const char *const shapes_sphere_names[] = {"centre x", "centre y", "centre z", "radius"};
+static const FieldKind shapes_sphere_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                FIELD_POSITIVE};
+static const char *const shapes_plane_names[] = {"point x",  "point y",  "point z",
+                                                 "normal x", "normal y", "normal z"};
+static const FieldKind shapes_plane_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                               FIELD_COORD, FIELD_COORD, FIELD_COORD};
+static const char *const shapes_triangle_names[] = {"x0", "y0", "z0", "x1", "y1",
+                                                    "z1", "x2", "y2", "z2"};
+static const FieldKind shapes_triangle_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                  FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                  FIELD_COORD, FIELD_COORD, FIELD_COORD};
+static const char *const shapes_cube_names[] = {"centre x", "centre y", "centre z", "half-edge"};
+static const char *const shapes_square_names[] = {"centre x", "centre y", "centre z", "normal x",
+                                                  "normal y", "normal z", "half-edge"};
+static const FieldKind shapes_square_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                                FIELD_POSITIVE};
+static const char *const shapes_cone_names[] = {"x", "y", "z", "radius", "height"};
+static const FieldKind shapes_cone_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                              FIELD_POSITIVE, FIELD_COORD};
+
+const int shapes_count[SHAPE_KINDS] = {4, 6, 9, 4, 7, 4, 5};
+const char *const *const shapes_names[SHAPE_KINDS] = {
+    shapes_sphere_names, shapes_plane_names,  shapes_triangle_names, shapes_cube_names,
+    shapes_square_names, shapes_sphere_names, shapes_cone_names};
+const FieldKind *const shapes_kinds[SHAPE_KINDS] = {
+    shapes_sphere_kinds, shapes_plane_kinds,  shapes_triangle_kinds, shapes_sphere_kinds,
+    shapes_square_kinds, shapes_sphere_kinds, shapes_cone_kinds};
+const char *const shapes_word[SHAPE_KINDS] = {"sphere", "plane",    "triangle", "cube",
+                                              "square", "cylinder", "cone"};
+
+/* Returns the point of v's numbers from index i. */
+static Vec3 shapes_point(const double *v, int i)
+{
+    return vec3(v[i], v[i + 1], v[i + 2]);
+}
+
+int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
+               const char **fault, int *field)
+{
+    switch (kind) {
+    case SHAPE_SPHERE: {
+        Sphere s = {shapes_point(v, 0), v[3], *m, 0};
+        return scene_add_sphere(scene, &s);
+    }
+    case SHAPE_PLANE: {
+        Plane pl;
+        if (plane_make(&pl, shapes_point(v, 0), shapes_point(v, 3), 1, *m) != 0) {
+            *fault = "the plane's normal is the zero vector: it must give a direction";
+            *field = 3;
+            return SHAPES_INVALID;
+        }
+        return scene_add_plane(scene, &pl);
+    }
+    case SHAPE_TRIANGLE: {
+        Triangle tri;
+        if (triangle_make(&tri, shapes_point(v, 0), shapes_point(v, 3), shapes_point(v, 6)) != 0) {
+            *fault = "the triangle's three vertices lie on one line: it has no area";
+            *field = -1; /* the record itself */
+            return SHAPES_INVALID;
+        }
+        return scene_add_triangle(scene, &tri, m);
+    }
+    case SHAPE_CUBE: {
+        Cube c;
+        cube_make(&c, shapes_point(v, 0), v[3], *m);
+        return scene_add_cube(scene, &c);
+    }
+    case SHAPE_SQUARE: {
+        Square s;
+        if (square_make(&s, shapes_point(v, 0), shapes_point(v, 3), v[6], *m) != 0) {
+            *fault = "the square's normal is the zero vector: it must give a direction";
+            *field = 3;
+            return SHAPES_INVALID;
+        }
+        return scene_add_square(scene, &s);
+    }
+    case SHAPE_CYLINDER: {
+        Cylinder c = {shapes_point(v, 0), v[3], *m, 0};
+        return scene_add_cylinder(scene, &c);
+    }
+    default: {
+        Cone c;
+        if (v[4] == 0) {
+            *fault = "the cone's height must not be 0: its apex is that far above (or below) "
+                     "the centre of its circle";
+            *field = 4;
+            return SHAPES_INVALID;
+        }
+        cone_make(&c, shapes_point(v, 0), v[3], v[4], *m);
+        return scene_add_cone(scene, &c);
+    }
+    }
+}
