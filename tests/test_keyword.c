@@ -351,9 +351,17 @@ static const BadKeyword keyword_bad[] = {
     {CAM "ambient 1 1 1\nambient 1 1 1", 3, 1, "the ambient light is already set, on line 2"},
     {CAM "background 1 1", 2, 15,
      "expected 3 numbers for the background (r g b), found 2"},
-    {CAM "cube 1 2 3", 2, 1,
-     "unknown element 'cube' (expected 'camera', 'material', 'sphere', 'plane', 'triangle', "
-     "'mesh', 'light', 'ambient' or 'background')"},
+    {CAM "torus 1 2 3", 2, 1,
+     "unknown element 'torus' (expected 'camera', 'material', 'sphere', 'plane', 'triangle', "
+     "'cube', 'square', 'cylinder', 'cone', 'mesh', 'light', 'ambient' or 'background')"},
+    {CAM "cube 1 2 3", 2, 11,
+     "expected the name of a material after the numbers of the cube (xC yC zC half material), "
+     "found the end of the line"},
+    {CAM "material m 1 2 3 0 1 0 0\ncone 0 0 0 1 0 m", 3, 14,
+     "the cone's height must not be 0: its apex is that far above (or below) the centre of its "
+     "circle"},
+    {CAM "material m 1 2 3 0 1 0 0\nsquare 0 0 0 0 0 0 1 m", 3, 14,
+     "the square's normal is the zero vector: it must give a direction"},
     {CAM "Sphere 0 0 5 1 m", 2, 1, "unknown element 'Sphere': keywords are lower case ('sphere')"},
     {CAM "sphere: 0 0 5 1 m", 2, 1,
      "unknown element 'sphere:': this is a keyword-format scene (its first element is a "
@@ -517,8 +525,9 @@ static int same_scene(const Scene *a, const Scene *b)
                SAME(a->ambient, b->ambient) && a->has_ambient == b->has_ambient &&
                a->light_count == b->light_count && a->named_count == b->named_count &&
                a->sphere_count == b->sphere_count && a->plane_count == b->plane_count &&
-               a->triangle_count == b->triangle_count &&
-               a->length_exponent == b->length_exponent && SAME(a->fov, b->fov) &&
+               a->triangle_count == b->triangle_count && a->cube_count == b->cube_count &&
+               a->square_count == b->square_count && a->cylinder_count == b->cylinder_count &&
+               a->cone_count == b->cone_count && a->length_exponent == b->length_exponent && SAME(a->fov, b->fov) &&
                SAME(a->look_from, b->look_from) && SAME(a->look_at, b->look_at);
 
     for (size_t i = 0; same && i < a->light_count; i++)
@@ -549,6 +558,30 @@ static int same_scene(const Scene *a, const Scene *b)
                p->swapped == q->swapped && same_material(scene_material_of(a, p), scene_material_of(b, q)) &&
                p->order == q->order;
     }
+    for (size_t i = 0; same && i < a->cube_count; i++) {
+        const Cube *p = &a->cubes[i], *q = &b->cubes[i];
+        same = SAME(p->centre, q->centre) && SAME(p->half, q->half) && SAME(p->lo, q->lo) &&
+               SAME(p->hi, q->hi) && same_material(&p->material, &q->material) &&
+               p->order == q->order;
+    }
+    for (size_t i = 0; same && i < a->square_count; i++) {
+        const Square *p = &a->squares[i], *q = &b->squares[i];
+        same = SAME(p->centre, q->centre) && SAME(p->given, q->given) &&
+               SAME(p->normal, q->normal) && SAME(p->axis_u, q->axis_u) &&
+               SAME(p->half, q->half) && same_material(&p->material, &q->material) &&
+               p->order == q->order;
+    }
+    for (size_t i = 0; same && i < a->cylinder_count; i++) {
+        const Cylinder *p = &a->cylinders[i], *q = &b->cylinders[i];
+        same = SAME(p->centre, q->centre) && SAME(p->radius, q->radius) &&
+               same_material(&p->material, &q->material) && p->order == q->order;
+    }
+    for (size_t i = 0; same && i < a->cone_count; i++) {
+        const Cone *p = &a->cones[i], *q = &b->cones[i];
+        same = SAME(p->base, q->base) && SAME(p->apex, q->apex) && SAME(p->radius, q->radius) &&
+               SAME(p->height, q->height) && SAME(p->k, q->k) &&
+               same_material(&p->material, &q->material) && p->order == q->order;
+    }
     return same;
 }
 
@@ -571,10 +604,17 @@ static void keyword_saved_scene_reads_back_the_same(void)
         "sphere 1.0000000000000002 2 3 0.99999999999999989 a\n"
         "plane 0 -1e-9 0 0.1 1 1e-7 b\n"
         "triangle 0 0 5 1 0 5 0.33333333333333331 1 5 c\n"
-        "sphere -7e-200 4 5 1e-100 d\n"),
+        "sphere -7e-200 4 5 1e-100 d\n"
+        "cube 0.1 0.2 0.30000000000000004 1e-7 a\n"
+        "square 1 2 3 -0 1e-3 -1 0.99999999999999989 b\n"
+        "cylinder 1e14 -2 3 7e-5 c\n"
+        "cone 0.5 -0.5 1.5 0.1 -2.0000000000000004 d\n"
+        "cube -1 -2 -3 4 a\n"),
         /* A tiny scene, enlarged on reading: saved at its own scale. */
         ("camera 0 0 0 0 0 5e-30 1 8 8\nmaterial m 1 1 1 1 1 1 1\n"
-         "sphere 1e-31 0 5e-30 1e-30 m\nplane 0 -3e-30 0 0 1 0 m\nlight 0 -1 1 1 1 1 1\n"),
+         "sphere 1e-31 0 5e-30 1e-30 m\nplane 0 -3e-30 0 0 1 0 m\nlight 0 -1 1 1 1 1 1\n"
+         "cube 1e-31 0 5e-30 2e-31 m\nsquare 0 0 6e-30 0 0 -1 1e-30 m\n"
+         "cylinder 1e-30 0 5e-30 1e-31 m\ncone 0 -1e-30 5e-30 1e-31 3e-31 m\n"),
     };
 
     for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {

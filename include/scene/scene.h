@@ -182,6 +182,21 @@ static inline Material *scene_material_of(const Scene *scene, const Triangle *tr
 /* Returns how many shapes of kind the scene holds. */
 size_t scene_count_of(const Scene *scene, ShapeKind kind);
 
+/* Returns the position among the scene's objects of shape index of kind. */
+unsigned scene_order_of(const Scene *scene, ShapeKind kind, size_t index);
+
+/* A walk over the scene's shapes in the order of the file. */
+typedef struct {
+    size_t next[SHAPE_KINDS]; /* the next of each kind */
+} SceneWalk;
+
+/* Starts *w at the scene's first shape. */
+void scene_walk_start(SceneWalk *w);
+
+/* Stores in *kind and *index the next shape of w in file order and
+ * returns 1, or returns 0 when there are no more. */
+int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *index);
+
 /* Returns the material of the shape of kind and index in scene (writable:
  * the readers' texture records set it; a mesh's triangles share one). */
 Material *scene_material(const Scene *scene, ShapeKind kind, size_t index);

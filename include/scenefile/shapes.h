@@ -30,6 +30,17 @@ extern const int shapes_count[SHAPE_KINDS];
 extern const char *const *const shapes_names[SHAPE_KINDS];
 extern const FieldKind *const shapes_kinds[SHAPE_KINDS];
 
+/* The names and kinds of some shapes' numbers, for the readers' own
+ * record specs (lex.h): cylinders take the sphere's, cubes the sphere's
+ * kinds. */
+extern const char *const shapes_sphere_names[];
+extern const FieldKind shapes_sphere_kinds[];
+extern const char *const shapes_cube_names[];
+extern const char *const shapes_square_names[];
+extern const FieldKind shapes_square_kinds[];
+extern const char *const shapes_cone_names[];
+extern const FieldKind shapes_cone_kinds[];
+
 /* The name of each kind, for messages ("sphere", "cone", ...). */
 extern const char *const shapes_word[SHAPE_KINDS];
 
@@ -39,5 +50,10 @@ extern const char *const shapes_word[SHAPE_KINDS];
  * saying why and *field the number at fault. */
 int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
                const char **fault, int *field);
+
+/* Stores in v the numbers that make shape index of kind in scene, as its
+ * record gave them (lengths divided back by 2^length_exponent, exactly;
+ * normals as given); returns how many. */
+int shapes_numbers(const Scene *scene, ShapeKind kind, size_t index, double *v);
 
 #endif

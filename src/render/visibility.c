@@ -10,27 +10,6 @@
 static const ShapeKind visibility_of_bvh[4] = {SHAPE_SPHERE, SHAPE_TRIANGLE, SHAPE_CUBE,
                                                SHAPE_SQUARE};
 
-/* Returns the position among all objects of shape k of kind. */
-static unsigned visibility_order(const Scene *scene, ShapeKind kind, size_t k)
-{
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return scene->spheres[k].order;
-    case SHAPE_PLANE:
-        return scene->planes[k].order;
-    case SHAPE_TRIANGLE:
-        return scene->triangles[k].order;
-    case SHAPE_CUBE:
-        return scene->cubes[k].order;
-    case SHAPE_SQUARE:
-        return scene->squares[k].order;
-    case SHAPE_CYLINDER:
-        return scene->cylinders[k].order;
-    default:
-        return scene->cones[k].order;
-    }
-}
-
 /* Finds where the ray first crosses shape k of kind with 0 < t < tmax;
  * returns 1 with *t, or 0. */
 static int visibility_hit(const Scene *scene, ShapeKind kind, size_t k, const Ray *ray, real tmax,
@@ -100,7 +79,7 @@ static int visibility_nearest_of(const Scene *scene, ShapeKind kind, const Ray *
             continue;
         /* t is at most hit->t: it wins when nearer, or as near and listed
          * first. */
-        order = visibility_order(scene, kind, k);
+        order = scene_order_of(scene, kind, k);
         if (!found || t < hit->t || order < hit->order) {
             visibility_set_hit(hit, t, kind, k, order);
             found = 1;

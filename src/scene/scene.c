@@ -173,6 +173,52 @@ size_t scene_count_of(const Scene *scene, ShapeKind kind)
     }
 }
 
+unsigned scene_order_of(const Scene *scene, ShapeKind kind, size_t k)
+{
+    switch (kind) {
+    case SHAPE_SPHERE:
+        return scene->spheres[k].order;
+    case SHAPE_PLANE:
+        return scene->planes[k].order;
+    case SHAPE_TRIANGLE:
+        return scene->triangles[k].order;
+    case SHAPE_CUBE:
+        return scene->cubes[k].order;
+    case SHAPE_SQUARE:
+        return scene->squares[k].order;
+    case SHAPE_CYLINDER:
+        return scene->cylinders[k].order;
+    default:
+        return scene->cones[k].order;
+    }
+}
+
+void scene_walk_start(SceneWalk *w)
+{
+    memset(w, 0, sizeof *w);
+}
+
+int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *index)
+{
+    unsigned best = ~0u;
+    int found = 0;
+
+    /* Each kind's array is in file order: the next shape is the least
+     * order among the heads. */
+    for (int k = 0; k < SHAPE_KINDS; k++) {
+        size_t i = w->next[k];
+        if (i < scene_count_of(scene, (ShapeKind)k) &&
+            scene_order_of(scene, (ShapeKind)k, i) < best) {
+            best = scene_order_of(scene, (ShapeKind)k, i);
+            *kind = (ShapeKind)k;
+            found = 1;
+        }
+    }
+    if (found)
+        *index = w->next[*kind]++;
+    return found;
+}
+
 Material *scene_material(const Scene *scene, ShapeKind kind, size_t k)
 {
     switch (kind) {

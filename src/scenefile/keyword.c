@@ -8,6 +8,10 @@
  *   sphere     -> 'sphere' xC yC zC radius material
  *   plane      -> 'plane' px py pz nx ny nz material
  *   triangle   -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material
+ *   cube       -> 'cube' xC yC zC half material
+ *   square     -> 'square' xC yC zC nx ny nz half material
+ *   cylinder   -> 'cylinder' x y z radius material   (infinite, along y)
+ *   cone       -> 'cone' x y z radius height material (infinite, cone.h)
  *   mesh       -> 'mesh' path material               (a Wavefront OBJ file)
  *   light      -> 'light' x y z r g b i              (distant, any number)
  *   ambient    -> 'ambient' r g b                    (at most once)
@@ -27,6 +31,7 @@
 #include "scenefile/lex.h"
 #include "scenefile/mesh.h"
 #include "scenefile/obj.h"
+#include "scenefile/shapes.h"
 
 /* The reader's state. */
 typedef struct {
@@ -78,6 +83,14 @@ static const RecordSpec keyword_plane = {"the plane", "px py pz nx ny nz materia
 static const RecordSpec keyword_triangle = {"the triangle",
                                             "x0 y0 z0 x1 y1 z1 x2 y2 z2 material", 9, 0, 0,
                                             keyword_triangle_names, keyword_coord_kinds};
+static const RecordSpec keyword_cube = {"the cube", "xC yC zC half material", 4, 0, 0,
+                                        shapes_cube_names, shapes_sphere_kinds};
+static const RecordSpec keyword_square = {"the square", "xC yC zC nx ny nz half material", 7, 0,
+                                          0, shapes_square_names, shapes_square_kinds};
+static const RecordSpec keyword_cylinder = {"the cylinder", "x y z radius material", 4, 0, 0,
+                                            shapes_sphere_names, shapes_sphere_kinds};
+static const RecordSpec keyword_cone = {"the cone", "x y z radius height material", 5, 0, 0,
+                                        shapes_cone_names, shapes_cone_kinds};
 static const RecordSpec keyword_light = {"the light", "x y z r g b i", 7, 0, 0,
                                          keyword_light_names, keyword_light_kinds};
 static const RecordSpec keyword_ambient = {"the ambient light", "r g b", 3, 0, 0,
@@ -325,61 +338,66 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     return keyword_file_name(K, scene, name, (size_t)index);
 }
 
+/* shape -> KEYWORD numbers material: reads rec, an element of a shape of
+ * kind whose numbers spec names, into the scene. */
+static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, ShapeKind kind,
+                                const RecordSpec *spec)
+{
+    double v[SHAPES_NUMBERS_MAX];
+    const char *fault = NULL;
+    int rc, field = 0;
+    Material m;
+
+    if (keyword_numbers_and_material(K, rec, 1, spec, scene, v, &m) != 0)
+        return -1;
+    rc = shapes_add(scene, kind, v, &m, &fault, &field);
+    if (rc == SHAPES_INVALID) {
+        keyword_fail(K, &rec->line, rec->tok[field < 0 ? 0 : 1 + field].column, "%s", fault);
+        return -1;
+    }
+    return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
+}
+
 /* sphere -> 'sphere' xC yC zC radius material */
 static int keyword_sphere_record(Keyword *K, const Record *rec, Scene *scene)
 {
-    double v[4];
-    Sphere s;
-
-    if (keyword_numbers_and_material(K, rec, 1, &keyword_sphere, scene, v, &s.material) != 0)
-        return -1;
-    s.centre = vec3(v[0], v[1], v[2]);
-    s.radius = v[3];
-    {
-        int rc = scene_add_sphere(scene, &s);
-        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
-    }
+    return keyword_shape_record(K, rec, scene, SHAPE_SPHERE, &keyword_sphere);
 }
 
 /* plane -> 'plane' px py pz nx ny nz material */
 static int keyword_plane_record(Keyword *K, const Record *rec, Scene *scene)
 {
-    double v[6];
-    Material m;
-    Plane pl;
-
-    if (keyword_numbers_and_material(K, rec, 1, &keyword_plane, scene, v, &m) != 0)
-        return -1;
-    if (plane_make(&pl, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), 1, m) != 0) {
-        keyword_fail(K, &rec->line, rec->tok[4].column,
-                     "the plane's normal is the zero vector: it must give a direction");
-        return -1;
-    }
-    {
-        int rc = scene_add_plane(scene, &pl);
-        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
-    }
+    return keyword_shape_record(K, rec, scene, SHAPE_PLANE, &keyword_plane);
 }
 
 /* triangle -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material */
 static int keyword_triangle_record(Keyword *K, const Record *rec, Scene *scene)
 {
-    double v[9];
-    Material m;
-    Triangle tri;
+    return keyword_shape_record(K, rec, scene, SHAPE_TRIANGLE, &keyword_triangle);
+}
 
-    if (keyword_numbers_and_material(K, rec, 1, &keyword_triangle, scene, v, &m) != 0)
-        return -1;
-    if (triangle_make(&tri, vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]),
-                      vec3(v[6], v[7], v[8])) != 0) {
-        keyword_fail(K, &rec->line, rec->tok[0].column,
-                     "the triangle's three vertices lie on one line: it has no area");
-        return -1;
-    }
-    {
-        int rc = scene_add_triangle(scene, &tri, &m);
-        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
-    }
+/* cube -> 'cube' xC yC zC half material */
+static int keyword_cube_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    return keyword_shape_record(K, rec, scene, SHAPE_CUBE, &keyword_cube);
+}
+
+/* square -> 'square' xC yC zC nx ny nz half material */
+static int keyword_square_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    return keyword_shape_record(K, rec, scene, SHAPE_SQUARE, &keyword_square);
+}
+
+/* cylinder -> 'cylinder' x y z radius material */
+static int keyword_cylinder_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    return keyword_shape_record(K, rec, scene, SHAPE_CYLINDER, &keyword_cylinder);
+}
+
+/* cone -> 'cone' x y z radius height material */
+static int keyword_cone_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    return keyword_shape_record(K, rec, scene, SHAPE_CONE, &keyword_cone);
 }
 
 /* Returns a new string holding token t; NULL out of memory. */
@@ -510,14 +528,16 @@ static const KeywordKind keyword_kinds[] = {
     {"sphere", keyword_sphere_record},   {"plane", keyword_plane_record},
     {"triangle", keyword_triangle_record}, {"mesh", keyword_mesh_record},
     {"light", keyword_light_record},     {"ambient", keyword_ambient_record},
-    {"background", keyword_background_record},
+    {"background", keyword_background_record}, {"cube", keyword_cube_record},
+    {"square", keyword_square_record},   {"cylinder", keyword_cylinder_record},
+    {"cone", keyword_cone_record},
 };
 
 enum { KEYWORD_KINDS = sizeof keyword_kinds / sizeof keyword_kinds[0] };
 
 #define KEYWORD_LIST                                                                          \
-    "'camera', 'material', 'sphere', 'plane', 'triangle', 'mesh', 'light', 'ambient' or "     \
-    "'background'"
+    "'camera', 'material', 'sphere', 'plane', 'triangle', 'cube', 'square', 'cylinder', "     \
+    "'cone', 'mesh', 'light', 'ambient' or 'background'"
 
 /* Records why the first token of rec is not a known keyword. */
 static void keyword_fail_keyword(Keyword *K, const Record *rec)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "math/number.h"
+#include "scenefile/shapes.h"
 
 /* Writes the numbers of v (n of them), each after a space. */
 static void save_numbers(FILE *fp, const double *v, int n)
@@ -95,46 +96,35 @@ static void save_materials(FILE *fp, const Scene *scene)
     }
 }
 
-/* Writes the objects in the scene's order: a 3-way merge of the shape
- * arrays, each already in that order. */
+/* Writes the objects in the scene's order, each as its element (a mesh as
+ * its mesh line). */
 static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
                         const char *out_name, Error *err)
 {
-    size_t s = 0, p = 0, t = 0, mesh = 0;
-    int k = scene->length_exponent;
+    size_t mesh = 0;
+    SceneWalk w;
+    ShapeKind kind;
+    size_t i;
 
-    while (s < scene->sphere_count || p < scene->plane_count || t < scene->triangle_count) {
-        unsigned so = s < scene->sphere_count ? scene->spheres[s].order : ~0u;
-        unsigned po = p < scene->plane_count ? scene->planes[p].order : ~0u;
-        unsigned to = t < scene->triangle_count ? scene->triangles[t].order : ~0u;
+    scene_walk_start(&w);
+    while (scene_walk_next(scene, &w, &kind, &i)) {
+        double v[SHAPES_NUMBERS_MAX];
+        int n;
 
-        if (so < po && so < to) {
-            const Sphere *sp = &scene->spheres[s++];
-            double r = ldexp(sp->radius, -k);
-            fputs("sphere", fp);
-            save_point(fp, sp->centre, k);
-            save_numbers(fp, &r, 1);
-            fprintf(fp, " %s\n", save_name(scene, &sp->material));
-        } else if (po < to) {
-            const Plane *pl = &scene->planes[p++];
-            fputs("plane", fp);
-            save_point(fp, pl->point, k);
-            save_point(fp, pl->given, 0);
-            fprintf(fp, " %s\n", save_name(scene, &pl->material));
-        } else if (mesh < scene->mesh_count && scene->meshes[mesh].first == t) {
+        if (kind == SHAPE_TRIANGLE && mesh < scene->mesh_count && scene->meshes[mesh].first == i) {
             const SceneMesh *m = &scene->meshes[mesh++];
             fputs("mesh ", fp);
             if (save_mesh_path(fp, m, scene_name, out_name, err) != 0)
                 return -1;
-            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, &scene->triangles[t])));
-            t += m->count;
-        } else {
-            const Triangle *tri = &scene->triangles[t++];
-            fputs("triangle", fp);
-            for (int j = 0; j < 3; j++)
-                save_point(fp, tri->v[j], k);
-            fprintf(fp, " %s\n", save_name(scene, scene_material_of(scene, tri)));
+            fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
+            /* The walk passes over the mesh's other triangles. */
+            w.next[SHAPE_TRIANGLE] = i + m->count;
+            continue;
         }
+        n = shapes_numbers(scene, kind, i, v);
+        fputs(shapes_word[kind], fp);
+        save_numbers(fp, v, n);
+        fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
     }
     return 0;
 }

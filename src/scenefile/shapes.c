@@ -1,8 +1,10 @@
 /* shapes.c: shapes from their records' numbers (see shapes.h). */
 #include "scenefile/shapes.h"
 
-static const char *const shapes_sphere_names[] = {"centre x", "centre y", "centre z", "radius"};
-static const FieldKind shapes_sphere_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+#include <math.h>
+
+const char *const shapes_sphere_names[] = {"centre x", "centre y", "centre z", "radius"};
+const FieldKind shapes_sphere_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                                 FIELD_POSITIVE};
 static const char *const shapes_plane_names[] = {"point x",  "point y",  "point z",
                                                  "normal x", "normal y", "normal z"};
@@ -13,14 +15,14 @@ static const char *const shapes_triangle_names[] = {"x0", "y0", "z0", "x1", "y1"
 static const FieldKind shapes_triangle_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                                   FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                                   FIELD_COORD, FIELD_COORD, FIELD_COORD};
-static const char *const shapes_cube_names[] = {"centre x", "centre y", "centre z", "half-edge"};
-static const char *const shapes_square_names[] = {"centre x", "centre y", "centre z", "normal x",
+const char *const shapes_cube_names[] = {"centre x", "centre y", "centre z", "half-edge"};
+const char *const shapes_square_names[] = {"centre x", "centre y", "centre z", "normal x",
                                                   "normal y", "normal z", "half-edge"};
-static const FieldKind shapes_square_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+const FieldKind shapes_square_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                                 FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                                 FIELD_POSITIVE};
-static const char *const shapes_cone_names[] = {"x", "y", "z", "radius", "height"};
-static const FieldKind shapes_cone_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+const char *const shapes_cone_names[] = {"x", "y", "z", "radius", "height"};
+const FieldKind shapes_cone_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                               FIELD_POSITIVE, FIELD_COORD};
 
 const int shapes_count[SHAPE_KINDS] = {4, 6, 9, 4, 7, 4, 5};
@@ -32,6 +34,53 @@ const FieldKind *const shapes_kinds[SHAPE_KINDS] = {
     shapes_square_kinds, shapes_sphere_kinds, shapes_cone_kinds};
 const char *const shapes_word[SHAPE_KINDS] = {"sphere", "plane",    "triangle", "cube",
                                               "square", "cylinder", "cone"};
+
+/* Stores p's coordinates, divided by 2^k, in v from index i. */
+static void shapes_put(double *v, int i, Vec3 p, int k)
+{
+    v[i] = ldexp(p.x, -k);
+    v[i + 1] = ldexp(p.y, -k);
+    v[i + 2] = ldexp(p.z, -k);
+}
+
+int shapes_numbers(const Scene *scene, ShapeKind kind, size_t i, double *v)
+{
+    int k = scene->length_exponent;
+
+    switch (kind) {
+    case SHAPE_SPHERE:
+        shapes_put(v, 0, scene->spheres[i].centre, k);
+        v[3] = ldexp(scene->spheres[i].radius, -k);
+        break;
+    case SHAPE_PLANE:
+        shapes_put(v, 0, scene->planes[i].point, k);
+        shapes_put(v, 3, scene->planes[i].given, 0);
+        break;
+    case SHAPE_TRIANGLE:
+        for (int j = 0; j < 3; j++)
+            shapes_put(v, 3 * j, scene->triangles[i].v[j], k);
+        break;
+    case SHAPE_CUBE:
+        shapes_put(v, 0, scene->cubes[i].centre, k);
+        v[3] = ldexp(scene->cubes[i].half, -k);
+        break;
+    case SHAPE_SQUARE:
+        shapes_put(v, 0, scene->squares[i].centre, k);
+        shapes_put(v, 3, scene->squares[i].given, 0);
+        v[6] = ldexp(scene->squares[i].half, -k);
+        break;
+    case SHAPE_CYLINDER:
+        shapes_put(v, 0, scene->cylinders[i].centre, k);
+        v[3] = ldexp(scene->cylinders[i].radius, -k);
+        break;
+    default:
+        shapes_put(v, 0, scene->cones[i].base, k);
+        v[3] = ldexp(scene->cones[i].radius, -k);
+        v[4] = ldexp(scene->cones[i].height, -k);
+        break;
+    }
+    return shapes_count[kind];
+}
 
 /* Returns the point of v's numbers from index i. */
 static Vec3 shapes_point(const double *v, int i)
