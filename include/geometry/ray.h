@@ -54,6 +54,17 @@ static inline Vec3 ray_reflect(Vec3 d, Vec3 n)
 int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out);
 
 /*
+ * Returns the share of unpolarised light a smooth dielectric surface
+ * mirrors, by Fresnel's equations: d is the incoming direction (any
+ * length), n the unit normal facing it (d . n <= 0), eta = n1 / n2 the
+ * ratio of the indices on d's side and the far side. The average of the
+ * s and p reflectances, ((eta c_i - c_t) / (eta c_i + c_t))^2 and
+ * ((eta c_t - c_i) / (eta c_t + c_i))^2, with c_i and c_t the cosines of
+ * incidence and refraction; 1 on total internal reflection.
+ */
+double ray_fresnel(Vec3 d, Vec3 n, real eta);
+
+/*
  * Returns a start point for a ray leaving the surface point p in direction
  * w, safe from re-hitting the surface it leaves: p is moved along the unit
  * normal n, to the side w points to, by the projection of p's error bound

@@ -34,6 +34,12 @@ static inline Colour colour_scale(Colour a, double s)
     return colour(s * a.r, s * a.g, s * a.b);
 }
 
+/* Returns a * b, channel by channel. */
+static inline Colour colour_mul(Colour a, Colour b)
+{
+    return colour(a.r * b.r, a.g * b.g, a.b * b.b);
+}
+
 /* Returns the largest channel of c. */
 static inline double colour_max(Colour c)
 {

@@ -4,7 +4,8 @@
  * after all.
  *
  * A secondary ray whose weight (the product of the mirror and transparency
- * weights down to it) times the most any ray at its depth can see falls
+ * weights down to it, in its largest channel) times the most any ray at
+ * its depth can see falls
  * below `cutoff` levels is not traced, nor a shadow ray whose light would
  * add less than that; each is kept in the Cut (unless there is no memory
  * for it: then it is traced). render.c decides, pixel by pixel, whether
@@ -21,14 +22,15 @@
 #include "render/tracer.h"
 
 /* A ray the cut-off left out: a mirror or refracted ray of depth `depth`,
- * whose colour the sample's sum takes times weight, or a shadow ray (up to
- * t = tmax), which adds weight x E x lit. */
+ * whose colour the sample's sum takes times weight (channel by channel:
+ * tinted mirrors and glass weigh the channels apart), or a shadow ray (up
+ * to t = tmax), which adds weight x E x lit. */
 typedef struct {
     Ray ray;
     RayKind kind;
     int depth;
     real tmax;
-    double weight;
+    Colour weight;
     Colour lit;
 } CutRay;
 

@@ -14,8 +14,12 @@
  *     ka Ia Ci / 255 + sum over lights of E i (kd max(0, N . L) Ci Cs / 255
  *                                              + ks max(0, N . H)^alpha Cs)
  * with H the unit vector halfway between L and the direction to the
- * viewer; its distant lights' shadow rays are unbounded. Each shadow ray is
- * cast unless the tracer's cut-off allows leaving it out (cut.h).
+ * viewer; its distant lights' shadow rays are unbounded. The MPL format's
+ * materials are shaded by the same term, their kind setting ka, kd and ks
+ * (docs/scene-format.md), and its point lights' i falls off with the
+ * distance d as i / d^2, times (1 - (d / R)^4)^2 within a range R and 0
+ * beyond it. Each shadow ray is cast unless the tracer's cut-off allows
+ * leaving it out (cut.h).
  */
 #ifndef RAYTRACE_SHADE_H
 #define RAYTRACE_SHADE_H
@@ -37,14 +41,16 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit);
 
 /* Returns the course's local term at sh, with n its surface normal and ns
  * its shading normal, both facing the viewer; its shadow rays' light
- * reaches the pixel with weight (for the cut-off). */
+ * reaches the pixel with weight (for the cut-off; the course's weights are
+ * the same in every channel). */
 Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double weight);
 
 /* Returns the Blinn-Phong local term of material pm at sh, seen from
- * direction view (unit, towards the viewer); n, ns and weight as for
- * shade_local(). */
+ * direction view (unit, towards the viewer); n and ns as for
+ * shade_local(), its light reaching the pixel with weight, channel by
+ * channel. */
 Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Vec3 n, Vec3 ns,
-                   Vec3 view, double weight);
+                   Vec3 view, Colour weight);
 
 /* Casts the shadow ray `shadow` up to tmax and returns the share E of the
  * light that passes: 1 or 0 in opaque scenes, the product of the

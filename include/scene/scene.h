@@ -28,15 +28,19 @@ typedef struct {
     Vec3 position;    /* a point light: where it is, scene units; a distant
                          light: the direction its light travels, as written */
     Colour colour;    /* Cs, 0..255 per channel */
-    int distant;      /* 1: a distant light (keyword format) */
-    double intensity; /* i, the distant light's intensity */
+    int distant;      /* 1: a distant light (keyword and MPL formats) */
+    double intensity; /* i: the named materials' lights are scaled by it */
     Vec3 to_light;    /* a distant light: unit vector towards it */
+    int falloff;      /* 1: a point light whose strength falls off as
+                         i / d^2, and to 0 at range (shade.h) */
+    double range;     /* with falloff: no light at distance range or
+                         beyond, scene units; 0 for no limit */
 } Light;
 
 /* Returns the point light at position of colour c. */
 static inline Light light_point(Vec3 position, Colour c)
 {
-    Light light = {position, c, 0, 0, {0, 0, 0}};
+    Light light = {position, c, 0, 0, {0, 0, 0}, 0, 0};
     return light;
 }
 
@@ -69,7 +73,12 @@ struct Bvh;
 
 typedef struct Scene {
     Camera camera;          /* eye, screen, image size and lens */
-    Colour background;      /* seen where a ray hits nothing, 0..255 */
+    Colour background;      /* seen where a ray hits nothing, 0..255 (with a
+                               sky: seen looking straight down) */
+    Colour sky;             /* with has_sky, seen looking straight up, and
+                               blended linearly with the background by the
+                               direction's y in between (seed 001's sky) */
+    int has_sky;            /* the background is that gradient */
     Colour ambient;         /* course: Ca, added to every lit surface, 0 by
                                default; keyword: Ia, the ambient record or
                                else the sum of i Cs over the lights */

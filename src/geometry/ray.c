@@ -1,6 +1,8 @@
 /* ray.c: where secondary rays start (see ray.h). */
 #include "geometry/ray.h"
 
+#include <math.h>
+
 
 /* Moves x, a finite real, one representable real in the direction of
  * the sign of step (not at all for 0 or NaN). */
@@ -34,4 +36,18 @@ int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out)
         return 0;
     *out = vec3_normalize(vec3_add(vec3_scale(u, eta), vec3_scale(n, eta * cos_i - sqrt(k))));
     return 1;
+}
+
+double ray_fresnel(Vec3 d, Vec3 n, real eta)
+{
+    double ci = -(double)vec3_dot(d, n) / (double)vec3_length(d), st2, ct, rs, rp;
+
+    ci = ci > 1 ? 1 : ci < 0 ? 0 : ci;
+    st2 = (double)eta * (double)eta * (1 - ci * ci);
+    if (st2 >= 1)
+        return 1;
+    ct = sqrt(1 - st2);
+    rs = (eta * ci - ct) / (eta * ci + ct);
+    rp = (eta * ct - ci) / (eta * ct + ci);
+    return 0.5 * (rs * rs + rp * rp);
 }

@@ -39,9 +39,19 @@ void cut_init(Cut *cut, const Scene *scene, double cutoff)
     cut->deferred = NULL;
     cut->deferred_count = 0;
     cut->deferred_capacity = 0;
-    for (size_t i = 0; i < scene->light_count; i++)
+    if (scene->has_sky)
+        bg = fmax(bg, colour_max(scene->sky));
+    for (size_t i = 0; i < scene->light_count; i++) {
+        /* A light whose strength grows without bound near it (i / d^2)
+         * bounds nothing: only shadow rays, whose light is known, are left
+         * out then. */
+        if (scene->lights[i].falloff) {
+            cut->base = cut->per_level = INFINITY;
+            return;
+        }
         lights += colour_max(scene->lights[i].colour) *
                   (scene->named_count > 0 ? scene->lights[i].intensity : 1);
+    }
     if (scene->named_count == 0) {
         /* The course's rule: local <= Ca + sum of Cs (Ci <= 255, cos <= 1,
          * E <= 1), and C = (1 - R - T) local + R Cr + T Ct is a mean of
@@ -53,10 +63,12 @@ void cut_init(Cut *cut, const Scene *scene, double cutoff)
         cut->per_level = 0;
         return;
     }
-    /* Blinn-Phong: local <= ka Ia + sum of i (kd + ks) Cs, and C = local +
-     * rho Cr + tau Ct with rho + tau <= 1: a ray that may still spawn k
-     * levels of secondary rays sees at most max(background, local) +
-     * k local. */
+    /* Named materials: local <= ka Ia + sum of i (kd + ks) Cs, and C is
+     * local plus at most one (tinted, so no larger) mirror and refracted
+     * colour, with weights adding to at most 1 (Blinn-Phong: rho + tau;
+     * plastic: 1 - F and F of local and Cr; glass: F and 1 - F): a ray that
+     * may still spawn k levels of secondary rays sees at most
+     * max(background, local) + k local. */
     for (size_t i = 0; i < scene->named_count; i++) {
         const NamedMaterial *m = &scene->named[i];
         local = fmax(local, m->ka * colour_max(scene->ambient) + (m->kd + m->ks) * lights);

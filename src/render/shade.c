@@ -125,17 +125,14 @@ double shade_light_share(const Tracer *t, const Ray *shadow, real tmax)
 
 /* Says whether cut allows leaving out the shadow ray from sh towards light
  * (see shade_shadow_ray()), the light adding lit (a colour, E = 1) to a ray
- * reached with weight: E is then taken as 0, and weight times lit's largest
- * channel is what the pixel may lack (E is in [0, 1]). */
-static inline int shade_cut_shadow(Cut *cut, double weight, Colour lit, const Shade *sh, Vec3 n,
-                                   const Light *light, Vec3 to_light)
+ * reached with weight (channel by channel), most being the largest channel
+ * of weight times lit: E is then taken as 0, and most is what the pixel may
+ * lack (E is in [0, 1]). */
+static inline int shade_cut_shadow(Cut *cut, double most, Colour weight, Colour lit,
+                                   const Shade *sh, Vec3 n, const Light *light, Vec3 to_light)
 {
     CutRay d;
-    double most;
 
-    if (!cut)
-        return 0;
-    most = weight * colour_max(lit);
     if (!(most < cut->cutoff))
         return 0;
     d.ray = shade_shadow_ray(sh, n, light, to_light, &d.tmax);
@@ -174,7 +171,9 @@ static inline Colour shade_direct(const Tracer *t, const Light *light, const Sha
         return colour(0, 0, 0);
     lit = colour(cos_a * (ci.r * light->colour.r / 255), cos_a * (ci.g * light->colour.g / 255),
                  cos_a * (ci.b * light->colour.b / 255));
-    if (shade_cut_shadow(t->cut, weight, lit, sh, n, light, to_light))
+    /* The course's weights are grey: the largest channel is w max(lit). */
+    if (t->cut && shade_cut_shadow(t->cut, weight * colour_max(lit), colour(weight, weight, weight),
+                                   lit, sh, n, light, to_light))
         return colour(0, 0, 0);
     e = shade_visibility(t, sh, n, light, to_light);
     if (!(e > 0))
@@ -201,8 +200,29 @@ static inline Colour shade_phong_light(const NamedMaterial *pm, Colour ci, Colou
                   pm->kd * cos_a * (ci.b * cs.b / 255) + spec * cs.b);
 }
 
+/* Returns the strength of light at the point to_light from it: i, times
+ * for a point light with falloff 1 / d^2 and, with a range R, (1 -
+ * (d / R)^4)^2, which is 1 near the light and falls smoothly to 0 at R; 0
+ * at R and beyond. */
+static inline double shade_strength(const Light *light, Vec3 to_light)
+{
+    double d2, w;
+
+    if (!light->falloff)
+        return light->intensity;
+    d2 = vec3_dot(to_light, to_light);
+    if (light->range > 0) {
+        double q = d2 / (light->range * light->range);
+        if (!(q < 1))
+            return 0;
+        w = 1 - q * q;
+        return light->intensity / d2 * (w * w);
+    }
+    return light->intensity / d2;
+}
+
 Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Vec3 n, Vec3 ns,
-                   Vec3 view, double weight)
+                   Vec3 view, Colour weight)
 {
     const Scene *scene = t->scene;
     Colour ci = sh->colour, c;
@@ -214,20 +234,22 @@ Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Ve
         Vec3 to_light = light->distant ? light->to_light
                                        : vec3_sub(light->position, sh->sp.point);
         Vec3 l = light->distant ? to_light : vec3_normalize(to_light);
-        double cos_a = vec3_dot(ns, l), e;
+        double cos_a = vec3_dot(ns, l), e, strength;
         Colour lit;
         int known = 0;
 
-        if (!(cos_a > 0))
+        if (!(cos_a > 0) || !((strength = shade_strength(light, to_light)) > 0))
             continue;
         if (t->cut) {
+            Colour full;
             lit = shade_phong_light(pm, ci, light->colour, cos_a, ns, l, view);
             known = 1;
-            if (shade_cut_shadow(t->cut, weight, colour_scale(lit, light->intensity), sh, n, light,
-                                 to_light))
+            full = colour_scale(lit, strength);
+            if (shade_cut_shadow(t->cut, colour_max(colour_mul(weight, full)), weight, full, sh, n,
+                                 light, to_light))
                 continue;
         }
-        e = shade_visibility(t, sh, n, light, to_light) * light->intensity;
+        e = shade_visibility(t, sh, n, light, to_light) * strength;
         if (!(e > 0))
             continue;
         if (!known)

@@ -159,7 +159,14 @@ int visibility_occluded(const Scene *scene, const Ray *ray, real tmax)
             return 1;
     if (scene->accel)
         return bvh_occluded(scene->accel, ray, tmax);
-    for (unsigned m = scene->kinds & VISIBILITY_BOUNDED; m != 0; m &= m - 1)
+    /* Spheres first, inline: the course scene's shadow rays meet nothing
+     * else. */
+    for (size_t k = 0; k < scene->sphere_count; k++) {
+        real t;
+        if (sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, &t))
+            return 1;
+    }
+    for (unsigned m = scene->kinds & VISIBILITY_BOUNDED & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
         if (visibility_occluded_by(scene, visibility_first(m), ray, tmax))
             return 1;
     return 0;

@@ -479,8 +479,7 @@ static int keyword_light_record(Keyword *K, const Record *rec, Scene *scene)
                      "direction its light travels");
         return -1;
     }
-    light.position = vec3(v[0], v[1], v[2]);
-    light.colour = colour(v[3], v[4], v[5]);
+    light = light_point(vec3(v[0], v[1], v[2]), colour(v[3], v[4], v[5]));
     light.distant = 1;
     light.intensity = v[6];
     light.to_light = vec3_neg(vec3_direction(light.position));
