@@ -286,8 +286,14 @@ double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)
         if (s >= 0)
             return s;
     }
-    /* Kind by kind, in ShapeKind's order (the lowest bit first). */
-    for (unsigned m = scene->kinds; m != 0; m &= m - 1)
+    /* Kind by kind, in ShapeKind's order (the lowest bit first), spheres
+     * inline. */
+    for (size_t k = 0; k < scene->sphere_count; k++) {
+        const Sphere *s = &scene->spheres[k];
+        if (!visibility_attenuate(&share, &s->material, sphere_crossings(s, ray, 0, tmax)))
+            return 0;
+    }
+    for (unsigned m = scene->kinds & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
         if (!visibility_attenuate_by(scene, visibility_first(m), ray, tmax, &share))
             return 0;
     return share;
