@@ -273,7 +273,7 @@ expect_grep "--scene-format course message" "seed002.txt:5:1: error: expected a 
 expect_exit "--scene-format keyword on a course scene" 1 "$RT" --check --scene-format keyword "$scene"
 expect_grep "--scene-format keyword message" "course.txt:6:1: error: expected an element such as 'sphere', found the number '100'" "$T/err"
 expect_exit "--scene-format bad" 2 "$RT" --check --scene-format pov "$scene"
-expect_grep "--scene-format bad message" "option '--scene-format' takes course, keyword or auto, found 'pov'" "$T/err"
+expect_grep "--scene-format bad message" "option '--scene-format' takes course, keyword, mpl or auto, found 'pov'" "$T/err"
 expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.ppm\" <scenes/seed002.txt"
 "$RT" scenes/seed002.txt "$T/seed.ppm" && cmp -s "$T/seed.ppm" "$T/stdin-kw.ppm" && pass ||
     fail "a keyword scene reads the same from standard input"

@@ -52,6 +52,8 @@ typedef struct {
     double ka, kd, ks;   /* ambient, diffuse and specular weights, >= 0 */
     double shininess;    /* the Blinn-Phong exponent alpha, >= 0 */
     int line;            /* line of its definition, for messages */
+    char *texture;       /* MPL: its texture as the file names it, or NULL;
+                            owned by the scene */
 } NamedMaterial;
 
 /* Returns the opaque, untextured material of colour c and mirror weight r. */

@@ -59,7 +59,7 @@ typedef enum {
 
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
-typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD } SceneFormat;
+typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD, SCENE_MPL } SceneFormat;
 
 /* A keyword-format mesh line, kept so that the scene can be saved. */
 typedef struct {
@@ -126,7 +126,10 @@ typedef struct Scene {
     size_t mesh_count;
     size_t mesh_capacity;
     SceneFormat format;     /* the format it was read from */
-    Vec3 look_from;         /* keyword: the camera line as written */
+    int camera_line;        /* MPL: a camera line was given (else the
+                               default camera) */
+    Vec3 look_from;         /* keyword, MPL: the camera line as written (MPL:
+                               fov in degrees, vertical) */
     Vec3 look_at;
     double fov;
     struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
@@ -238,7 +241,8 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
                          size_t (*fill)(Triangle *tris, TriangleShading *sh, void *ctx),
                          void *ctx);
 
-/* Appends *m, taking ownership of its name (freed on failure); returns its
+/* Appends *m, taking ownership of its name and texture name (freed on
+ * failure); returns its
  * index, or -1 when memory runs out. */
 int scene_add_named(Scene *scene, NamedMaterial *m);
 

@@ -17,8 +17,9 @@
 
 #include "base/error.h"
 
-enum { LEX_MAX_TOKENS = 18 }; /* tokens kept per line: a keyword, 15 numbers
-                                 (a transparent triangle), 2 extra */
+enum { LEX_MAX_TOKENS = 32 }; /* tokens kept per line: a keyword, 15 numbers
+                                 (a transparent triangle), and room for an
+                                 MPL line's stray commas */
 
 /* A field of a line: where it starts and how long it is. */
 typedef struct {

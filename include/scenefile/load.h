@@ -1,13 +1,15 @@
 /*
- * load.h: reading a scene file in either format: the course's (course.h) or
- * seed 002's keyword format (keyword.h), told apart by content unless the
- * caller names one.
+ * load.h: reading a scene file in any of the three formats: the course's
+ * (course.h), seed 002's keyword format (keyword.h) or seed 001's MPL
+ * format (mpl.h), told apart by content unless the caller names one.
  *
  * The rule: the first token of the first line that is neither blank nor a
  * comment (after a UTF-8 byte order mark) decides. A course scene opens with
- * the camera's coordinates, a number; a keyword scene with a keyword. So a
- * token that starts with an ASCII letter and is not a number word ("nan",
- * "inf") means the keyword format, anything else the course format, whose
+ * the camera's coordinates, a number; a keyword scene with a keyword; an
+ * MPL scene with one of its line letters. So a token that is one of the
+ * letters m, p, l or c means the MPL format (no keyword is one letter); one
+ * that starts with another ASCII letter and is not a number word ("nan",
+ * "inf") means the keyword format; anything else the course format, whose
  * parser then explains what it expected.
  */
 #ifndef RAYTRACE_LOAD_H

@@ -7,11 +7,22 @@
 #define RAYTRACE_TEXTURE_FILE_H
 
 #include "base/error.h"
+#include "scene/scene.h"
 #include "scene/texture.h"
 
 /* Reads the image file at path into *tex, keeping a copy of path; returns
  * 0, or -1 with *err describing the fault in the file (*tex then owns
  * nothing). */
 int texture_file_load(Texture *tex, const char *path, Error *err);
+
+/* What texture_file_add() returns when the file cannot be used. */
+#define TEXTURE_FILE_FAULT (-3)
+
+/* Returns the index of the texture read from path among the scene's
+ * textures, reading it and adding it to the scene unless a texture of that
+ * path is there already; or TEXTURE_FILE_FAULT with *err describing the
+ * fault in the file, or what scene_add_texture() returned (-1,
+ * SCENE_OVER_LIMIT). */
+int texture_file_add(Scene *scene, const char *path, Error *err);
 
 #endif

@@ -19,9 +19,10 @@ const char *options_help(void)
     return "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
            "       raytrace --check SCENE\n"
            "       raytrace --save OUT SCENE\n"
-           "Render SCENE, a scene file in the course format or in seed 002's keyword\n"
-           "format (told apart by content), to OUTPUT: a PPM (P6), PNG or PFM image,\n"
-           "chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM for any other) or\n"
+           "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
+           "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
+           "PNG or PFM image, chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM for\n"
+           "any other) or\n"
            "by --format. SCENE may be '-' for standard input,\n"
            "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
            "image has been written.\n"
@@ -52,8 +53,9 @@ const char *options_help(void)
            "  --save OUT         read SCENE, a keyword-format scene, and write it to OUT\n"
            "                     in the keyword format, every number exact; render\n"
            "                     nothing\n"
-           "  --scene-format F   read SCENE as F: course, keyword, or auto (the\n"
-           "                     default: keyword when its first element is a word)\n"
+           "  --scene-format F   read SCENE as F: course, keyword, mpl, or auto (the\n"
+           "                     default: mpl when its first element is m, p, l or c,\n"
+           "                     keyword when it is another word, else course)\n"
            "  --no-accel         test every ray against every object (no bounding\n"
            "                     volume hierarchy): slower, the same image\n"
            "  -v, --verbose      after rendering, print the image size, threads, rays\n"
@@ -148,8 +150,11 @@ typedef struct {
 static const OptionWord options_formats[] = {
     {"ppm", FORMAT_PPM}, {"png", FORMAT_PNG}, {"pfm", FORMAT_PFM}, {NULL, 0}};
 static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
-static const OptionWord options_scene_formats[] = {
-    {"course", SCENE_COURSE}, {"keyword", SCENE_KEYWORD}, {"auto", SCENE_AUTO}, {NULL, 0}};
+static const OptionWord options_scene_formats[] = {{"course", SCENE_COURSE},
+                                                    {"keyword", SCENE_KEYWORD},
+                                                    {"mpl", SCENE_MPL},
+                                                    {"auto", SCENE_AUTO},
+                                                    {NULL, 0}};
 
 #define OPT(name, kind, field) name, kind, offsetof(Options, field)
 static const OptionSpec options_table[] = {

@@ -7,24 +7,30 @@
 #include "render/cut.h"
 #include "scene/texture.h"
 
-/* Returns seed 001's stripes' count along u on the shape of kind: by its
- * program's rule, 10 around most shapes (30 r on a sphere of radius r < 1,
- * 10 r on a larger one), half / 10 across a square, 1 on a plane or a
- * triangle. */
-static double shade_stripe_count(const Scene *scene, const Hit *hit)
+/* Returns the coordinate seed 001's stripes alternate along at sh, the
+ * point of hit with texture coordinates uv: a stripe of the colour where
+ * its fraction is below one half, a black one above. By its program's
+ * rule: 10 stripes around most shapes (30 r around a sphere of radius
+ * r < 1, 10 r around a larger one) and across each face of a cube; one a
+ * unit of x, in the world, on planes and triangles; half / 10 a unit
+ * across a square. */
+static double shade_stripes(const Scene *scene, const Hit *hit, const Shade *sh,
+                            const double uv[2])
 {
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         double r = scene->spheres[hit->index].radius;
-        return r < 1 ? 30 * r : 10 * r;
+        return uv[0] * (r < 1 ? 30 * r : 10 * r);
     }
-    case SHAPE_SQUARE:
-        return scene->squares[hit->index].half / 10;
     case SHAPE_PLANE:
     case SHAPE_TRIANGLE:
-        return 1;
+        return sh->sp.point.x;
+    case SHAPE_SQUARE: {
+        const Square *q = &scene->squares[hit->index];
+        return vec3_dot(vec3_sub(sh->sp.point, q->centre), q->axis_u) * (q->half / 10);
+    }
     default:
-        return 10;
+        return uv[0] * 10;
     }
 }
 
@@ -90,7 +96,7 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
         sh.colour = texture_lookup(&scene->textures[sh.material->texture], uv[0], uv[1],
                                    sh.material->filter, clamp_v);
     } else if (sh.material->stripes) {
-        double x = uv[0] * shade_stripe_count(scene, hit);
+        double x = shade_stripes(scene, hit, &sh, uv);
         sh.colour = x - floor(x) < 0.5 ? sh.material->colour : colour(0, 0, 0);
     } else {
         sh.colour = sh.material->colour;

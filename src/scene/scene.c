@@ -32,8 +32,10 @@ void scene_free(Scene *scene)
     for (size_t i = 0; i < scene->texture_count; i++)
         texture_free(&scene->textures[i]);
     free(scene->textures);
-    for (size_t i = 0; i < scene->named_count; i++)
+    for (size_t i = 0; i < scene->named_count; i++) {
         free(scene->named[i].name);
+        free(scene->named[i].texture);
+    }
     free(scene->named);
     for (size_t i = 0; i < scene->mesh_count; i++) {
         free(scene->meshes[i].path);
@@ -542,6 +544,7 @@ int scene_add_named(Scene *scene, NamedMaterial *m)
 
     if (rc != 0) {
         free(m->name);
+        free(m->texture);
         return rc;
     }
     scene->named[scene->named_count] = *m;

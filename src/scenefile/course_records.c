@@ -239,26 +239,16 @@ int course_lens_record(CourseParser *P, const Record *rec, Scene *scene)
 static int course_load_texture(CourseParser *P, const Record *rec, const Token *t, Scene *scene)
 {
     char *path = lex_path(&P->lex, t);
-    Texture tex;
     Error inner;
     int index;
 
     if (!path)
         return -1;
-    for (size_t i = 0; i < scene->texture_count; i++) {
-        if (strcmp(scene->textures[i].path, path) == 0) {
-            free(path);
-            return (int)i;
-        }
-    }
-    if (texture_file_load(&tex, path, &inner) != 0) {
-        lex_fail_file(&P->lex, rec, t, "texture", &inner);
-        free(path);
-        return -1;
-    }
+    index = texture_file_add(scene, path, &inner);
     free(path);
-    index = scene_add_texture(scene, &tex);
-    if (index < 0)
+    if (index == TEXTURE_FILE_FAULT)
+        lex_fail_file(&P->lex, rec, t, "texture", &inner);
+    else if (index < 0)
         course_fail_memory(P, rec, scene, index);
     return index < 0 ? -1 : index;
 }

@@ -30,6 +30,7 @@
 #include "scene/scale.h"
 #include "scenefile/lex.h"
 #include "scenefile/mesh.h"
+#include "scenefile/names.h"
 #include "scenefile/obj.h"
 #include "scenefile/shapes.h"
 
@@ -39,8 +40,7 @@ typedef struct {
     int camera_line;        /* line of the camera, 0 before it */
     int ambient_line;       /* line of the ambient record, 0 before it */
     int background_line;    /* line of the background record, 0 before it */
-    uint32_t *names;        /* hash table of material indices + 1, 0 = free */
-    size_t names_size;      /* slots, a power of two, or 0 */
+    Names names;            /* the materials by name */
 } Keyword;
 
 static const char *const keyword_camera_names[] = {
@@ -116,121 +116,6 @@ static int keyword_is_number(const Token *t)
     return number_parse(t->text, t->len, &ignored) != NUMBER_SYNTAX;
 }
 
-/* Returns the FNV-1a hash of token t. */
-static uint32_t keyword_hash(const Token *t)
-{
-    uint32_t h = 2166136261u;
-
-    for (size_t i = 0; i < t->len; i++)
-        h = (h ^ (unsigned char)t->text[i]) * 16777619u;
-    return h;
-}
-
-/* Returns the index of the material named by token t, or -1. */
-static int keyword_find(const Keyword *K, const Scene *scene, const Token *t)
-{
-    if (K->names_size == 0)
-        return -1;
-    for (size_t i = keyword_hash(t) & (K->names_size - 1);; i = (i + 1) & (K->names_size - 1)) {
-        uint32_t slot = K->names[i];
-        const char *name;
-        if (slot == 0)
-            return -1;
-        name = scene->named[slot - 1].name;
-        if (strlen(name) == t->len && memcmp(name, t->text, t->len) == 0)
-            return (int)slot - 1;
-    }
-}
-
-/* Files material `index` of the scene under its name token t, growing the
- * table to keep it at most half full; returns 0, or -1 out of memory. */
-static int keyword_file_name(Keyword *K, const Scene *scene, const Token *t, size_t index)
-{
-    if (2 * (index + 1) > K->names_size) {
-        size_t size = K->names_size ? 2 * K->names_size : 64;
-        uint32_t *table = calloc(size, sizeof *table);
-        if (!table)
-            return keyword_fail_memory(K);
-        for (size_t k = 0; k < index; k++) {
-            Token name = {scene->named[k].name, strlen(scene->named[k].name), 0};
-            size_t i = keyword_hash(&name) & (size - 1);
-            while (table[i])
-                i = (i + 1) & (size - 1);
-            table[i] = (uint32_t)k + 1;
-        }
-        free(K->names);
-        K->names = table;
-        K->names_size = size;
-    }
-    {
-        size_t i = keyword_hash(t) & (K->names_size - 1);
-        while (K->names[i])
-            i = (i + 1) & (K->names_size - 1);
-        K->names[i] = (uint32_t)index + 1;
-    }
-    return 0;
-}
-
-/* Reads the numbers of spec from rec's token `first` on, then the name of
- * a material as the last field, into values and *m (a copy of the named
- * material); returns 0, or -1 with the fault at the field that is wrong. */
-static int keyword_numbers_and_material(Keyword *K, const Record *rec, int first,
-                                        const RecordSpec *spec, const Scene *scene,
-                                        double *values, Material *m)
-{
-    int fields = rec->count - first, n = spec->count, index;
-    const Token *name;
-    char q[64];
-
-    for (int i = 0; i < fields && i < n; i++) {
-        const Token *t = &rec->tok[first + i];
-        if (i == fields - 1 && !keyword_is_number(t)) {
-            /* The name came early: numbers are missing. */
-            keyword_fail(K, &rec->line, t->column,
-                         "expected %d numbers before the material of %s (%s), found %d", n,
-                         spec->what, spec->syntax, i);
-            return -1;
-        }
-        if (lex_number(&K->lex, rec, first + i, spec, i, &values[i]) != 0)
-            return -1;
-    }
-    if (fields <= n) {
-        keyword_fail(K, &rec->line, rec->end_column,
-                     "expected the name of a material after the numbers of %s (%s), found the "
-                     "end of the line",
-                     spec->what, spec->syntax);
-        return -1;
-    }
-    name = &rec->tok[first + n];
-    if (keyword_is_number(name)) {
-        if (fields > n + 1) {
-            int numbers = n + 1;
-            while (numbers < fields && first + numbers < LEX_MAX_TOKENS &&
-                   keyword_is_number(&rec->tok[first + numbers]))
-                numbers++;
-            keyword_fail(K, &rec->line, name->column, "expected %d numbers for %s (%s), found %d%s",
-                         n, spec->what, spec->syntax, numbers,
-                         first + numbers < LEX_MAX_TOKENS ? "" : " or more");
-        } else {
-            keyword_fail(K, &rec->line, name->column,
-                         "expected the name of a material for %s (%s), found the number %s",
-                         spec->what, spec->syntax, lex_quote(q, sizeof q, name));
-        }
-        return -1;
-    }
-    if (fields > n + 1)
-        return lex_fail_extra(&K->lex, rec, first + n + 1, "the material's name");
-    index = keyword_find(K, scene, name);
-    if (index < 0) {
-        keyword_fail(K, &rec->line, name->column,
-                     "unknown material %s: a material line must define it before %s",
-                     lex_quote(q, sizeof q, name), spec->what);
-        return -1;
-    }
-    *m = scene->named[index].base;
-    return 0;
-}
-
 /* Records that rec's element could not be stored, scene_add_*() having
  * returned rc; returns -1. */
 static int keyword_fail_store(Keyword *K, const Record *rec, const Scene *scene, long rc)
@@ -297,7 +182,7 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
                      name ? lex_quote(q, sizeof q, name) : "");
         return -1;
     }
-    index = keyword_find(K, scene, name);
+    index = names_find(&K->names, scene, name);
     if (index >= 0) {
         keyword_fail(K, &rec->line, name->column, "the material %s is already defined, on line %d",
                      lex_quote(q, sizeof q, name), scene->named[index].line);
@@ -335,7 +220,7 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     if (index < 0)
         return keyword_fail_store(K, rec, scene, index);
     scene->named[index].base.named = index;
-    return keyword_file_name(K, scene, name, (size_t)index);
+    return names_add(&K->names, scene, (size_t)index) != 0 ? keyword_fail_memory(K) : 0;
 }
 
 /* shape -> KEYWORD numbers material: reads rec, an element of a shape of
@@ -348,7 +233,7 @@ static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, Sha
     int rc, field = 0;
     Material m;
 
-    if (keyword_numbers_and_material(K, rec, 1, spec, scene, v, &m) != 0)
+    if (names_numbers_and_material(&K->lex, &K->names, rec, 1, spec, scene, "a material line", v, &m) != 0)
         return -1;
     rc = shapes_add(scene, kind, v, &m, &fault, &field);
     if (rc == SHAPES_INVALID) {
@@ -431,7 +316,7 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
                                     : "a material name after the path");
         return -1;
     }
-    if (keyword_numbers_and_material(K, rec, 2, &spec, scene, NULL, &m) != 0)
+    if (names_numbers_and_material(&K->lex, &K->names, rec, 2, &spec, scene, "a material line", NULL, &m) != 0)
         return -1;
     sm.opened = lex_path(&K->lex, path_tok);
     if (!sm.opened)
@@ -606,10 +491,9 @@ int keyword_parse_text(const char *name, const char *text, size_t len, size_t me
     scene->format = SCENE_KEYWORD;
     lex_init(&K.lex, name, text, len, err);
     K.camera_line = K.ambient_line = K.background_line = 0;
-    K.names = NULL;
-    K.names_size = 0;
+    names_init(&K.names);
     rc = keyword_elements(&K, scene);
-    free(K.names);
+    names_free(&K.names);
     if (rc != 0) {
         scene_free(scene);
         return -1;

@@ -8,6 +8,7 @@
 #include "math/number.h"
 #include "scenefile/course.h"
 #include "scenefile/keyword.h"
+#include "scenefile/mpl.h"
 
 SceneFormat load_detect(const char *text, size_t len)
 {
@@ -35,6 +36,8 @@ SceneFormat load_detect(const char *text, size_t len)
         while (i < len && text[i] != ' ' && text[i] != '\t' && text[i] != '\r' &&
                text[i] != '\n' && text[i] != '#')
             i++;
+        if (i - start == 1 && strchr("mplc", ch))
+            return SCENE_MPL;
         return number_parse(text + start, i - start, &ignored) == NUMBER_SYNTAX ? SCENE_KEYWORD
                                                                                 : SCENE_COURSE;
     }
@@ -48,6 +51,8 @@ int load_scene_text(const char *name, const char *text, size_t len, SceneFormat 
         format = load_detect(text, len);
     if (format == SCENE_KEYWORD)
         return keyword_parse_text(name, text, len, memory_limit, scene, err);
+    if (format == SCENE_MPL)
+        return mpl_parse_text(name, text, len, memory_limit, scene, err);
     return course_parse_text(name, text, len, memory_limit, scene, err);
 }
 

@@ -28,3 +28,15 @@ int texture_file_load(Texture *tex, const char *path, Error *err)
     tex->scale = 255.0 / im.maxval;
     return 0;
 }
+
+int texture_file_add(Scene *scene, const char *path, Error *err)
+{
+    Texture tex;
+
+    for (size_t i = 0; i < scene->texture_count; i++)
+        if (strcmp(scene->textures[i].path, path) == 0)
+            return (int)i;
+    if (texture_file_load(&tex, path, err) != 0)
+        return TEXTURE_FILE_FAULT;
+    return scene_add_texture(scene, &tex);
+}

@@ -1,0 +1,34 @@
+/*
+ * mpl.h: reading seed 001's scene format, the MPL format, into a Scene.
+ *
+ * One element per line, its kind the line's first letter: `m` a material,
+ * `p` a primitive, `l` a light, and our `c` settings (camera, background,
+ * sky, ambient light, samples); numbers may be written as C float
+ * literals (`1.f`, `0.5f`) and followed by stray commas
+ * (docs/scene-format.md, "The MPL format"). Like course.h, the reader never
+ * prints: a fault fills an Error with the file, line and column and a
+ * message saying what was expected and what was found.
+ */
+#ifndef RAYTRACE_MPL_H
+#define RAYTRACE_MPL_H
+
+#include <stddef.h>
+
+#include "base/error.h"
+#include "scene/scene.h"
+
+/* The defaults of a scene without a camera line: seed 001's camera. */
+#define MPL_DEFAULT_FOV 90.0 /* vertical field of view, degrees */
+enum { MPL_DEFAULT_SIZE = 800 }; /* width and height, pixels */
+
+/* The default index of a dielectric or plastic material. */
+#define MPL_DEFAULT_IOR 1.5
+
+/* Reads the len bytes at text (NUL bytes included), named `name` in errors
+ * and for relative texture paths, into *scene, which this call initialises
+ * with memory_limit (scene.h); returns 0, or -1 with *err filled and
+ * *scene empty. */
+int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                   Scene *scene, Error *err);
+
+#endif

@@ -1,0 +1,580 @@
+/*
+ * mpl.c: seed 001's MPL scene format (see mpl.h, docs/scene-format.md).
+ * Lines, comments and numbers follow lex.h, with C float literals and
+ * stray commas allowed.
+ *
+ *   scene     -> line*                 (materials before the shapes that use them)
+ *   material  -> 'm' name kind r g b stripes specular glossiness texture [ior]
+ *   kind      -> MATTE | PLASTIC | METALLIC | DIELECTRIC       (any case)
+ *   primitive -> 'p' shape number* material
+ *   shape     -> Sphere | Plane | Triangle | Tri | Cube | Square | Cylinder | Cone
+ *   light     -> 'l' DirectionLight dx dy dz r g b i
+ *              | 'l' PointLight x y z r g b i [range]
+ *   setting   -> 'c' Camera px py pz tx ty tz fov width height    (at most once)
+ *              | 'c' Background r g b | 'c' Sky r g b r g b        (one of them)
+ *              | 'c' Ambient r g b | 'c' Samples n                 (each at most once)
+ *
+ * Colours are 0 to 1 (scaled to the renderer's 0 to 255).
+ */
+#include "scenefile/mpl.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "math/angle.h"
+#include "math/number.h"
+#include "scene/scale.h"
+#include "scenefile/lex.h"
+#include "scenefile/names.h"
+#include "scenefile/shapes.h"
+#include "scenefile/texture_file.h"
+
+/* The reader's state. */
+typedef struct {
+    Lexer lex;           /* the cursor over the input */
+    int camera_line;     /* line of each setting, 0 before it */
+    int background_line; /* (Background or Sky) */
+    int ambient_line;
+    int samples_line;
+    Names names;         /* the materials by name */
+} Mpl;
+
+/* Records a fault at column of line. */
+#define mpl_fail(M, line, column, ...) lex_fail(&(M)->lex, line, column, __VA_ARGS__)
+
+static const char *const mpl_rgb_names[] = {"red", "green", "blue"};
+static const FieldKind mpl_rgb_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
+static const char *const mpl_material_names[] = {"red",      "green",      "blue", "stripes",
+                                                 "specular", "glossiness", "index"};
+static const FieldKind mpl_material_kinds[] = {FIELD_FRACTION, FIELD_FRACTION,    FIELD_FRACTION,
+                                               FIELD_FRACTION, FIELD_NONNEGATIVE, FIELD_NONNEGATIVE,
+                                               FIELD_POSITIVE};
+static const char *const mpl_light_names[] = {"x",    "y",         "z",    "red",
+                                              "green", "blue", "intensity", "range"};
+static const FieldKind mpl_light_kinds[] = {FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
+                                            FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION,
+                                            FIELD_NONNEGATIVE, FIELD_NONNEGATIVE};
+static const char *const mpl_camera_names[] = {"x",  "y",  "z",  "target x",
+                                               "target y", "target z", "field of view"};
+static const FieldKind mpl_camera_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                             FIELD_COORD, FIELD_COORD, FIELD_COORD,
+                                             FIELD_POSITIVE};
+static const char *const mpl_sky_names[] = {"zenith red", "zenith green", "zenith blue",
+                                            "nadir red",  "nadir green",  "nadir blue"};
+static const FieldKind mpl_sky_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION,
+                                          FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
+static const char *const mpl_tri_names[] = {"size", "x", "y", "z"};
+static const FieldKind mpl_tri_kinds[] = {FIELD_POSITIVE, FIELD_COORD, FIELD_COORD, FIELD_COORD};
+
+static const RecordSpec mpl_material = {
+    "the material", "m name kind r g b stripes specular glossiness texture [index]", 6, 0, 0,
+    mpl_material_names, mpl_material_kinds};
+static const RecordSpec mpl_index = {"the material", NULL, 1, 0, 0, mpl_material_names + 6,
+                                     mpl_material_kinds + 6};
+static const RecordSpec mpl_direction = {"the directional light", "dx dy dz r g b intensity", 7,
+                                         0, 0, mpl_light_names, mpl_light_kinds};
+static const RecordSpec mpl_point = {"the point light", "x y z r g b intensity [range]", 7, 1, 0,
+                                     mpl_light_names, mpl_light_kinds};
+static const RecordSpec mpl_camera = {"the camera", "x y z tx ty tz fov width height", 7, 0, 0,
+                                      mpl_camera_names, mpl_camera_kinds};
+static const RecordSpec mpl_background = {"the background", "r g b", 3, 0, 0, mpl_rgb_names,
+                                          mpl_rgb_kinds};
+static const RecordSpec mpl_ambient = {"the ambient light", "r g b", 3, 0, 0, mpl_rgb_names,
+                                       mpl_rgb_kinds};
+static const RecordSpec mpl_sky = {"the sky", "r g b r g b", 6, 0, 0, mpl_sky_names,
+                                   mpl_sky_kinds};
+
+/* The shapes a primitive line names, and the numbers each takes. */
+typedef struct {
+    const char *word; /* as the seed writes it; any case */
+    ShapeKind kind;
+    RecordSpec spec;
+} MplShape;
+
+static const MplShape mpl_shapes[] = {
+    {"Sphere", SHAPE_SPHERE, {"the sphere", "cx cy cz radius material", 4, 0, 0,
+                              shapes_sphere_names, shapes_sphere_kinds}},
+    {"Plane", SHAPE_PLANE, {"the plane", "px py pz nx ny nz material", 6, 0, 0, NULL, NULL}},
+    {"Triangle", SHAPE_TRIANGLE, {"the triangle",
+                                  "x1 y1 z1 x2 y2 z2 x3 y3 z3 material", 9, 0, 0, NULL, NULL}},
+    {"Tri", SHAPE_TRIANGLE, {"the triangle", "size x y z material", 4, 0, 0, mpl_tri_names,
+                             mpl_tri_kinds}},
+    {"Cube", SHAPE_CUBE, {"the cube", "cx cy cz size material", 4, 0, 0, shapes_cube_names,
+                          shapes_sphere_kinds}},
+    {"Square", SHAPE_SQUARE, {"the square", "cx cy cz nx ny nz size material", 7, 0, 0,
+                              shapes_square_names, shapes_square_kinds}},
+    {"Cylinder", SHAPE_CYLINDER, {"the cylinder", "cx cy cz radius material", 4, 0, 0,
+                                  shapes_sphere_names, shapes_sphere_kinds}},
+    {"Cone", SHAPE_CONE, {"the cone", "x y z radius height material", 5, 0, 0,
+                          shapes_cone_names, shapes_cone_kinds}},
+};
+
+enum { MPL_SHAPES = sizeof mpl_shapes / sizeof mpl_shapes[0] };
+
+static const char *const mpl_kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
+
+/* Says whether token t spells word in any case. */
+static int mpl_word_is(const Token *t, const char *word)
+{
+    size_t n = strlen(word);
+
+    if (t->len != n)
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        char a = t->text[i], b = word[i];
+        if ((a >= 'A' && a <= 'Z' ? a - 'A' + 'a' : a) != (b >= 'A' && b <= 'Z' ? b - 'A' + 'a' : b))
+            return 0;
+    }
+    return 1;
+}
+
+/* Says whether the len bytes at s are a C float literal's digits: a
+ * number that only its trailing 'f' or 'F' keeps from reading. */
+static int mpl_float_suffix(const char *s, size_t len)
+{
+    double ignored;
+
+    return len >= 2 && (s[len - 1] == 'f' || s[len - 1] == 'F') &&
+           number_parse(s, len - 1, &ignored) != NUMBER_SYNTAX;
+}
+
+/* Writes seed 001's spellings of numbers as plain ones in rec: a stray
+ * comma after a field, or standing alone, goes; so does a C float
+ * literal's 'f' ("1.f", "0.5f"). The tokens keep their columns. */
+static void mpl_clean(Record *rec)
+{
+    int kept = 0, dropped = 0, stored = rec->count < LEX_MAX_TOKENS ? rec->count : LEX_MAX_TOKENS;
+
+    for (int k = 0; k < stored; k++) {
+        Token t = rec->tok[k];
+        while (k > 0 && t.len > 0 && t.text[t.len - 1] == ',')
+            t.len--;
+        if (t.len == 0) {
+            dropped++;
+            continue;
+        }
+        if (k > 0 && mpl_float_suffix(t.text, t.len))
+            t.len--;
+        rec->tok[kept++] = t;
+    }
+    rec->count -= dropped;
+}
+
+/* Records that rec's element could not be stored, scene_add_*() having
+ * returned rc; returns -1. */
+static int mpl_fail_memory(Mpl *M, const Record *rec, const Scene *scene, long rc)
+{
+    return lex_fail_memory(&M->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
+}
+
+/* Checks that rec has a token at k, what the record needs there;
+ * returns 0, or -1 with "expected WHAT (SYNTAX), found the end of the
+ * line" recorded. */
+static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const char *syntax)
+{
+    if (rec->count > k)
+        return 0;
+    mpl_fail(M, &rec->line, rec->end_column, "expected %s (%s), found the end of the line", what,
+             syntax);
+    return -1;
+}
+
+/* Returns the path of texture token t: beside the scene file, or in its
+ * Textures folder, where seed 001's program looks, when only that exists;
+ * NULL with the fault recorded when memory runs out. */
+static char *mpl_texture_path(Mpl *M, const Token *t)
+{
+    static const char folder[] = "Textures/";
+    char *path = lex_path(&M->lex, t), *alt;
+    Token in = *t;
+    size_t n;
+    FILE *f;
+
+    if (!path || (f = fopen(path, "rb")) != NULL) {
+        if (path)
+            fclose(f);
+        return path;
+    }
+    /* "Textures/NAME" beside the scene file, when it opens. */
+    n = strlen(folder) + t->len;
+    alt = malloc(n + 1);
+    if (!alt) {
+        free(path);
+        error_set(M->lex.err, M->lex.name, "out of memory");
+        return NULL;
+    }
+    memcpy(alt, folder, strlen(folder));
+    memcpy(alt + strlen(folder), t->text, t->len);
+    alt[n] = '\0';
+    in.text = alt;
+    in.len = n;
+    {
+        char *other = t->text[0] == '/' ? NULL : lex_path(&M->lex, &in);
+        free(alt);
+        if (other && (f = fopen(other, "rb")) != NULL) {
+            fclose(f);
+            free(path);
+            return other;
+        }
+        free(other);
+    }
+    return path;
+}
+
+/* Sets what the material kind `model` shades with: the weights of the
+ * Blinn-Phong term (docs/scene-format.md) and the index. */
+static void mpl_model(NamedMaterial *pm, ShadingModel model, double specular, double glossiness,
+                      double ior)
+{
+    Material *b = &pm->base;
+    int diffuse = model == MODEL_MATTE || model == MODEL_PLASTIC;
+    double f0 = (ior - 1) / (ior + 1);
+
+    pm->model = model;
+    pm->ka = pm->kd = diffuse ? 1 : 0;
+    pm->ks = model == MODEL_MATTE ? 0 : specular;
+    pm->shininess = glossiness;
+    b->ior = model == MODEL_MATTE || model == MODEL_METALLIC ? 1 : ior;
+    /* Shadows through glass: what crosses one surface head on, 1 - F(0),
+     * times the mean of its tint. */
+    if (model == MODEL_DIELECTRIC)
+        b->transparency = (1 - f0 * f0) * (b->colour.r + b->colour.g + b->colour.b) / (3 * 255);
+}
+
+/* material -> 'm' name kind r g b stripes specular glossiness texture [ior] */
+static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    const char *syntax = mpl_material.syntax;
+    double v[7] = {0, 0, 0, 0, 0, 0, MPL_DEFAULT_IOR};
+    const Token *name, *kind, *tex;
+    NamedMaterial pm;
+    char q[64];
+    int model = -1, index;
+
+    if (mpl_need(M, rec, 1, "the material's name", syntax) != 0)
+        return -1;
+    name = &rec->tok[1];
+    if (names_find(&M->names, scene, name) >= 0) {
+        mpl_fail(M, &rec->line, name->column, "the material %s is already defined, on line %d",
+                 lex_quote(q, sizeof q, name), scene->named[names_find(&M->names, scene, name)].line);
+        return -1;
+    }
+    if (mpl_need(M, rec, 2, "the material's kind", syntax) != 0)
+        return -1;
+    kind = &rec->tok[2];
+    for (int k = 0; k < 4; k++)
+        if (mpl_word_is(kind, mpl_kinds[k]))
+            model = MODEL_MATTE + k;
+    if (model < 0) {
+        mpl_fail(M, &rec->line, kind->column,
+                 "unknown material kind %s (expected MATTE, PLASTIC, METALLIC or DIELECTRIC)",
+                 lex_quote(q, sizeof q, kind));
+        return -1;
+    }
+    for (int k = 0; k < 6; k++)
+        if (mpl_need(M, rec, 3 + k, "a number for the material", syntax) != 0 ||
+            lex_number(&M->lex, rec, 3 + k, &mpl_material, k, &v[k]) != 0)
+            return -1;
+    if (v[3] != 0 && v[3] != 1) {
+        mpl_fail(M, &rec->line, rec->tok[6].column,
+                 "the material's stripes must be 0 (a plain colour) or 1 (stripes), found %s",
+                 lex_quote(q, sizeof q, &rec->tok[6]));
+        return -1;
+    }
+    if (mpl_need(M, rec, 9, "the material's texture, a file or N for none", syntax) != 0)
+        return -1;
+    tex = &rec->tok[9];
+    if (rec->count > 10 && lex_number(&M->lex, rec, 10, &mpl_index, 0, &v[6]) != 0)
+        return -1;
+    if (rec->count > 11)
+        return lex_fail_extra(&M->lex, rec, 11, "the material's index");
+    memset(&pm, 0, sizeof pm);
+    pm.base = material_plain(colour(v[0] * 255, v[1] * 255, v[2] * 255), 0);
+    pm.base.stripes = v[3] == 1;
+    pm.line = rec->line.number;
+    mpl_model(&pm, (ShadingModel)model, v[4], v[5], v[6]);
+    if (!(tex->len == 1 && (tex->text[0] == 'N' || tex->text[0] == 'n'))) {
+        char *path = mpl_texture_path(M, tex);
+        Error inner;
+        int t;
+        if (!path)
+            return -1;
+        t = texture_file_add(scene, path, &inner);
+        free(path);
+        if (t == TEXTURE_FILE_FAULT) {
+            lex_fail_file(&M->lex, rec, tex, "texture", &inner);
+            return -1;
+        }
+        if (t < 0)
+            return mpl_fail_memory(M, rec, scene, t);
+        pm.base.texture = t;
+        pm.base.filter = TEXTURE_BILINEAR;
+        pm.texture = malloc(tex->len + 1);
+        if (!pm.texture)
+            return mpl_fail_memory(M, rec, scene, -1);
+        memcpy(pm.texture, tex->text, tex->len);
+        pm.texture[tex->len] = '\0';
+    }
+    pm.name = malloc(name->len + 1);
+    if (!pm.name) {
+        free(pm.texture);
+        return mpl_fail_memory(M, rec, scene, -1);
+    }
+    memcpy(pm.name, name->text, name->len);
+    pm.name[name->len] = '\0';
+    index = scene_add_named(scene, &pm);
+    if (index < 0)
+        return mpl_fail_memory(M, rec, scene, index);
+    scene->named[index].base.named = index;
+    return names_add(&M->names, scene, (size_t)index) != 0 ? mpl_fail_memory(M, rec, scene, -1)
+                                                           : 0;
+}
+
+/* primitive -> 'p' shape number* material */
+static int mpl_primitive_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    const MplShape *shape = NULL;
+    RecordSpec spec;
+    double v[SHAPES_NUMBERS_MAX];
+    const char *fault = NULL;
+    int rc, field = 0, n;
+    Material m;
+    char q[64];
+
+    if (mpl_need(M, rec, 1, "the primitive's shape",
+                 "Sphere, Plane, Triangle, Tri, Cube, Square, Cylinder or Cone") != 0)
+        return -1;
+    for (int k = 0; k < MPL_SHAPES; k++)
+        if (mpl_word_is(&rec->tok[1], mpl_shapes[k].word))
+            shape = &mpl_shapes[k];
+    if (!shape) {
+        mpl_fail(M, &rec->line, rec->tok[1].column,
+                 "unknown primitive %s (expected Sphere, Plane, Triangle, Tri, Cube, Square, "
+                 "Cylinder or Cone)",
+                 lex_quote(q, sizeof q, &rec->tok[1]));
+        return -1;
+    }
+    spec = shape->spec;
+    if (!spec.names) { /* the planes' and triangles' numbers are the shapes' own */
+        spec.names = shapes_names[shape->kind];
+        spec.kinds = shapes_kinds[shape->kind];
+    }
+    n = spec.count;
+    if (names_numbers_and_material(&M->lex, &M->names, rec, 2, &spec, scene, "an m line", v, &m) !=
+        0)
+        return -1;
+    if (shape->kind == SHAPE_TRIANGLE && n == 4) {
+        /* The seed program's Tri: size s at (x, y, z), upright in its z
+         * plane: (x, y + s/4), (x - s/4, y - s/4), (x + s/4, y - s/4). */
+        double s = v[0] / 4, x = v[1], y = v[2], z = v[3];
+        double tri[9] = {x, y + s, z, x - s, y - s, z, x + s, y - s, z};
+        memcpy(v, tri, sizeof tri);
+    }
+    rc = shapes_add(scene, shape->kind, v, &m, &fault, &field);
+    if (rc == SHAPES_INVALID) {
+        mpl_fail(M, &rec->line, rec->tok[field < 0 || n == 4 ? 0 : 2 + field].column, "%s", fault);
+        return -1;
+    }
+    return rc != 0 ? mpl_fail_memory(M, rec, scene, rc) : 0;
+}
+
+/* light -> 'l' DirectionLight dx dy dz r g b i | 'l' PointLight x y z r g b i [range] */
+static int mpl_light_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    double v[8] = {0};
+    Light light;
+    int distant, rc;
+    char q[64];
+
+    if (mpl_need(M, rec, 1, "the light's kind", "DirectionLight or PointLight") != 0)
+        return -1;
+    distant = mpl_word_is(&rec->tok[1], "DirectionLight") ||
+              mpl_word_is(&rec->tok[1], "DirectionalLight");
+    if (!distant && !mpl_word_is(&rec->tok[1], "PointLight")) {
+        mpl_fail(M, &rec->line, rec->tok[1].column,
+                 "unknown light %s (expected DirectionLight or PointLight)",
+                 lex_quote(q, sizeof q, &rec->tok[1]));
+        return -1;
+    }
+    if (lex_numbers(&M->lex, rec, 2, distant ? &mpl_direction : &mpl_point, v) < 0)
+        return -1;
+    if (distant && v[0] == 0 && v[1] == 0 && v[2] == 0) {
+        mpl_fail(M, &rec->line, rec->tok[2].column,
+                 "the light's direction is the zero vector: a directional light needs the "
+                 "direction its light travels");
+        return -1;
+    }
+    light = light_point(vec3(v[0], v[1], v[2]), colour(v[3] * 255, v[4] * 255, v[5] * 255));
+    light.intensity = v[6];
+    if (distant) {
+        light.distant = 1;
+        light.to_light = vec3_neg(vec3_direction(light.position));
+    } else {
+        light.falloff = 1;
+        light.range = v[7];
+    }
+    rc = scene_add_light(scene, &light);
+    return rc != 0 ? mpl_fail_memory(M, rec, scene, rc) : 0;
+}
+
+/* camera -> 'c' Camera px py pz tx ty tz fov width height */
+static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    double v[7], half;
+    int width, height;
+    char q[64];
+
+    if (lex_once(&M->lex, rec, &M->camera_line, "the camera") != 0 ||
+        mpl_need(M, rec, 10, "the camera's numbers", mpl_camera.syntax) != 0)
+        return -1;
+    for (int k = 0; k < 7; k++)
+        if (lex_number(&M->lex, rec, 2 + k, &mpl_camera, k, &v[k]) != 0)
+            return -1;
+    if (lex_whole_number(&M->lex, rec, 9, "the image width", "pixels", CAMERA_MAX_SIZE, &width) !=
+            0 ||
+        lex_whole_number(&M->lex, rec, 10, "the image height", "pixels", CAMERA_MAX_SIZE,
+                         &height) != 0)
+        return -1;
+    if (rec->count > 11)
+        return lex_fail_extra(&M->lex, rec, 11, "the image height");
+    if (!(v[6] < 180)) {
+        mpl_fail(M, &rec->line, rec->tok[8].column,
+                 "the camera's field of view must be less than 180 degrees, found %s",
+                 lex_quote(q, sizeof q, &rec->tok[8]));
+        return -1;
+    }
+    scene->camera_line = 1;
+    scene->look_from = vec3(v[0], v[1], v[2]);
+    scene->look_at = vec3(v[3], v[4], v[5]);
+    scene->fov = v[6];
+    /* The seed's field of view is vertical; the camera's, horizontal. */
+    half = angle_atan2(angle_tan(v[6] * ANGLE_PI / 360) * width, height);
+    switch (camera_look_at(&scene->camera, scene->look_from, scene->look_at, 2 * half, width,
+                           height)) {
+    case CAMERA_VIEW_OK:
+        return 0;
+    case CAMERA_VIEW_NO_DIRECTION:
+        mpl_fail(M, &rec->line, rec->tok[5].column,
+                 "the camera looks at its own position: its target must be elsewhere");
+        return -1;
+    default:
+        mpl_fail(M, &rec->line, rec->tok[8].column,
+                 "the camera's field of view %s is too narrow: the screen has no size in double "
+                 "precision",
+                 lex_quote(q, sizeof q, &rec->tok[8]));
+        return -1;
+    }
+}
+
+/* setting -> 'c' Camera ... | Background r g b | Sky r g b r g b | Ambient r g b
+ *          | Samples n */
+static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    double v[6];
+    char q[64];
+
+    if (mpl_need(M, rec, 1, "the setting", "Camera, Background, Sky, Ambient or Samples") != 0)
+        return -1;
+    if (mpl_word_is(&rec->tok[1], "Camera"))
+        return mpl_camera_record(M, rec, scene);
+    if (mpl_word_is(&rec->tok[1], "Background") || mpl_word_is(&rec->tok[1], "Sky")) {
+        int sky = mpl_word_is(&rec->tok[1], "Sky");
+        if (lex_once(&M->lex, rec, &M->background_line, "the background") != 0 ||
+            lex_numbers(&M->lex, rec, 2, sky ? &mpl_sky : &mpl_background, v) < 0)
+            return -1;
+        scene->has_sky = sky;
+        scene->sky = sky ? colour(v[0] * 255, v[1] * 255, v[2] * 255) : colour(0, 0, 0);
+        scene->background = sky ? colour(v[3] * 255, v[4] * 255, v[5] * 255)
+                                : colour(v[0] * 255, v[1] * 255, v[2] * 255);
+        return 0;
+    }
+    if (mpl_word_is(&rec->tok[1], "Ambient")) {
+        if (lex_once(&M->lex, rec, &M->ambient_line, "the ambient light") != 0 ||
+            lex_numbers(&M->lex, rec, 2, &mpl_ambient, v) < 0)
+            return -1;
+        scene->ambient = colour(v[0] * 255, v[1] * 255, v[2] * 255);
+        scene->has_ambient = 1;
+        return 0;
+    }
+    if (mpl_word_is(&rec->tok[1], "Samples")) {
+        if (lex_once(&M->lex, rec, &M->samples_line, "the number of samples per pixel") != 0 ||
+            mpl_need(M, rec, 2, "the number of samples per pixel", "c Samples n") != 0)
+            return -1;
+        if (rec->count > 3)
+            return lex_fail_extra(&M->lex, rec, 3, "the number of samples per pixel");
+        return lex_whole_number(&M->lex, rec, 2, "the number of samples per pixel", "samples",
+                                CAMERA_MAX_SAMPLES, &scene->samples);
+    }
+    mpl_fail(M, &rec->line, rec->tok[1].column,
+             "unknown setting %s (expected Camera, Background, Sky, Ambient or Samples)",
+             lex_quote(q, sizeof q, &rec->tok[1]));
+    return -1;
+}
+
+/* scene -> line* */
+static int mpl_lines(Mpl *M, Scene *scene)
+{
+    Record rec;
+    int rc;
+    char q[64];
+
+    while ((rc = lex_next_record(&M->lex, &rec)) == 1) {
+        const Token *t = &rec.tok[0];
+        mpl_clean(&rec);
+        if (lex_token_is(t, "m"))
+            rc = mpl_material_record(M, &rec, scene);
+        else if (lex_token_is(t, "p"))
+            rc = mpl_primitive_record(M, &rec, scene);
+        else if (lex_token_is(t, "l"))
+            rc = mpl_light_record(M, &rec, scene);
+        else if (lex_token_is(t, "c"))
+            rc = mpl_setting_record(M, &rec, scene);
+        else {
+            mpl_fail(M, &rec.line, t->column,
+                     "unknown line %s (expected 'm' a material, 'p' a primitive, 'l' a light or "
+                     "'c' a setting)",
+                     lex_quote(q, sizeof q, t));
+            rc = -1;
+        }
+        if (rc != 0)
+            return -1;
+    }
+    return rc;
+}
+
+int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+                   Scene *scene, Error *err)
+{
+    Mpl M;
+    int rc;
+
+    scene_init(scene);
+    scene->memory_limit = memory_limit;
+    scene->format = SCENE_MPL;
+    /* Seed 001's sky: white below, blue above. */
+    scene->has_sky = 1;
+    scene->sky = colour(0.5 * 255, 0.7 * 255, 255);
+    scene->background = colour(255, 255, 255);
+    lex_init(&M.lex, name, text, len, err);
+    M.camera_line = M.background_line = M.ambient_line = M.samples_line = 0;
+    names_init(&M.names);
+    rc = mpl_lines(&M, scene);
+    names_free(&M.names);
+    if (rc == 0 && !scene->camera_line) {
+        scene->look_from = vec3(0, 0, 0);
+        scene->look_at = vec3(0, 0, 1);
+        scene->fov = MPL_DEFAULT_FOV;
+        rc = camera_look_at(&scene->camera, scene->look_from, scene->look_at, ANGLE_PI / 2,
+                            MPL_DEFAULT_SIZE, MPL_DEFAULT_SIZE) == CAMERA_VIEW_OK
+                 ? 0
+                 : -1;
+    }
+    if (rc != 0) {
+        scene_free(scene);
+        return -1;
+    }
+    scene_fit_scale(scene);
+    return 0;
+}
