@@ -32,7 +32,7 @@ static void texture_lookup_nearest_and_bilinear(void)
     Colour c;
 
     write_file("build/tex-a.ppm", TEX_P3, strlen(TEX_P3));
-    CHECK_INT(0, texture_file_load(&tex, "build/tex-a.ppm", &err));
+    CHECK_INT(0, texture_file_load(&tex, "build/tex-a.ppm", 0, &err));
     /* Texel centres: u = (i + 0.5) / 3, v from the bottom. */
     c = texture_lookup(&tex, 1.5 / 3, 0.75, TEXTURE_NEAREST, 0);
     CHECK_NEAR(127.5, c.r, 1e-12);
@@ -66,7 +66,7 @@ static void texture_reads_sixteen_bit_binary(void)
     Colour c;
 
     write_file("build/tex-b.ppm", p6, sizeof p6 - 1);
-    CHECK_INT(0, texture_file_load(&tex, "build/tex-b.ppm", &err));
+    CHECK_INT(0, texture_file_load(&tex, "build/tex-b.ppm", 0, &err));
     c = texture_lookup(&tex, 0.3, 0.3, TEXTURE_BILINEAR, 0);
     CHECK_NEAR(255, c.r, 1e-12);
     CHECK_NEAR(32768 * 255.0 / 65535, c.g, 1e-12);

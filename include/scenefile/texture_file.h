@@ -1,7 +1,8 @@
 /*
  * texture_file.h: reading a texture (scene/texture.h) from an image file.
  *
- * Read: PPM (P6 or P3, any maxval).
+ * Read, told apart by their first bytes: JPEG (jpeg.h), PNG (png.h) and
+ * PPM (P6 or P3, any maxval).
  */
 #ifndef RAYTRACE_TEXTURE_FILE_H
 #define RAYTRACE_TEXTURE_FILE_H
@@ -10,10 +11,10 @@
 #include "scene/scene.h"
 #include "scene/texture.h"
 
-/* Reads the image file at path into *tex, keeping a copy of path; returns
- * 0, or -1 with *err describing the fault in the file (*tex then owns
- * nothing). */
-int texture_file_load(Texture *tex, const char *path, Error *err);
+/* Reads the image file at path into *tex, keeping a copy of path, a
+ * JPEG's decoding within max_bytes (0: no limit); returns 0, or -1 with
+ * *err describing the fault in the file (*tex then owns nothing). */
+int texture_file_load(Texture *tex, const char *path, size_t max_bytes, Error *err);
 
 /* What texture_file_add() returns when the file cannot be used. */
 #define TEXTURE_FILE_FAULT (-3)

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "image/jpeg.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
@@ -89,8 +90,21 @@ int picture_parse(const char *name, const char *data, size_t len, Picture *pic, 
                      png.channels == 1 ? "" : "s");
         }
         png_free(&png);
+    } else if (jpeg_is(head, len)) {
+        JpegImage jpg;
+        if (jpeg_parse(name, head, len, 0, &jpg, err) != 0)
+            return -1;
+        if (picture_alloc(pic, jpg.width, jpg.height, name, err) == 0) {
+            size_t count = 3 * (size_t)jpg.width * (size_t)jpg.height;
+            for (size_t k = 0; k < count; k++)
+                pic->rgb[k] = jpg.rgb[k];
+            snprintf(pic->format, sizeof pic->format, "JPEG, %d component%s", jpg.channels,
+                     jpg.channels == 1 ? "" : "s");
+        }
+        jpeg_free(&jpg);
     } else {
-        error_set(err, name, "not an image raytrace reads: expected PPM (P3, P6), PFM or PNG");
+        error_set(err, name,
+                  "not an image raytrace reads: expected PPM (P3, P6), PFM, PNG or JPEG");
         return -1;
     }
     return pic->rgb ? 0 : -1;
