@@ -295,7 +295,7 @@ expect_exit "--save to standard output" 0 "$RT" --save - scenes/seed002.txt
 expect_line "--save output" 2 "camera 0 0 0 0 0 5 2.0943951 700 500" "$T/out"
 echo old >"$T/kept.txt"
 expect_exit "--save a course scene" 1 "$RT" --save "$T/kept.txt" "$scene"
-expect_grep "--save a course scene message" "course.txt: error: --save writes the keyword format, which cannot express a course-format scene" "$T/err"
+expect_grep "--save a course scene message" "course.txt: error: --save writes the keyword and MPL formats, which cannot express a course-format scene" "$T/err"
 expect_grep "--save a course scene keeps the output" "old" "$T/kept.txt"
 expect_clean "--save a course scene leaves no temporary file" "$T"
 expect_exit "--save a bad scene" 1 "$RT" --save "$T/kept.txt" "$T/kw-bad.txt"

@@ -472,7 +472,7 @@ static void keyword_numbers_print_shortest_and_read_back(void)
     CHECK(worst <= 17);
 }
 
-/* Writes scene (read from name) to a new string through save_keyword(). */
+/* Writes scene (read from name) to a new string through save_scene(). */
 static char *saved(const Scene *sc, const char *name)
 {
     FILE *fp = tmpfile();
@@ -483,7 +483,7 @@ static char *saved(const Scene *sc, const char *name)
     CHECK(fp != NULL);
     if (!fp)
         return NULL;
-    CHECK_INT(0, save_keyword(fp, sc, name, "out.txt", &err));
+    CHECK_INT(0, save_scene(fp, sc, name, "out.txt", &err));
     len = ftell(fp);
     rewind(fp);
     text = calloc((size_t)len + 1, 1);
@@ -662,7 +662,7 @@ static void keyword_save_refuses_a_course_scene(void)
     CHECK(fp != NULL);
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     if (fp) {
-        CHECK_INT(-1, save_keyword(fp, &sc, "scenes/course.txt", "out.txt", &err));
+        CHECK_INT(-1, save_scene(fp, &sc, "scenes/course.txt", "out.txt", &err));
         CHECK_CONTAINS(err.message, "cannot express a course-format scene");
         fclose(fp);
     }

@@ -85,9 +85,9 @@ static void square_hits_inside_its_edges_on_both_sides(void)
     CHECK_NEAR(7, t, 0);
     CHECK(!square_intersect(&s, &outside, 0, INFINITY, &t));
     CHECK(!square_intersect(&s, &flat, 0, INFINITY, &t));
-    square_uv(&s, vec3(0.5, -0.5, 0), uv);
-    CHECK_NEAR(0.75, uv[0], 1e-15);
-    CHECK_NEAR(0.25, uv[1], 1e-15);
+    square_uv(&s, vec3(0.5, -0.25, 0), uv); /* in units from the centre */
+    CHECK_NEAR(0.5, uv[0], 1e-15);
+    CHECK_NEAR(-0.25, uv[1], 1e-15);
     /* A floor: u along +x, v along +z. */
     CHECK_INT(0, square_make(&s, vec3(0, -1, 0), vec3(0, 1, 0), 50, plain));
     CHECK(s.axis_u.x == 1 && s.axis_v.z == 1);
@@ -146,9 +146,9 @@ static void cone_hits_its_nappe_only(void)
     sp = cone_surface_at(&c, vec3(0.5, 0.5, 0));
     CHECK_NEAR(sqrt(0.5), sp.normal.x, 1e-15); /* out and up, at 45 degrees */
     CHECK_NEAR(sqrt(0.5), sp.normal.y, 1e-15);
-    cone_uv(&c, vec3(0, 0, -1), uv);
+    cone_uv(&c, vec3(0, 0.25, -0.75), uv);
     CHECK_NEAR(0.5, uv[0], 1e-15);
-    CHECK_NEAR(0, uv[1], 1e-15);
+    CHECK_NEAR(0.25, uv[1], 1e-15);
     /* Upside down: apex below, opening upwards. */
     cone_make(&c, vec3(0, 0, 0), 1, -1, plain);
     above = ray_from(-5, 0.5, 0, 1, 0, 0);

@@ -50,7 +50,8 @@ int cone_crossings(const Cone *c, const Ray *ray, real tmin, real tmax);
 SurfacePoint cone_surface_at(const Cone *c, Vec3 p);
 
 /* Returns in uv the texture coordinates of its point p: u around the axis
- * as on a cylinder, v from 0 on the circle to 1 at the apex. */
+ * as on a cylinder, v = p.y - y of the circle's centre, the image
+ * repeating every unit up the axis (as seed 001's program shows it). */
 void cone_uv(const Cone *c, Vec3 p, double uv[2]);
 
 #endif

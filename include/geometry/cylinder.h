@@ -39,7 +39,8 @@ SurfacePoint cylinder_surface_at(const Cylinder *c, Vec3 p);
 
 /* Returns in uv the texture coordinates of the point p of outward normal
  * n: u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the axis (as on a
- * sphere), v = (p.y - cy) / (2 pi r), so that texels are square. */
+ * sphere), v = p.y - cy, so that the image repeats every unit up the
+ * axis (as seed 001's program shows it). */
 void cylinder_uv(const Cylinder *c, Vec3 p, Vec3 n, double uv[2]);
 
 #endif

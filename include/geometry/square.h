@@ -41,8 +41,10 @@ int square_intersect(const Square *s, const Ray *ray, real tmin, real tmax, real
  * with the normal and the point's error bound. */
 SurfacePoint square_surface_at(const Square *s, Vec3 p);
 
-/* Returns in uv the texture coordinates of its point p: 0 to 1 along
- * axis_u and axis_v, the whole image once. */
+/* Returns in uv the texture coordinates of its point p: its distances
+ * from the centre along axis_u and axis_v, in scene units, so that the
+ * image repeats every unit (as seed 001's program shows textures on
+ * squares). */
 void square_uv(const Square *s, Vec3 p, double uv[2]);
 
 #endif

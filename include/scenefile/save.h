@@ -1,12 +1,15 @@
 /*
- * save.h: writing a scene back in seed 002's keyword format (its Q.1.3).
+ * save.h: writing a scene back in the format it was read from: seed 002's
+ * keyword format (its Q.1.3) or seed 001's MPL format.
  *
- * The file has the camera, the background and ambient lines when the scene
- * set them, every material (in definition order, unused ones too), every
- * light, then every object in the scene's order (which decides exact ties),
- * a mesh as its mesh line. Every number is written with the fewest digits
- * that read back as the same double (at most 17), so loading the saved
- * file gives the same scene, bit for bit, and the same picture.
+ * The file has the camera and the settings the scene set (background or
+ * sky, ambient light, samples), every material (in definition order,
+ * unused ones too), every light, then every object in the scene's order
+ * (which decides exact ties), a keyword mesh as its mesh line. Every number
+ * is written with the fewest digits that read back as the same double (at
+ * most 17; the MPL format's 0-to-1 colours are the ones whose 255-fold is
+ * the scene's), so loading the saved file gives the same scene, bit for
+ * bit, and the same picture. Comments and spacing are not kept.
  */
 #ifndef RAYTRACE_SAVE_H
 #define RAYTRACE_SAVE_H
@@ -18,9 +21,10 @@
 
 /* Writes scene, read from the file named scene_name, to fp as the file
  * named out_name ("-": standard output; mesh paths are written so that they
- * resolve from its directory); returns 0, or -1 with *err filled: a course
- * scene, which the keyword format cannot express, or a write error. */
-int save_keyword(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
-                 Error *err);
+ * resolve from its directory), in its own format; returns 0, or -1 with
+ * *err filled: a course scene, whose screen corners and shading rule
+ * neither other format expresses, or a write error. */
+int save_scene(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
+               Error *err);
 
 #endif

@@ -251,7 +251,7 @@ static int main_save(const Options *opts)
     if (main_check_target(opts, opts->save_path, &err) != 0 ||
         main_open_output(&out, opts->save_path, &err) != 0)
         goto fail;
-    rc = save_keyword(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
+    rc = save_scene(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
                       &err);
     if (rc != 0)
         outfile_abort(&out);

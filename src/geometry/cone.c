@@ -110,5 +110,5 @@ void cone_uv(const Cone *c, Vec3 p, double uv[2])
     Vec3 d = vec3_sub(p, c->apex);
 
     uv[0] = 0.5 + angle_atan2(d.x, -d.z) / (2 * ANGLE_PI);
-    uv[1] = 1 - c->side * d.y / fabs(c->height);
+    uv[1] = p.y - c->base.y;
 }

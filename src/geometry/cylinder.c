@@ -87,5 +87,5 @@ SurfacePoint cylinder_surface_at(const Cylinder *c, Vec3 p)
 void cylinder_uv(const Cylinder *c, Vec3 p, Vec3 n, double uv[2])
 {
     uv[0] = 0.5 + angle_atan2(n.x, -n.z) / (2 * ANGLE_PI);
-    uv[1] = (p.y - c->centre.y) / (2 * ANGLE_PI * c->radius);
+    uv[1] = p.y - c->centre.y;
 }

@@ -60,6 +60,6 @@ void square_uv(const Square *s, Vec3 p, double uv[2])
 {
     Vec3 r = vec3_sub(p, s->centre);
 
-    uv[0] = 0.5 + vec3_dot(r, s->axis_u) / (2 * (double)s->half);
-    uv[1] = 0.5 + vec3_dot(r, s->axis_v) / (2 * (double)s->half);
+    uv[0] = vec3_dot(r, s->axis_u);
+    uv[1] = vec3_dot(r, s->axis_v);
 }

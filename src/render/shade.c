@@ -25,10 +25,8 @@ static double shade_stripes(const Scene *scene, const Hit *hit, const Shade *sh,
     case SHAPE_PLANE:
     case SHAPE_TRIANGLE:
         return sh->sp.point.x;
-    case SHAPE_SQUARE: {
-        const Square *q = &scene->squares[hit->index];
-        return vec3_dot(vec3_sub(sh->sp.point, q->centre), q->axis_u) * (q->half / 10);
-    }
+    case SHAPE_SQUARE:
+        return uv[0] * (scene->squares[hit->index].half / 10);
     default:
         return uv[0] * 10;
     }

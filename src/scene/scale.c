@@ -64,9 +64,18 @@ void scene_fit_scale(Scene *scene)
     cam->v = vec3_ldexp(cam->v, k);
     cam->aperture = ldexp(cam->aperture, k);
     cam->focus = ldexp(cam->focus, k);
-    for (size_t i = 0; i < scene->light_count; i++)
-        if (!scene->lights[i].distant)
-            scene->lights[i].position = vec3_ldexp(scene->lights[i].position, k);
+    for (size_t i = 0; i < scene->light_count; i++) {
+        Light *l = &scene->lights[i];
+        if (l->distant)
+            continue;
+        l->position = vec3_ldexp(l->position, k);
+        /* A light falling off as i / d^2 keeps its strength at every
+         * point when i grows with d^2. */
+        if (l->falloff) {
+            l->intensity = ldexp(l->intensity, 2 * k);
+            l->range = ldexp(l->range, k);
+        }
+    }
     for (size_t i = 0; i < scene->sphere_count; i++) {
         scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
         scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);

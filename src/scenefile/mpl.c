@@ -181,15 +181,14 @@ static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const ch
     return -1;
 }
 
-/* Returns the path of texture token t: beside the scene file, or in its
- * Textures folder, where seed 001's program looks, when only that exists;
- * NULL with the fault recorded when memory runs out. */
+/* Returns the path of texture token t: beside the scene file, or, when
+ * only that opens, in its Textures folder, where seed 001's program looks
+ * (or its textures folder, the same on a system that ignores case); NULL
+ * with the fault recorded when memory runs out. */
 static char *mpl_texture_path(Mpl *M, const Token *t)
 {
-    static const char folder[] = "Textures/";
-    char *path = lex_path(&M->lex, t), *alt;
-    Token in = *t;
-    size_t n;
+    static const char *const folders[] = {"Textures/", "textures/"};
+    char *path = lex_path(&M->lex, t);
     FILE *f;
 
     if (!path || (f = fopen(path, "rb")) != NULL) {
@@ -197,22 +196,22 @@ static char *mpl_texture_path(Mpl *M, const Token *t)
             fclose(f);
         return path;
     }
-    /* "Textures/NAME" beside the scene file, when it opens. */
-    n = strlen(folder) + t->len;
-    alt = malloc(n + 1);
-    if (!alt) {
-        free(path);
-        error_set(M->lex.err, M->lex.name, "out of memory");
-        return NULL;
-    }
-    memcpy(alt, folder, strlen(folder));
-    memcpy(alt + strlen(folder), t->text, t->len);
-    alt[n] = '\0';
-    in.text = alt;
-    in.len = n;
-    {
-        char *other = t->text[0] == '/' ? NULL : lex_path(&M->lex, &in);
-        free(alt);
+    for (int i = 0; i < 2 && t->text[0] != '/'; i++) {
+        size_t k = strlen(folders[i]), n = k + t->len;
+        char *name = malloc(n + 1), *other;
+        Token in = *t;
+        if (!name) {
+            free(path);
+            error_set(M->lex.err, M->lex.name, "out of memory");
+            return NULL;
+        }
+        memcpy(name, folders[i], k);
+        memcpy(name + k, t->text, t->len);
+        name[n] = '\0';
+        in.text = name;
+        in.len = n;
+        other = lex_path(&M->lex, &in);
+        free(name);
         if (other && (f = fopen(other, "rb")) != NULL) {
             fclose(f);
             free(path);

@@ -1,4 +1,4 @@
-/* save.c: a scene in the keyword format (see save.h). */
+/* save.c: a scene in the keyword or the MPL format (see save.h). */
 #define _XOPEN_SOURCE 700 /* realpath */
 
 #include "scenefile/save.h"
@@ -44,27 +44,29 @@ static size_t save_dir_length(const char *path)
     return slash ? (size_t)(slash - path) + 1 : 0;
 }
 
-/* Writes the path of mesh m so that it resolves from out_name's directory:
- * as written when the scene file is in that directory too or the path is
- * absolute, else as an absolute path; returns 0, or -1 with *err filled. */
-static int save_mesh_path(FILE *fp, const SceneMesh *m, const char *scene_name,
-                          const char *out_name, Error *err)
+/* Writes the path of a file the scene names (a `what`: "mesh", "texture"),
+ * written as the scene wrote it and opened at opened, so that it resolves
+ * from out_name's directory: as written when the scene file is in that
+ * directory too or the path is absolute, else as an absolute path;
+ * returns 0, or -1 with *err filled. */
+static int save_path(FILE *fp, const char *written, const char *opened, const char *what,
+                     const char *scene_name, const char *out_name, Error *err)
 {
     size_t sd = save_dir_length(scene_name), od = save_dir_length(out_name);
     char *full;
 
-    if (m->path[0] == '/' || (sd == od && strncmp(scene_name, out_name, sd) == 0)) {
-        fputs(m->path, fp);
+    if (written[0] == '/' || (sd == od && strncmp(scene_name, out_name, sd) == 0)) {
+        fputs(written, fp);
         return 0;
     }
-    full = realpath(m->opened, NULL);
+    full = realpath(opened, NULL);
     if (!full) {
-        error_set(err, m->opened, "cannot find the mesh's absolute path: %s", strerror(errno));
+        error_set(err, opened, "cannot find the %s's absolute path: %s", what, strerror(errno));
         return -1;
     }
     if (strpbrk(full, " \t#")) {
-        error_set(err, full, "the mesh's absolute path has a space or '#', which a scene "
-                             "line cannot hold; save next to the scene file instead");
+        error_set(err, full, "the %s's absolute path has a space or '#', which a scene line "
+                             "cannot hold; save next to the scene file instead", what);
         free(full);
         return -1;
     }
@@ -114,7 +116,7 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
         if (kind == SHAPE_TRIANGLE && mesh < scene->mesh_count && scene->meshes[mesh].first == i) {
             const SceneMesh *m = &scene->meshes[mesh++];
             fputs("mesh ", fp);
-            if (save_mesh_path(fp, m, scene_name, out_name, err) != 0)
+            if (save_path(fp, m->path, m->opened, "mesh", scene_name, out_name, err) != 0)
                 return -1;
             fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
             /* The walk passes over the mesh's other triangles. */
@@ -129,18 +131,13 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
     return 0;
 }
 
-int save_keyword(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
-                 Error *err)
+/* Writes scene in the keyword format (save_scene()). */
+static int save_keyword(FILE *fp, const Scene *scene, const char *scene_name,
+                        const char *out_name, Error *err)
 {
     const Camera *cam = &scene->camera;
     double camera[1] = {scene->fov};
 
-    if (scene->format != SCENE_KEYWORD) {
-        error_set(err, scene_name, "--save writes the keyword format, which cannot express a "
-                                   "course-format scene (its screen corners, point lights and "
-                                   "shading rule)");
-        return -1;
-    }
     fputs("# A keyword-format scene, written by raytrace --save.\n", fp);
     fputs("camera", fp);
     save_point(fp, scene->look_from, 0);
@@ -166,11 +163,121 @@ int save_keyword(FILE *fp, const Scene *scene, const char *scene_name, const cha
         save_numbers(fp, &l->intensity, 1);
         fputc('\n', fp);
     }
-    if (save_objects(fp, scene, scene_name, out_name, err) != 0)
+    return save_objects(fp, scene, scene_name, out_name, err);
+}
+
+/* Returns the MPL number y whose 255-fold is the colour channel c, as
+ * reading y gives: c / 255 or one of its neighbours (reading multiplies by
+ * 255, which may round c / 255's 255-fold away from c). */
+static double save_unscale(double c)
+{
+    double y = c / 255, up = y, down = y;
+
+    for (int i = 0; i < 8; i++) {
+        if (up * 255 == c)
+            return up;
+        if (down * 255 == c)
+            return down;
+        up = nextafter(up, INFINITY);
+        down = nextafter(down, -INFINITY);
+    }
+    return y;
+}
+
+/* Writes " r g b", colour c as the MPL format's 0-to-1 numbers. */
+static void save_mpl_colour(FILE *fp, Colour c)
+{
+    double v[3] = {save_unscale(c.r), save_unscale(c.g), save_unscale(c.b)};
+
+    save_numbers(fp, v, 3);
+}
+
+/* Writes scene in the MPL format (save_scene()). */
+static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
+                    Error *err)
+{
+    static const char *const kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
+    static const char *const words[SHAPE_KINDS] = {"Sphere", "Plane",    "Triangle", "Cube",
+                                                   "Square", "Cylinder", "Cone"};
+    int k = scene->length_exponent;
+    SceneWalk w;
+    ShapeKind kind;
+    size_t i;
+
+    fputs("# An MPL-format scene (seed 001's), written by raytrace --save.\n", fp);
+    if (scene->camera_line) {
+        double fov[1] = {scene->fov};
+        fputs("c Camera", fp);
+        save_point(fp, scene->look_from, 0);
+        save_point(fp, scene->look_at, 0);
+        save_numbers(fp, fov, 1);
+        fprintf(fp, " %d %d\n", scene->camera.width, scene->camera.height);
+    }
+    fputs(scene->has_sky ? "c Sky" : "c Background", fp);
+    if (scene->has_sky)
+        save_mpl_colour(fp, scene->sky);
+    save_mpl_colour(fp, scene->background);
+    fputc('\n', fp);
+    if (scene->has_ambient) {
+        fputs("c Ambient", fp);
+        save_mpl_colour(fp, scene->ambient);
+        fputc('\n', fp);
+    }
+    if (scene->samples)
+        fprintf(fp, "c Samples %d\n", scene->samples);
+    for (i = 0; i < scene->named_count; i++) {
+        const NamedMaterial *pm = &scene->named[i];
+        double v[2] = {pm->ks, pm->shininess};
+        fprintf(fp, "m %s %s", pm->name, kinds[pm->model - MODEL_MATTE]);
+        save_mpl_colour(fp, pm->base.colour);
+        fprintf(fp, " %d", pm->base.stripes);
+        save_numbers(fp, v, 2);
+        fputc(' ', fp);
+        if (!pm->texture)
+            fputc('N', fp);
+        else if (save_path(fp, pm->texture, scene->textures[pm->base.texture].path, "texture",
+                           scene_name, out_name, err) != 0)
+            return -1;
+        if (pm->model == MODEL_PLASTIC || pm->model == MODEL_DIELECTRIC)
+            save_numbers(fp, &pm->base.ior, 1);
+        fputc('\n', fp);
+    }
+    for (i = 0; i < scene->light_count; i++) {
+        const Light *l = &scene->lights[i];
+        double v[2] = {ldexp(l->intensity, l->distant ? 0 : -2 * k), ldexp(l->range, -k)};
+        fputs(l->distant ? "l DirectionLight" : "l PointLight", fp);
+        save_point(fp, l->position, l->distant ? 0 : k);
+        save_mpl_colour(fp, l->colour);
+        save_numbers(fp, v, l->distant || l->range == 0 ? 1 : 2);
+        fputc('\n', fp);
+    }
+    scene_walk_start(&w);
+    while (scene_walk_next(scene, &w, &kind, &i)) {
+        double v[SHAPES_NUMBERS_MAX];
+        int n = shapes_numbers(scene, kind, i, v);
+        fprintf(fp, "p %s", words[kind]);
+        save_numbers(fp, v, n);
+        fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
+    }
+    return 0;
+}
+
+int save_scene(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
+               Error *err)
+{
+    int rc;
+
+    if (scene->format == SCENE_COURSE) {
+        error_set(err, scene_name, "--save writes the keyword and MPL formats, which cannot "
+                                   "express a course-format scene (its screen corners, point "
+                                   "lights and shading rule)");
         return -1;
-    if (ferror(fp)) {
+    }
+    rc = scene->format == SCENE_MPL ? save_mpl(fp, scene, scene_name, out_name, err)
+                                    : save_keyword(fp, scene, scene_name, out_name, err);
+    if (rc == 0 && ferror(fp)) {
         error_set(err, out_name, "cannot write the scene: %s", strerror(errno));
         return -1;
     }
-    return 0;
+    return rc;
 }
