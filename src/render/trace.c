@@ -141,8 +141,9 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
         return c;
     case MODEL_DIELECTRIC:
         /* Fresnel's share mirrors, the rest enters, tinted; all of it
-         * mirrors on total internal reflection. */
-        c = shade_phong(t, sh, pm, n, ns, view, weight);
+         * mirrors on total internal reflection. Highlights show on the
+         * outer side only: inside, the surface is glass to glass. */
+        c = entering ? shade_phong(t, sh, pm, n, ns, view, weight) : colour(0, 0, 0);
         if (!deeper)
             return c;
         f = ray_refract(ray->dir, ns, eta, &bent) ? ray_fresnel(ray->dir, ns, eta) : 1;

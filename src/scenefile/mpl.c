@@ -140,9 +140,10 @@ static int mpl_float_suffix(const char *s, size_t len)
            number_parse(s, len - 1, &ignored) != NUMBER_SYNTAX;
 }
 
-/* Writes seed 001's spellings of numbers as plain ones in rec: a stray
- * comma after a field, or standing alone, goes; so does a C float
- * literal's 'f' ("1.f", "0.5f"). The tokens keep their columns. */
+/* Writes seed 001's spellings of numbers as plain ones in rec: stray
+ * commas before or after a field, or standing alone, go; so does a C float
+ * literal's 'f' ("1.f", "0.5f"). The tokens keep the column of their first
+ * character. */
 static void mpl_clean(Record *rec)
 {
     int kept = 0, dropped = 0, stored = rec->count < LEX_MAX_TOKENS ? rec->count : LEX_MAX_TOKENS;
@@ -151,6 +152,11 @@ static void mpl_clean(Record *rec)
         Token t = rec->tok[k];
         while (k > 0 && t.len > 0 && t.text[t.len - 1] == ',')
             t.len--;
+        while (k > 0 && t.len > 0 && t.text[0] == ',') {
+            t.text++;
+            t.len--;
+            t.column++;
+        }
         if (t.len == 0) {
             dropped++;
             continue;
