@@ -126,6 +126,7 @@ test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $
 	sh tests/hostile.sh ./raytrace
 	sh tests/install.sh
 	sh tests/layers.sh
+	sh tests/jpeg.sh ./raytrace ./raytrace-diff
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'

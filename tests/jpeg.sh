@@ -1,0 +1,132 @@
+#!/bin/sh
+# jpeg.sh: our JPEG reader against libjpeg-turbo's djpeg (`make test`).
+#
+#  1. A corpus made here by cjpeg (Debian's libjpeg-turbo-progs) from our
+#     own renders and from noise, at odd and even sizes and many settings
+#     (quality, every chroma subsampling, progressive, greyscale, restart
+#     markers, optimised tables, smoothing): our pixels must be djpeg's
+#     (`djpeg -rgb`, default settings) to within 1 level on 99.9% of pixels
+#     or more (so far they are the same to the byte).
+#  2. Exif orientations 2 to 8: our picture is djpeg's turned by netpbm's
+#     pamflip as the tag says.
+#  3. What we do not read is refused with an error that names it:
+#     arithmetic coding (cjpeg -arithmetic), lossless and hierarchical
+#     frames, 12-bit samples, four components.
+#
+# Without cjpeg and djpeg (or pamflip) the parts that need them are skipped,
+# saying so, unless RAYTRACE_TEST_TOOLS=required (CI), where that fails.
+#
+# Usage: sh tests/jpeg.sh RAYTRACE RAYTRACE-DIFF   (from the repository root)
+
+RT=$1
+DIFF=$2
+SUITE=jpeg
+. "$(dirname "$0")/check.sh"
+
+# have TOOL: says whether TOOL is here; when it is not, says what is
+# skipped (or fails when the tools are required).
+have() {
+    command -v "$1" >/dev/null 2>&1 && return 0
+    if [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+        fail "$1 is missing (install libjpeg-turbo-progs and netpbm)"
+    else
+        echo "jpeg: skipped what needs $1 (not installed)"
+    fi
+    return 1
+}
+
+# noise W H FILE: a W x H PPM of random bytes.
+noise() {
+    printf 'P6\n%d %d\n255\n' "$1" "$2" >"$3"
+    head -c $(($1 * $2 * 3)) /dev/urandom >>"$3"
+}
+
+# --- 1. the corpus against djpeg ---
+if have cjpeg && have djpeg; then
+    "$RT" -q scenes/textures.txt "$T/render.ppm"
+    "$RT" -q scenes/materials.txt "$T/materials.ppm"
+    noise 1 1 "$T/n1.ppm"
+    noise 7 5 "$T/n7.ppm"
+    noise 17 9 "$T/n17.ppm"
+    noise 33 65 "$T/n33.ppm"
+    noise 257 131 "$T/n257.ppm"
+    images=0
+    for src in render materials n1 n7 n17 n33 n257; do
+        for opts in "-quality 90" "-quality 10" "-quality 50 -sample 1x1" "-quality 100" \
+            "-sample 2x1" "-sample 1x2" "-sample 2x2" "-sample 4x1" "-sample 1x4" \
+            "-sample 4x2" "-sample 2x2,1x1,2x1" "-progressive" "-progressive -sample 1x1" \
+            "-grayscale" "-grayscale -progressive" "-restart 1" "-restart 3b -sample 2x1" \
+            "-optimize" "-smooth 40" "-dct float -quality 95" "-baseline -quality 5"; do
+            # shellcheck disable=SC2086
+            if ! cjpeg $opts -outfile "$T/c.jpg" "$T/$src.ppm" 2>"$T/err"; then
+                fail "cjpeg $opts $src" "$(cat "$T/err")"
+                continue
+            fi
+            djpeg -rgb -outfile "$T/d.ppm" "$T/c.jpg"
+            # At most one pixel in a thousand more than 1 level away.
+            pixels=$(head -n 2 "$T/d.ppm" | tail -n 1 | awk '{ print $1 * $2 }')
+            allowed=$((pixels / 1000))
+            if "$DIFF" --tolerance 1 --max-pixels "$allowed" "$T/d.ppm" "$T/c.jpg" \
+                >"$T/out" 2>&1; then
+                pass
+            else
+                fail "$src with cjpeg $opts: our pixels are not djpeg's" "$(cat "$T/out")"
+            fi
+            images=$((images + 1))
+        done
+    done
+    echo "jpeg: $images files made by cjpeg compared with djpeg"
+fi
+
+# --- 2. Exif orientation ---
+# exif O: an APP1 segment whose IFD0 holds Orientation O (big-endian TIFF).
+exif() {
+    printf '\377\341\000\042Exif\000\000MM\000\052\000\000\000\010\000\001'
+    printf '\001\022\000\003\000\000\000\001\000'
+    printf "\\$(printf '%03o' "$1")"
+    printf '\000\000\000\000\000\000'
+}
+if have cjpeg && have djpeg && have pamflip; then
+    noise 23 11 "$T/o.ppm"
+    cjpeg -quality 95 -outfile "$T/o.jpg" "$T/o.ppm"
+    djpeg -rgb -outfile "$T/o-d.ppm" "$T/o.jpg"
+    # Orientation 7 (transverse) is pamflip's transpose then half a turn.
+    for o in 2:-leftright 3:-rotate180 4:-topbottom 5:-transpose 6:-cw 7:-transpose,-rotate180 \
+        8:-ccw; do
+        { printf '\377\330'; exif "${o%%:*}"; tail -c +3 "$T/o.jpg"; } >"$T/t.jpg"
+        flips=${o#*:}
+        cp "$T/o-d.ppm" "$T/want.ppm"
+        for f in $(echo "$flips" | tr ',' ' '); do
+            pamflip "$f" "$T/want.ppm" >"$T/flipped.ppm" && mv "$T/flipped.ppm" "$T/want.ppm"
+        done
+        "$DIFF" --tolerance 0 "$T/want.ppm" "$T/t.jpg" >"$T/out" 2>&1 && pass ||
+            fail "Exif orientation ${o%%:*} is not pamflip $flips" "$(cat "$T/out")"
+    done
+fi
+
+# --- 3. what is refused, by name ---
+# refused NAME MESSAGE: raytrace-diff must say MESSAGE of $T/NAME.jpg.
+refused() {
+    "$DIFF" "$T/$1.jpg" "$T/$1.jpg" >"$T/out" 2>&1
+    if [ $? -eq 2 ] && grep -q "$2" "$T/out"; then pass; else fail "$1: expected '$2'" "$(cat "$T/out")"; fi
+}
+if have cjpeg; then
+    cjpeg -arithmetic -outfile "$T/arith.jpg" "$T/render.ppm" 2>/dev/null ||
+        cjpeg -arithmetic -outfile "$T/arith.jpg" scenes/textures/checker.ppm
+    refused arith "unsupported JPEG: arithmetic coding"
+fi
+# frame HEADER-BYTES: SOI, a frame header, EOI (octal escapes).
+frame() { printf '\377\330'; printf "$1"; printf '\377\331'; }
+frame '\377\303\000\013\010\000\010\000\010\001\001\021\000' >"$T/lossless.jpg"
+refused lossless "unsupported JPEG: lossless coding"
+frame '\377\305\000\013\010\000\010\000\010\001\001\021\000' >"$T/hier.jpg"
+refused hier "unsupported JPEG: hierarchical coding"
+frame '\377\301\000\013\014\000\010\000\010\001\001\021\000' >"$T/twelve.jpg"
+refused twelve "unsupported JPEG: 12-bit samples"
+frame '\377\300\000\024\010\000\010\000\010\004\001\021\000\002\021\000\003\021\000\004\021\000' \
+    >"$T/cmyk.jpg"
+refused cmyk "unsupported JPEG: four components"
+frame '\377\311\000\013\010\000\010\000\010\001\001\021\000' >"$T/sof9.jpg"
+refused sof9 "unsupported JPEG: arithmetic coding"
+
+finish
