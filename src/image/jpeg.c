@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "math/number.h"
 #include "jpeg_tables.h"
 
 enum {
@@ -99,6 +100,9 @@ static int jpeg_build(JpegHuffman *h, const uint8_t counts[16], const uint8_t *s
     for (int len = 1; len <= 16; len++) {
         h->delta[len] = k - code;
         for (int i = 0; i < counts[len - 1]; i++, k++, code++) {
+            /* Codes must fit in len bits (checked before they index). */
+            if (code >= (1 << len))
+                return -1;
             if (len <= JPEG_FAST_BITS) {
                 int shift = JPEG_FAST_BITS - len;
                 for (int j = 0; j < 1 << shift; j++) {
@@ -108,9 +112,6 @@ static int jpeg_build(JpegHuffman *h, const uint8_t counts[16], const uint8_t *s
             }
         }
         h->maxcode[len] = counts[len - 1] ? code - 1 : -1;
-        /* Codes must fit in len bits. */
-        if (code > (1 << len))
-            return -1;
         code <<= 1;
     }
     h->maxcode[17] = INT32_MAX;
@@ -353,10 +354,11 @@ static int jpeg_allocate(Jpeg *J)
         return -1;
     }
     if (J->max_bytes && need > J->max_bytes) {
+        char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX];
         error_set(J->err, J->name,
-                  "a %d x %d JPEG needs %zu bytes to decode, more than the %zu the memory "
-                  "limit leaves",
-                  J->width, J->height, need, J->max_bytes);
+                  "a %d x %d JPEG needs %s to decode, more than the %s the memory limit "
+                  "leaves (raise it with --memory-limit)",
+                  J->width, J->height, number_bytes(a, need), number_bytes(b, J->max_bytes));
         return -1;
     }
     for (int i = 0; i < J->ncomp; i++) {
