@@ -80,7 +80,7 @@ LIB_OBJ += $(BUILD)/accel/bvh_query_avx2.o
 endif
 AVX2_FLAGS := -mavx2 -mfma -DBVH_QUERY_AVX2
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
-FUZZ_TARGETS := course keyword obj ppm picture
+FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
 PREFIX ?= /usr/local

@@ -12,6 +12,8 @@
 #  3. What we do not read is refused with an error that names it:
 #     arithmetic coding (cjpeg -arithmetic), lossless and hierarchical
 #     frames, 12-bit samples, four components.
+#  4. A texture whose decoding would pass --memory-limit is refused before
+#     it is decoded, leaving the output as it was.
 #
 # Without cjpeg and djpeg (or pamflip) the parts that need them are skipped,
 # saying so, unless RAYTRACE_TEST_TOOLS=required (CI), where that fails.
@@ -128,5 +130,26 @@ frame '\377\300\000\024\010\000\010\000\010\004\001\021\000\002\021\000\003\021\
 refused cmyk "unsupported JPEG: four components"
 frame '\377\311\000\013\010\000\010\000\010\001\001\021\000' >"$T/sof9.jpg"
 refused sof9 "unsupported JPEG: arithmetic coding"
+
+# --- 4. a texture too large for --memory-limit: refused, output untouched ---
+if have cjpeg; then
+    printf 'P6\n4000 3000\n255\n' >"$T/big.ppm"
+    head -c 36000000 /dev/zero >>"$T/big.ppm"
+    cjpeg -quality 50 "$T/big.ppm" >"$T/big.jpg"
+    printf 'm t MATTE 1 1 1 0 0 0 big.jpg\np Sphere 0 0 5 1 t\n' >"$T/big.txt"
+    printf 'keep me\n' >"$T/big-out.ppm"
+    "$RT" -q --memory-limit 16M "$T/big.txt" "$T/big-out.ppm" 2>"$T/err"
+    got=$?
+    want="raytrace: $T/big.txt:1:23: error: cannot use the texture 'big.jpg': a 4000 x 3000 JPEG needs 85.99 MiB to decode, more than the 16 MiB the memory limit leaves (raise it with --memory-limit)"
+    if [ $got != 1 ] || [ "$(head -n 1 "$T/err")" != "$want" ]; then
+        fail "a texture over --memory-limit: exit $got" "$(head -n 1 "$T/err")"
+    elif [ "$(cat "$T/big-out.ppm")" != "keep me" ]; then
+        fail "a texture over --memory-limit: the existing output was changed"
+    else
+        pass
+    fi
+    "$RT" -q --memory-limit 256M "$T/big.txt" "$T/big-out.ppm" && pass ||
+        fail "a texture within --memory-limit 256M"
+fi
 
 finish

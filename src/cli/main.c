@@ -279,7 +279,7 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, Scene *
 {
     size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
     char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
-    size_t n = scene->sphere_count + scene->triangle_count;
+    size_t n = scene_bounded_count(scene);
     int rc;
 
     if (scene_set_aside(scene, need) != 0) {

@@ -16,7 +16,7 @@ shift
 TIME=${FUZZ_TIME:-60}
 TOP=$(pwd)
 status=0
-TARGETS=${*:-course keyword obj ppm picture}
+TARGETS=${*:-course keyword mpl obj ppm picture jpeg}
 for t in $TARGETS; do
     mkdir -p "$BUILD/fuzz/corpus/$t" "tests/fuzz/regress/$t"
     echo "fuzz: $t for ${TIME} s"

@@ -2,7 +2,7 @@
  * fuzz_scene.h: the body shared by the scene fuzz targets: parse the input
  * as a scene of one format and, when it is accepted and small, build its
  * hierarchy and render it, so the tracer meets every value a parser lets
- * through. Included by fuzz_course.c and fuzz_keyword.c only.
+ * through. Included by fuzz_course.c, fuzz_keyword.c and fuzz_mpl.c only.
  */
 #include <stddef.h>
 #include <stdint.h>
