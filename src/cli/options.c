@@ -22,8 +22,8 @@ const char *options_help(void)
            "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
            "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
            "PNG or PFM image, chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM for\n"
-           "any other) or\n"
-           "by --format. SCENE may be '-' for standard input,\n"
+           "any other) or by --format. Textures may be PPM, PNG or JPEG files.\n"
+           "SCENE may be '-' for standard input,\n"
            "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
            "image has been written.\n"
            "\n"
@@ -50,8 +50,8 @@ const char *options_help(void)
            "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
            "                     default) or stored (no compression, faster)\n"
            "  --check            read SCENE, report any error, render nothing\n"
-           "  --save OUT         read SCENE, a keyword-format scene, and write it to OUT\n"
-           "                     in the keyword format, every number exact; render\n"
+           "  --save OUT         read SCENE, a keyword- or MPL-format scene, and write\n"
+           "                     it to OUT in its format, every number exact; render\n"
            "                     nothing\n"
            "  --scene-format F   read SCENE as F: course, keyword, mpl, or auto (the\n"
            "                     default: mpl when its first element is m, p, l or c,\n"
@@ -68,7 +68,7 @@ const char *options_help(void)
            "read or written (the message says where); 2 the command line is wrong;\n"
            "130 or 143 interrupted by SIGINT or SIGTERM.\n"
            "\n"
-           "The scene format is described in docs/scene-format.md.\n";
+           "The scene formats are described in docs/scene-format.md.\n";
 }
 
 /* Reads the whole number in text, between lo and hi, into *out. */
