@@ -155,7 +155,7 @@ if [ "${BENCH_SCALING:-1}" = 1 ]; then
         [ -s "$f" ] || "$GEN" spheres "$n" | sed '6s/^1920$/480/' >"$f"
         render_time "$f"
         read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log")
-        build=$(sed -n 's/.*built in \([0-9.]*\) s/\1/p' "$DIR/log")
+        build=$(sed -n 's/.*built in \([0-9.]*\) s.*/\1/p' "$DIR/log")
         printf '| spheres | %s | 480 x 270 | %s s | %s s | %s s |\n' "$n" "${read_s:-0}" \
             "${build:-0}" "$render" >>"$DIR/scale"
         echo "bench: scaling, $n spheres" >&2
@@ -209,6 +209,45 @@ if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/
             "$(seconds "$tb")" "$(seconds "$tn")" \
             "$(echo "($tn - $tb) * 100 / $tb" | bc -l)" "$same" >>"$DIR/unused"
         echo "bench: unused features, $j thread(s): course-only $tb ms, now $tn ms" >&2
+    done
+fi
+
+# Seed 001's scenes: its example (four JPEG textures, 800 x 800), every
+# material kind (scenes/materials.txt), and a texture-heavy field made
+# here: 200 cubes and 200 spheres under JPEG textures, 1920 x 1080. Reading (JPEG decoding included) and rendering apart,
+# medians of RUNS on all threads.
+: >"$DIR/seed001"
+if [ "${BENCH_SEED001:-1}" = 1 ]; then
+    tex=$(pwd)/scenes/textures
+    awk -v tex="$tex" 'BEGIN {
+        print "c Camera 0 9 -22 0 0 4 45 1920 1080"
+        split("Wallpaper carrelage painting marble", t, " ")
+        for (k = 1; k <= 4; k++)
+            printf "m t%d MATTE 1 1 1 0 0.3 30 %s/%s.jpg\n", k, tex, t[k]
+        print "p Plane 0 -1 0 0 1 0 t2"
+        for (i = 0; i < 20; i++)
+            for (j = 0; j < 20; j++) {
+                x = i - 9.5; z = j - 5.5; m = 1 + (i + j) % 4
+                if ((i + j) % 2) printf "p Sphere %g -0.6 %g 0.4 t%d\n", x, z, m
+                else printf "p Cube %g -0.6 %g 0.4 t%d\n", x, z, m
+            }
+        print "l DirectionLight -0.5 -1 0.7 1 1 1 1"
+        print "l PointLight 0 4 2 1 0.9 0.8 20 30"
+    }' >"$DIR/textured.txt"
+    for f in scenes/seed001.txt scenes/materials.txt "$DIR/textured.txt"; do
+        : >"$DIR/times"
+        : >"$DIR/reads"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            "$RT" -v -j "$ALL" "$f" "$DIR/seed.ppm" 2>"$DIR/log" || exit 1
+            sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
+            sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log" >>"$DIR/reads"
+            i=$((i + 1))
+        done
+        size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
+        printf '| %s | %s | %s s | %s s |\n' "${f##*/}" "$size" "$(median <"$DIR/reads")" \
+            "$(median <"$DIR/times")" >>"$DIR/seed001"
+        echo "bench: seed 001, ${f##*/}" >&2
     done
 fi
 
@@ -344,6 +383,22 @@ rm -f "$DIR/kernel.ppm"
         echo "| varies | spheres | pixels | read | build | render |"
         echo "|--------|---------|--------|------|-------|--------|"
         cat "$DIR/scale"
+    fi
+    if [ -s "$DIR/seed001" ]; then
+        echo
+        echo "## Seed 001's scenes"
+        echo
+        echo "Its example scene (scenes/seed001.txt: squares, a cube, four infinite"
+        echo "cylinders, an infinite cone, a metallic ball, four JPEG textures), every"
+        echo "material kind (scenes/materials.txt: 4 samples per pixel, glass, a"
+        echo "ranged point light), and a texture-heavy field generated here"
+        echo "(textured.txt: 200 cubes and 200 spheres under the four JPEG textures"
+        echo "on a textured plane). Reading includes decoding the JPEGs; medians of"
+        echo "$RUNS runs on $ALL threads."
+        echo
+        echo "| scene | pixels | read | render |"
+        echo "|-------|--------|------|--------|"
+        cat "$DIR/seed001"
     fi
     if [ -s "$DIR/unused" ]; then
         echo
