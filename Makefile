@@ -89,7 +89,8 @@ MANDIR := $(PREFIX)/share/man/man1
 PROGRAMS := raytrace raytrace-diff
 MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
 SCENES := $(wildcard scenes/*.txt)
-GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png)
+GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
+	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
 
 .PHONY: all test check clean install uninstall gallery bench trade fuzz memcheck
 
@@ -143,6 +144,16 @@ gallery: $(GALLERY)
 docs/gallery/%.png: scenes/%.txt raytrace
 	@mkdir -p $(@D)
 	./raytrace -q $< $@
+
+# The same room without and with ambient occlusion and global illumination:
+# docs/gallery/indirect-OPTS.png is scenes/indirect.txt rendered with OPTS
+# (the options without their spaces and dashes, as tests/cli.sh reads them).
+docs/gallery/indirect-ao16.png: scenes/indirect.txt raytrace
+	./raytrace -q --ao 16 $< $@
+docs/gallery/indirect-gi16.png: scenes/indirect.txt raytrace
+	./raytrace -q --gi 16 $< $@
+docs/gallery/indirect-gi256.png: scenes/indirect.txt raytrace
+	./raytrace -q --gi 256 $< $@
 
 # The single-precision build beside the double one, for `make trade`.
 FLOAT_OBJ := $(RAYTRACE_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o) $(LIB_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o)

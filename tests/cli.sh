@@ -50,13 +50,30 @@ expect_grep version 'raytrace ' "$T/out"
 for args in "" "$scene" "--bogus $scene x.ppm" "--max-depth $scene x.ppm" \
     "--max-depth -1 $scene x.ppm" "--max-depth 1001 $scene x.ppm" "--threads 0 $scene x.ppm" \
     "-j x $scene x.ppm" "$scene a.ppm b.ppm" "--spp 0 $scene x.ppm" "--spp 65537 $scene x.ppm" \
-    "-s 2.5 $scene x.ppm"; do
+    "-s 2.5 $scene x.ppm" "--ao -1 $scene x.ppm" "--ao 4097 $scene x.ppm" \
+    "--gi 2.5 $scene x.ppm" "--gi-bounces 0 $scene x.ppm" "--gi-bounces 65 $scene x.ppm" \
+    "--ao-distance -1 $scene x.ppm" "--ao-distance x $scene x.ppm"; do
     # shellcheck disable=SC2086
     expect_exit "usage '$args'" 2 "$RT" $args
     expect_line "usage '$args' says how to get help" 2 "Try 'raytrace --help'." "$T/err"
     n=$(wc -l <"$T/err")
     [ "$n" -eq 2 ] && pass || fail "usage '$args': $n lines on stderr, expected 2"
 done
+# Ambient occlusion and global illumination: what -v says of them, and a
+# scene's own settings (seed 001's c AO and c GI lines) that options override.
+expect_exit "ao and gi" 0 "$RT" -v --ao 4 --ao-distance 2.5 --gi 3 --gi-bounces 2 \
+    scenes/indirect.txt "$T/ind.ppm"
+expect_grep "ao and gi" 'raytrace: ambient occlusion: 4 rays a point, distance 2.5' "$T/err"
+expect_grep "ao and gi" 'raytrace: global illumination: 3 rays a point, 2 bounces' "$T/err"
+{ echo "c AO 8 0.5"; echo "c GI 2 3"; grep -v '^#' scenes/indirect.txt; } >"$T/ind-set.txt"
+expect_exit "scene ao and gi" 0 "$RT" -v "$T/ind-set.txt" "$T/ind.ppm"
+expect_grep "scene ao and gi" 'raytrace: ambient occlusion: 8 rays a point, distance 0.5' "$T/err"
+expect_grep "scene ao and gi" 'raytrace: global illumination: 2 rays a point, 3 bounces' "$T/err"
+expect_exit "options over scene" 0 "$RT" -v --ao 0 --gi 0 "$T/ind-set.txt" "$T/ind.ppm"
+grep -q 'occlusion' "$T/err" && fail "--ao 0 --gi 0 still casts indirect rays" "$(cat "$T/err")" ||
+    pass
+"$RT" -q scenes/indirect.txt "$T/plain.ppm"
+cmp -s "$T/ind.ppm" "$T/plain.ppm" && pass || fail "--ao 0 --gi 0 over the scene's: not the plain render"
 expect_exit "empty OUTPUT" 2 "$RT" "$scene" ""
 expect_line "empty OUTPUT" 1 "raytrace: OUTPUT is an empty file name" "$T/err"
 expect_exit "empty SCENE" 2 "$RT" "" "$T/x.ppm"
@@ -126,9 +143,11 @@ while read -r hash file opts; do
     # shellcheck disable=SC2086
     got=$("$RT" --cutoff 0 $opts "$file" - 2>"$T/err" | sha256sum | cut -d' ' -f1)
     [ "$got" = "$hash" ] && pass || fail "$file $opts renders other bytes with --cutoff 0: $got" "$(cat "$T/err")"
-    # The README's gallery shows these very pixels.
-    if [ -z "$opts" ]; then
-        picture=docs/gallery/$(basename "$file" .txt).png
+    # The README's gallery shows these very pixels (a render with options
+    # as NAME-OPTS.png, OPTS without spaces and dashes, when there is one).
+    suffix=$(printf '%s' "$opts" | tr -d ' -')
+    picture=docs/gallery/$(basename "$file" .txt)${suffix:+-$suffix}.png
+    if [ -z "$opts" ] || [ -f "$picture" ]; then
         "$DIFF" "$picture" "$T/golden.ppm" >"$T/out" 2>"$T/err" && pass ||
             fail "$file renders other pixels than $picture (if the change is meant, run 'make gallery')" \
                 "$(cat "$T/out" "$T/err")"
@@ -188,7 +207,7 @@ expect_exit "--format png to stdout" 0 sh -c "\"$RT\" --format png \"$scene\" - 
 expect_exit "--format png = ppm" 0 "$DIFF" "$T/course.ppm" "$T/fmt.out"
 expect_exit "--ascii with png" 2 "$RT" --ascii "$scene" "$T/x.png"
 expect_exit "--format bmp" 2 "$RT" --format bmp "$scene" "$T/x.bmp"
-expect_line "--format bmp message" 1 "raytrace: option '--format' takes ppm, png or pfm, found 'bmp'" "$T/err"
+expect_line "--format bmp message" 1 "raytrace: option '--format' takes ppm, png, pfm, jpeg or jpg, found 'bmp'" "$T/err"
 
 # --- raytrace-diff: statistics, tolerance, diff image, exit status ---
 "$RT" --max-depth 1 "$scene" "$T/d1.ppm"

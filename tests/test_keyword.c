@@ -155,9 +155,9 @@ static void keyword_camera_looks_at_its_target(void)
 static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int depth)
 {
     Ray r = {o, vec3_normalize(d)};
-    RayCounts counts = {0, 0, 0, 0, 0, 0};
+    RayCounts counts = {0};
 
-    Tracer t = {sc, depth, NULL, &counts};
+    Tracer t = {.scene = sc, .max_depth = depth, .cut = NULL, .counts = &counts};
 
     return trace_ray(&t, &r);
 }

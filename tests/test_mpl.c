@@ -154,8 +154,14 @@ static const BadMpl mpl_bad[] = {
     {"c Camera 0 0 0 0 0 1 90 8 8\nc Camera 0 0 0 0 0 1 90 8 8\n", 2, 1,
      "the camera is already set, on line 1"},
     {"c Fog 1\n", 1, 3,
-     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient or Samples)"},
+     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO or GI)"},
     {"c Sky 1 1 1\n", 1, 12, "expected 6 numbers for the sky (r g b r g b), found 3"},
+    {"c AO 0\n", 1, 6,
+     "the number of ambient occlusion rays must be between 1 and 4096 rays, found '0'"},
+    {"c AO 4 -1\n", 1, 8, "the ambient occlusion's distance must be greater than 0, found '-1'"},
+    {"c GI 2 0\n", 1, 8, "the number of bounces must be between 1 and 64 bounces, found '0'"},
+    {"c AO 4 1 2\n", 1, 10, "expected the end of the line after the distance, found '2'"},
+    {"c GI 2\nc GI 3\n", 2, 1, "the global illumination is already set, on line 1"},
 };
 
 static void mpl_rejects_bad_scenes_with_position(void)
@@ -179,8 +185,8 @@ static void mpl_rejects_bad_scenes_with_position(void)
 static Colour seen(const Scene *sc, Vec3 o, Vec3 d)
 {
     Ray r = {o, vec3_normalize(d)};
-    RayCounts counts = {0, 0, 0, 0, 0, 0};
-    Tracer t = {sc, 10, NULL, &counts};
+    RayCounts counts = {0};
+    Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = &counts};
 
     return trace_ray(&t, &r);
 }
@@ -349,8 +355,9 @@ static void mpl_saved_scene_reads_back_the_same(void)
             for (int x = 0; x < 8; x++) {
                 Ray r = camera_ray(&a.camera, x + 0.5, y + 0.5), s = camera_ray(&b.camera, x + 0.5,
                                                                                 y + 0.5);
-                RayCounts n = {0, 0, 0, 0, 0, 0};
-                Tracer ta = {&a, 5, NULL, &n}, tb = {&b, 5, NULL, &n};
+                RayCounts n = {0};
+                Tracer ta = {.scene = &a, .max_depth = 5, .cut = NULL, .counts = &n},
+                       tb = {.scene = &b, .max_depth = 5, .cut = NULL, .counts = &n};
                 Colour ca = trace_ray(&ta, &r), cb = trace_ray(&tb, &s);
                 if (memcmp(&ca, &cb, sizeof ca) != 0)
                     test_fail(__FILE__, __LINE__, "case %zu: pixel (%d, %d) differs:\n%s", i, x,

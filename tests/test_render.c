@@ -63,8 +63,8 @@ static void render_eye_on_the_screen_sees_background(void)
  * summed left to right, its direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
-    RayCounts counts = {0, 0, 0, 0, 0, 0};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}};
+    RayCounts counts = {0};
     Scene sc;
     Error err;
     Image img;
@@ -82,7 +82,7 @@ static void check_pixels_are_their_rays(const char *text)
                           c->top_left.z + fx * c->u.z + fy * c->v.z);
             Ray ray = {c->eye, vec3_normalize(vec3_sub(p, c->eye))};
             Ray got = camera_ray(c, i + 0.5, j + 0.5);
-            Tracer t = {&sc, opts.max_depth, NULL, &counts};
+            Tracer t = {.scene = &sc, .max_depth = opts.max_depth, .cut = NULL, .counts = &counts};
             Colour want = trace_ray(&t, &ray);
             const unsigned char *px = img.rgb + 3 * ((size_t)j * (size_t)img.width + (size_t)i);
             bad += memcmp(&got.dir, &ray.dir, sizeof ray.dir) != 0 ||
@@ -117,8 +117,8 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 0, 1, NULL, NULL}, two = {10, 1, 0, 2, NULL, NULL},
-                  many = {10, 1, 0, 7, NULL, NULL};
+    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}}, two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}},
+                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -195,7 +195,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             Scene sc;
             Sphere sp = {moved(base_centre, s, o), base_radius * s,
                          material_plain(base_colour, base_refl), 0};
-            RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
+            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -263,7 +263,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}};
     Scene sc;
     Error err;
     int e;
@@ -311,7 +311,7 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, 0, threads, NULL, NULL};
+    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}};
     Scene sc;
     Error err;
 
@@ -488,7 +488,7 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
 {
     const char *texts[] = {render_cut_course, render_cut_keyword};
     int bad = 0, cuts = 0, lost = 0;
-    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0}, later = {0, 0, 0, 0, 0, 0};
+    RayCounts all = {0}, left = {0}, later = {0};
 
     for (int s = 0; s < 2; s++) {
         Scene sc;
@@ -499,8 +499,9 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
             Cut cut;
-            Tracer every = {&sc, 30, NULL, &all}, cutting = {&sc, 30, &cut, &left};
-            Tracer again = {&sc, 30, &cut, &later};
+            Tracer every = {.scene = &sc, .max_depth = 30, .cut = NULL, .counts = &all},
+                   cutting = {.scene = &sc, .max_depth = 30, .cut = &cut, .counts = &left};
+            Tracer again = {.scene = &sc, .max_depth = 30, .cut = &cut, .counts = &later};
             Colour full = trace_ray(&every, &ray), part;
             double eta;
 
@@ -541,7 +542,7 @@ static void render_cutoff_leaves_out_shadow_rays(void)
                                "5 5 -5 255 255 255\nsphere: 0 0 0 1 4 4 4 0\n";
     Scene sc;
     Error err;
-    RayCounts all = {0, 0, 0, 0, 0, 0}, left = {0, 0, 0, 0, 0, 0};
+    RayCounts all = {0}, left = {0};
     int bad = 0;
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
@@ -549,7 +550,8 @@ static void render_cutoff_leaves_out_shadow_rays(void)
         Ray ray = {vec3(0, 0, -5),
                    vec3_normalize(vec3(rng_range(-0.2, 0.2), rng_range(-0.2, 0.2), 1))};
         Cut cut;
-        Tracer every = {&sc, 10, NULL, &all}, cutting = {&sc, 10, &cut, &left};
+        Tracer every = {.scene = &sc, .max_depth = 10, .cut = NULL, .counts = &all},
+               cutting = {.scene = &sc, .max_depth = 10, .cut = &cut, .counts = &left};
         Colour full = trace_ray(&every, &ray), part;
 
         cut_init(&cut, &sc, 5);
@@ -570,7 +572,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Scene sc;
     Error err;
     Image img;
-    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL};
+    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}};
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
@@ -588,12 +590,12 @@ static void render_cutoff_keeps_every_byte(void)
     unsigned long long cut = 0, refined = 0;
 
     for (int s = 0; s < 2; s++) {
-        RayCounts none = {0, 0, 0, 0, 0, 0};
+        RayCounts none = {0};
         Image exact = render_with_cutoff(texts[s], 25, 0, &none);
 
         CHECK(none.cut == 0 && none.refined == 0);
         for (int k = 0; k < 4; k++) {
-            RayCounts c = {0, 0, 0, 0, 0, 0};
+            RayCounts c = {0};
             Image img = render_with_cutoff(texts[s], 25, cutoffs[k], &c);
             CHECK(memcmp(exact.rgb, img.rgb, image_size(img.width, img.height)) == 0);
             cut += c.cut;
@@ -621,7 +623,7 @@ static void render_cutoff_refines_before_tracing_in_full(void)
     const char *texts[] = {render_cut_course, render_cut_keyword};
 
     for (int s = 0; s < 2; s++) {
-        RayCounts none = {0, 0, 0, 0, 0, 0}, big = {0, 0, 0, 0, 0, 0};
+        RayCounts none = {0}, big = {0};
         Image exact = render_with_cutoff(texts[s], 25, 0, &none);
         Image img = render_with_cutoff(texts[s], 25, 50, &big);
 

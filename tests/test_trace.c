@@ -38,8 +38,8 @@ static void add_sphere(Scene *sc, Vec3 c, double r, Colour col, double refl)
 static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int max_depth)
 {
     Ray r = {o, vec3_normalize(d)};
-    RayCounts counts = {0, 0, 0, 0, 0, 0};
-    Tracer t = {sc, max_depth, NULL, &counts};
+    RayCounts counts = {0};
+    Tracer t = {.scene = sc, .max_depth = max_depth, .cut = NULL, .counts = &counts};
 
     return trace_ray(&t, &r);
 }

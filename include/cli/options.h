@@ -28,6 +28,14 @@ typedef struct {
                                 are left out (render.h) */
     size_t memory_limit;     /* --memory-limit: bytes the scene, its
                                 hierarchy and the image may take; 0: none */
+    int ao;                  /* --ao: occlusion rays per primary hit; -1:
+                                the scene's (0 unless it sets them) */
+    double ao_distance;      /* --ao-distance; 0: the scene's, else a tenth
+                                of its size */
+    int gi;                  /* --gi: gathering rays; -1: the scene's */
+    int gi_bounces;          /* --gi-bounces; 0: the scene's, else 1 */
+    int jpeg_quality;        /* --jpeg-quality, 1..100 (default 90) */
+    int jpeg_444;            /* --jpeg-subsampling 444: chroma kept whole */
 } Options;
 
 /* What options_parse() found the command line asks for. */

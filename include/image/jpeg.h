@@ -1,6 +1,6 @@
 /*
- * jpeg.h: JPEG files (ITU-T T.81, JFIF), read and written without a
- * library.
+ * jpeg.h: JPEG files (ITU-T T.81, JFIF), read (jpeg.c) and written
+ * (jpeg_write.c) without a library.
  *
  * The reader takes Huffman-coded 8-bit JPEGs, baseline, extended
  * sequential and progressive, greyscale (one component) or YCbCr (three;
@@ -40,6 +40,17 @@ int jpeg_parse(const char *name, const unsigned char *data, size_t len, size_t m
 
 /* Releases img's pixels. */
 void jpeg_free(JpegImage *img);
+
+/* Writes the width x height image rgb (8-bit RGB, rows top to bottom) to f
+ * as a baseline JFIF file: quality 1 to 100 (libjpeg's scaling of T.81's
+ * example quantisers), chroma halved both ways (4:2:0) when subsample is
+ * 1, else kept whole (4:4:4); Huffman tables made for the image (T.81
+ * annex K.2). Returns 0, or -1 with errno set. */
+int jpeg_write(FILE *f, int width, int height, const unsigned char *rgb, int quality,
+               int subsample);
+
+/* Returns the bytes jpeg_write() allocates for such an image. */
+size_t jpeg_write_memory(int width, int height, int subsample);
 
 /* Says whether the len bytes at data start like a JPEG file (SOI). */
 int jpeg_is(const unsigned char *data, size_t len);

@@ -2,9 +2,9 @@
  * writer.h: the last step of the pipeline: an Image to a file, in the format
  * the user asked for.
  *
- * Every format holds the same pixels: PPM and PNG the 8-bit bytes, PFM the
- * colours before quantising (on the scale 1.0 = 255), which round to those
- * bytes.
+ * Every lossless format holds the same pixels: PPM and PNG the 8-bit bytes,
+ * PFM the colours before quantising (on the scale 1.0 = 255), which round
+ * to those bytes. JPEG holds an approximation of the 8-bit bytes.
  */
 #ifndef RAYTRACE_WRITER_H
 #define RAYTRACE_WRITER_H
@@ -17,20 +17,25 @@
 typedef enum {
     FORMAT_PPM, /* binary P6, or ASCII P3 with ascii set */
     FORMAT_PNG, /* 8-bit RGB PNG */
-    FORMAT_PFM  /* linear float RGB */
+    FORMAT_PFM, /* linear float RGB */
+    FORMAT_JPEG /* baseline JPEG: lossy, smaller */
 } ImageFormat;
 
 typedef struct {
     ImageFormat format;
     int ascii;              /* PPM: P3 instead of P6 */
     DeflateMode png_deflate; /* PNG: how to compress */
+    int jpeg_quality;       /* JPEG: 1..100 */
+    int jpeg_444;           /* JPEG: 1 keeps chroma whole (4:4:4), 0 halves
+                               it both ways (4:2:0) */
 } WriterOptions;
 
-/* Returns the format named name ("ppm", "png", "pfm"), or -1. */
+/* Returns the format named name ("ppm", "png", "pfm", "jpeg" or "jpg"), or
+ * -1. */
 int writer_format_named(const char *name);
 
-/* Returns the format path's extension names (.ppm, .png, .pfm, in any
- * case), or FORMAT_PPM for any other name and for "-". */
+/* Returns the format path's extension names (.ppm, .png, .pfm, .jpg or
+ * .jpeg, in any case), or FORMAT_PPM for any other name and for "-". */
 ImageFormat writer_format_for(const char *path);
 
 /* Returns the bytes a width x height image takes in memory, and writing it

@@ -105,4 +105,18 @@ static inline Vec3 vec3_direction(Vec3 a)
     return vec3_normalize(vec3_ldexp(a, vec3_unit_exponent(vec3_max_abs(a))));
 }
 
+/* Returns the direction whose coordinates are (x, y, z) in an orthonormal
+ * frame whose third axis is the unit vector n: the frame of Duff et al.,
+ * "Building an orthonormal basis, revisited" (JCGT 2017), continuous but at
+ * n.z = 0's sign change, and the same for the same n on every machine. */
+static inline Vec3 vec3_from_frame(Vec3 n, real x, real y, real z)
+{
+    real sign = n.z < 0 ? -1 : 1;
+    real a = -1 / (sign + n.z), b = n.x * n.y * a;
+    Vec3 t = vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    Vec3 u = vec3(b, sign + n.y * n.y * a, -n.y);
+
+    return vec3_add(vec3_add(vec3_scale(t, x), vec3_scale(u, y)), vec3_scale(n, z));
+}
+
 #endif

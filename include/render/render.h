@@ -30,6 +30,8 @@ typedef struct {
     int threads;             /* worker threads, >= 1; 1 without OpenMP */
     RenderProgress progress; /* called after each tile, or NULL */
     void *progress_ctx;      /* passed to progress */
+    Indirect indirect;       /* ambient occlusion and global illumination
+                                (tracer.h); zeros: none */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's

@@ -13,6 +13,8 @@
 #ifndef RAYTRACE_SAMPLER_H
 #define RAYTRACE_SAMPLER_H
 
+#include <stdint.h>
+
 #include "scene/camera.h"
 
 enum {
@@ -35,6 +37,20 @@ SamplerGrid sampler_grid(unsigned n);
  * a point of the unit square [0, 1]^2. With one sample it is the centre,
  * (0.5, 0.5). */
 void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2]);
+
+/* Returns the key of the branch-th ray leaving a point whose ray had key
+ * `key` (the primary rays' is 0): a hash, so that each path through a
+ * pixel draws its own directions. */
+uint64_t sampler_branch(uint64_t key, unsigned branch);
+
+/* Stores in dir direction k (0 <= k < g->n) of pixel (px, py) over the
+ * hemisphere around +z, for the rays of path `key`: the n directions are
+ * cosine-weighted (density cos(theta) / pi) and stratified, the
+ * multi-jittered points of the square carried to the disk by
+ * sampler_disk() and lifted to the hemisphere (Malley's method); one
+ * direction (n = 1) is random, not +z. */
+void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
+                        double dir[3]);
 
 /* Maps the point xy of the unit square to the unit disk, preserving area
  * and keeping neighbours together (Shirley and Chiu's concentric map); the

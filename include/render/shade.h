@@ -34,6 +34,8 @@ typedef struct {
     SurfacePoint sp;          /* the point, its outward normal and error */
     const Material *material; /* the object's material */
     Colour colour;            /* Ci: the material's colour or its texture's */
+    double ambient;           /* the share of the ambient light that reaches
+                                 it: 1, or less under ambient occlusion */
 } Shade;
 
 /* Returns the shading record of hit, crossed by ray, in scene. */

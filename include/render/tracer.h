@@ -6,11 +6,12 @@
  * a ray meets, what a shadow ray crosses), shade.h (what a point looks
  * like and the light it receives) and cut.h (the rays that may be left
  * out). A Tracer is only read by them, but for the cut-off and counters it
- * points to: one per thread.
+ * points to (and the sample it is tracing): one per thread.
  */
 #ifndef RAYTRACE_TRACER_H
 #define RAYTRACE_TRACER_H
 
+#include "render/sampler.h"
 #include "scene/scene.h"
 
 enum { TRACE_MAX_DEPTH_LIMIT = 1000 }; /* deepest max_depth accepted */
@@ -24,12 +25,30 @@ typedef struct {
     unsigned long long cut;        /* secondary and shadow rays the cut-off left
                                       out, and no later pass traced */
     unsigned long long refined;    /* pixels whose left-out rays were traced */
+    unsigned long long occlusion;  /* ambient occlusion rays */
+    unsigned long long gather;     /* global illumination rays */
 } RayCounts;
 
 /* The kinds of ray that leave a surface. */
 typedef enum { RAY_SHADOW, RAY_REFLECTION, RAY_REFRACTION } RayKind;
 
 struct Cut;
+
+/* Ambient occlusion and global illumination (trace.h): how many rays, how
+ * far, how many bounces. Zero samples: off, and not a ray more. */
+typedef struct {
+    int ao_samples;     /* occlusion rays per primary hit, 0..SCENE_MAX_INDIRECT */
+    double ao_distance; /* what is nearer occludes, > 0 */
+    int gi_samples;     /* gathering rays at a primary hit, 0..SCENE_MAX_INDIRECT */
+    int gi_bounces;     /* diffuse bounces gathered, 1..SCENE_MAX_BOUNCES */
+} Indirect;
+
+/* The sample being traced: the pixel, the sample's number among the
+ * pixel's `of`; what the indirect rays' directions are drawn from. */
+typedef struct {
+    int x, y;         /* the pixel */
+    unsigned k, of;   /* sample k of `of` */
+} TraceSample;
 
 typedef struct {
     const Scene *scene; /* what is traced */
@@ -38,6 +57,11 @@ typedef struct {
     struct Cut *cut;    /* what may be left out, and what was (cut.h); NULL:
                            every ray is traced */
     RayCounts *counts;  /* the rays cast are added here */
+    Indirect indirect;  /* ambient occlusion and global illumination */
+    TraceSample *sample; /* the sample being traced (set by render.c) */
+    SamplerGrid ao_grid;   /* ao_samples x the pixel's samples */
+    SamplerGrid gi_grid;   /* gi_samples x the pixel's samples */
+    SamplerGrid path_grid; /* the pixel's samples: one ray a later bounce */
 } Tracer;
 
 #endif

@@ -57,6 +57,10 @@ typedef enum {
     SHAPE_KINDS
 } ShapeKind;
 
+/* The most ambient occlusion or global illumination rays a point casts,
+ * and the most diffuse bounces gathered. */
+enum { SCENE_MAX_INDIRECT = 4096, SCENE_MAX_BOUNCES = 64 };
+
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
 typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD, SCENE_MPL } SceneFormat;
@@ -140,6 +144,12 @@ typedef struct Scene {
     int has_transparency;   /* some object has T > 0 */
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
+    int ao_samples;         /* ambient occlusion rays the scene asks for
+                               (seed 001's c AO), 0: none */
+    double ao_distance;     /* their distance, in the file's units; 0: not
+                               said */
+    int gi_samples;         /* global illumination rays it asks for (c GI) */
+    int gi_bounces;         /* their bounces; 0: not said */
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()
                                (scale.h)
@@ -285,5 +295,11 @@ int scene_set_aside(Scene *scene, size_t bytes);
 
 /* Returns the number of objects (shapes) in the scene. */
 size_t scene_object_count(const Scene *scene);
+
+/* Returns the scene's size: the diagonal of the box around its bounded
+ * objects and the points that place its unbounded ones (a plane's point, a
+ * cylinder's centre, a cone's circle and apex), or, with none, around the
+ * camera and its screen. */
+double scene_size(const Scene *scene);
 
 #endif

@@ -6,6 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -177,15 +178,27 @@ static double main_peak_memory(void)
 static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
                             const RayCounts *c, double seconds)
 {
-    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction;
+    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction +
+                             c->occlusion + c->gather;
+    char indirect[96] = "";
 
     fprintf(stderr, "raytrace: %d x %d pixels, %d sample%s per pixel, %d thread%s\n",
             img->width, img->height, ropts->samples, ropts->samples == 1 ? "" : "s", threads,
             threads == 1 ? "" : "s");
+    if (ropts->indirect.ao_samples > 0 || ropts->indirect.gi_samples > 0)
+        snprintf(indirect, sizeof indirect, "%llu occlusion, %llu gathering, ", c->occlusion,
+                 c->gather);
     fprintf(stderr,
             "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
-            "%llu in all\n",
-            c->primary, c->shadow, c->reflection, c->refraction, all);
+            "%s%llu in all\n",
+            c->primary, c->shadow, c->reflection, c->refraction, indirect, all);
+    if (ropts->indirect.ao_samples > 0)
+        fprintf(stderr, "raytrace: ambient occlusion: %d rays a point, distance %g\n",
+                ropts->indirect.ao_samples, ropts->indirect.ao_distance);
+    if (ropts->indirect.gi_samples > 0)
+        fprintf(stderr, "raytrace: global illumination: %d rays a point, %d bounce%s\n",
+                ropts->indirect.gi_samples, ropts->indirect.gi_bounces,
+                ropts->indirect.gi_bounces == 1 ? "" : "s");
     if (ropts->cutoff > 0)
         fprintf(stderr,
                 "raytrace: cut-off %g levels: %llu rays left out, %llu pixels refined\n",
@@ -344,16 +357,32 @@ static int main_trace(const Options *opts, RenderOptions *ropts, const Scene *sc
     return threads;
 }
 
+/* Sets *in from the command line, else from the scene: the rays, the
+ * occlusion distance (the scene file's units, as the scene may have been
+ * enlarged; by default a tenth of the scene's size) and the bounces. */
+static void main_indirect(const Options *opts, const Scene *scene, Indirect *in)
+{
+    double d = opts->ao_distance > 0 ? opts->ao_distance : scene->ao_distance;
+
+    in->ao_samples = opts->ao >= 0 ? opts->ao : scene->ao_samples;
+    in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
+    in->gi_samples = opts->gi >= 0 ? opts->gi : scene->gi_samples;
+    in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
+                     : scene->gi_bounces > 0 ? scene->gi_bounces
+                                             : 1;
+}
+
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
     WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
-                           opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED};
+                           opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED, opts->jpeg_quality,
+                           opts->jpeg_444};
     /* The linear colours of PFM would show what the cut-off leaves out. */
     RenderOptions ropts = {opts->max_depth, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL};
-    RayCounts counts = {0, 0, 0, 0, 0, 0};
-    double start = main_now(), read_time, accel_time, render_time;
+                           opts->threads, NULL, NULL, {0, 0, 0, 0}};
+    RayCounts counts = {0};
+    double start = main_now(), read_time, accel_time, render_time, write_time;
     Scene scene;
     Image img;
     OutFile out;
@@ -372,11 +401,16 @@ static int main_render(const Options *opts)
         goto fail_scene;
     accel_time = main_now() - start - read_time;
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
+    main_indirect(opts, &scene, &ropts.indirect);
+    /* Gathered light has no bound the cut-off could use. */
+    if (ropts.indirect.gi_samples > 0)
+        ropts.cutoff = 0;
     if (main_image(opts, &wopts, &scene, &img, &err) != 0)
         goto fail_scene;
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
     threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
+    write_time = main_now();
     /* An interrupt from here on still finds main_temp_path: before the rename
      * it removes the unfinished file, after it the unlink finds nothing. */
     if (writer_write(out.fp, &img, &wopts) != 0) {
@@ -386,6 +420,7 @@ static int main_render(const Options *opts)
     }
     if (outfile_commit(&out, &err) != 0)
         goto fail_image;
+    write_time = main_now() - write_time;
     main_temp_path = NULL;
     if (opts->verbose) {
         fprintf(stderr, "raytrace: read the scene in %.3f s\n", read_time);
@@ -395,6 +430,7 @@ static int main_render(const Options *opts)
                     scene.accel->node_count, scene.accel->depth, accel_time,
                     scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
         main_statistics(&img, &ropts, threads, &counts, render_time);
+        fprintf(stderr, "raytrace: wrote the image in %.3f s\n", write_time);
     } else if (!opts->quiet && isatty(STDERR_FILENO)) {
         fprintf(stderr,
                 "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "

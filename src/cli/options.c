@@ -21,8 +21,8 @@ const char *options_help(void)
            "       raytrace --save OUT SCENE\n"
            "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
            "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
-           "PNG or PFM image, chosen by OUTPUT's extension (.ppm, .png, .pfm; PPM for\n"
-           "any other) or by --format. Textures may be PPM, PNG or JPEG files.\n"
+           "PNG, PFM or JPEG image, chosen by OUTPUT's extension (.ppm, .png, .pfm,\n"
+           ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG or JPEG files.\n"
            "SCENE may be '-' for standard input,\n"
            "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
            "image has been written.\n"
@@ -38,6 +38,15 @@ const char *options_help(void)
            "                     pixel; in pixels near a rounding boundary they are\n"
            "                     traced after all, with smaller cut-offs, then in\n"
            "                     full, so the bytes never change (0: off)\n"
+           "  --ao N             ambient occlusion: N rays per point the camera sees\n"
+           "                     (0 to 4096) darken its ambient light by the share\n"
+           "                     they find hidden (default: the scene's, else 0)\n"
+           "  --ao-distance D    what is nearer than D hides (default: the scene's,\n"
+           "                     else a tenth of the diagonal of its objects' box)\n"
+           "  --gi N             global illumination: N rays per point the camera\n"
+           "                     sees (0 to 4096) gather the light other surfaces\n"
+           "                     reflect onto its diffuse part (default: 0)\n"
+           "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
            "  --memory-limit M   fail early, before allocating, when the scene, its\n"
            "                     hierarchy and the image would need more than M\n"
            "                     bytes (suffix K, M or G: powers of 1024; default\n"
@@ -45,7 +54,11 @@ const char *options_help(void)
            "  -j, --threads N    read, build and render with N threads, 1 to 1024\n"
            "                     (default: one per processor; ignored in builds\n"
            "                     without OpenMP)\n"
-           "  --format F         write F: ppm, png or pfm (linear floats, unclamped)\n"
+           "  --format F         write F: ppm, png, pfm (linear floats, unclamped) or\n"
+           "                     jpeg (lossy: smaller files, not the exact bytes)\n"
+           "  --jpeg-quality Q   JPEG quality, 1 to 100 (default 90)\n"
+           "  --jpeg-subsampling S  JPEG chroma: 420 (halved both ways, the default)\n"
+           "                     or 444 (whole: sharp coloured edges)\n"
            "  --ascii            write PPM as ASCII (P3) instead of binary (P6)\n"
            "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
            "                     default) or stored (no compression, faster)\n"
@@ -147,8 +160,10 @@ typedef struct {
     OptionsAction act;      /* ACT: what it asks for */
 } OptionSpec;
 
-static const OptionWord options_formats[] = {
-    {"ppm", FORMAT_PPM}, {"png", FORMAT_PNG}, {"pfm", FORMAT_PFM}, {NULL, 0}};
+static const OptionWord options_formats[] = {{"ppm", FORMAT_PPM},   {"png", FORMAT_PNG},
+                                             {"pfm", FORMAT_PFM},   {"jpeg", FORMAT_JPEG},
+                                             {"jpg", FORMAT_JPEG}, {NULL, 0}};
+static const OptionWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
 static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
 static const OptionWord options_scene_formats[] = {{"course", SCENE_COURSE},
                                                     {"keyword", SCENE_KEYWORD},
@@ -174,6 +189,12 @@ static const OptionSpec options_table[] = {
     {"--save", OPT(NULL, OPTION_TEXT, save_path), 0, 0, NULL, 0},
     {"--cutoff", OPT(NULL, OPTION_REAL, cutoff), 0, 255, NULL, 0},
     {"--memory-limit", OPT(NULL, OPTION_SIZE, memory_limit), 0, 0, NULL, 0},
+    {"--jpeg-quality", OPT(NULL, OPTION_INT, jpeg_quality), 1, 100, NULL, 0},
+    {"--jpeg-subsampling", OPT(NULL, OPTION_WORD, jpeg_444), 0, 0, options_subsampling, 0},
+    {"--ao", OPT(NULL, OPTION_INT, ao), 0, SCENE_MAX_INDIRECT, NULL, 0},
+    {"--ao-distance", OPT(NULL, OPTION_REAL, ao_distance), 0, 1e300, NULL, 0},
+    {"--gi", OPT(NULL, OPTION_INT, gi), 0, SCENE_MAX_INDIRECT, NULL, 0},
+    {"--gi-bounces", OPT(NULL, OPTION_INT, gi_bounces), 1, SCENE_MAX_BOUNCES, NULL, 0},
 };
 #undef OPT
 
@@ -320,6 +341,8 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->scene_format = SCENE_AUTO;
     opts->cutoff = OPTIONS_DEFAULT_CUTOFF;
     opts->memory_limit = OPTIONS_DEFAULT_MEMORY_LIMIT;
+    opts->ao = opts->gi = -1;
+    opts->jpeg_quality = 90;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         OptionsAction act;

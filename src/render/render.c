@@ -37,6 +37,9 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
     Colour sum = colour(0, 0, 0);
 
     t->counts->primary += g->n;
+    t->sample->x = x;
+    t->sample->y = y;
+    t->sample->k = 0;
     if (g->n == 1) {
         Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
                                : camera_ray(cam, x + 0.5, y + 0.5);
@@ -52,6 +55,7 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
             sampler_disk(l, disk);
         }
         ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
+        t->sample->k = k;
         sum = colour_add(sum, trace_ray(t, &ray));
     }
     return colour(sum.r / g->n, sum.g / g->n, sum.b / g->n);
@@ -171,6 +175,8 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
     a->refraction += b->refraction;
     a->cut += b->cut;
     a->refined += b->refined;
+    a->occlusion += b->occlusion;
+    a->gather += b->gather;
 }
 
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
@@ -178,7 +184,9 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     int done = 0, used = 1;
     int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
     Cut proto = {0};
-    int cutting = opts->cutoff > 0 && opts->max_depth > 0;
+    /* Under global illumination a ray's colour has no bound the cut-off
+     * could use: it is off. */
+    int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0;
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
@@ -193,9 +201,13 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #pragma omp parallel num_threads(opts->threads)
 #endif
     {
-        RayCounts mine = {0, 0, 0, 0, 0, 0};
+        RayCounts mine = {0};
         Cut cut = proto; /* the thread's own: it keeps the rays left out */
-        Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine};
+        TraceSample sample = {0, 0, 0, g.n};
+        Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
+                    sampler_grid(g.n * (unsigned)(opts->indirect.ao_samples ? opts->indirect.ao_samples : 1)),
+                    sampler_grid(g.n * (unsigned)(opts->indirect.gi_samples ? opts->indirect.gi_samples : 1)),
+                    g};
 
 #ifdef _OPENMP
 #pragma omp single

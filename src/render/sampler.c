@@ -1,6 +1,7 @@
 /* sampler.c: multi-jittered pixel and lens samples (see sampler.h). */
 #include "render/sampler.h"
 
+#include <math.h>
 #include <stdint.h>
 
 #include "math/angle.h"
@@ -65,15 +66,15 @@ SamplerGrid sampler_grid(unsigned n)
     return g;
 }
 
-void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2])
+/* Stores in xy point k of pixel (px, py)'s multi-jittered pattern of g->n
+ * points in dimension dim (sampler_sample(), without its centre for one
+ * point). */
+static void sampler_jitter(const SamplerGrid *g, int px, int py, unsigned k, uint64_t dim,
+                           double xy[2])
 {
     uint64_t seed, s;
     unsigned i, j;
 
-    if (g->n == 1) {
-        xy[0] = xy[1] = 0.5;
-        return;
-    }
     seed = sampler_mix(((uint64_t)(uint32_t)py << 32 | (uint32_t)px) ^ sampler_mix(dim + 1));
     /* Dimensions other than the first visit the cells in their own order,
      * so that a pixel sample and its lens sample are not correlated. */
@@ -92,6 +93,34 @@ void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned d
                   sampler_unit(sampler_mix(s))) /
                      g->cols) /
             g->rows;
+}
+
+void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2])
+{
+    if (g->n == 1) {
+        xy[0] = xy[1] = 0.5;
+        return;
+    }
+    sampler_jitter(g, px, py, k, dim, xy);
+}
+
+uint64_t sampler_branch(uint64_t key, unsigned branch)
+{
+    return sampler_mix(key * 0x9e3779b97f4a7c15u + branch + 1);
+}
+
+void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
+                        double dir[3])
+{
+    double xy[2], disk[2], r2;
+
+    /* Past the pixel and lens dimensions, whatever the key. */
+    sampler_jitter(g, px, py, k, key | 0x8000000000000000u, xy);
+    sampler_disk(xy, disk);
+    r2 = disk[0] * disk[0] + disk[1] * disk[1];
+    dir[0] = disk[0];
+    dir[1] = disk[1];
+    dir[2] = r2 < 1 ? sqrt(1 - r2) : 0;
 }
 
 void sampler_disk(const double xy[2], double disk[2])

@@ -39,6 +39,7 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
     int clamp_v = 0, want_uv;
 
     sh.material = scene_material(scene, hit->kind, hit->index);
+    sh.ambient = 1;
     want_uv = sh.material->texture >= 0 || sh.material->stripes;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
@@ -230,9 +231,10 @@ Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Ve
 {
     const Scene *scene = t->scene;
     Colour ci = sh->colour, c;
+    double ka = pm->ka * sh->ambient;
 
-    c = colour(pm->ka * (scene->ambient.r * ci.r / 255), pm->ka * (scene->ambient.g * ci.g / 255),
-               pm->ka * (scene->ambient.b * ci.b / 255));
+    c = colour(ka * (scene->ambient.r * ci.r / 255), ka * (scene->ambient.g * ci.g / 255),
+               ka * (scene->ambient.b * ci.b / 255));
     for (size_t i = 0; i < scene->light_count; i++) {
         const Light *light = &scene->lights[i];
         Vec3 to_light = light->distant ? light->to_light
@@ -271,9 +273,9 @@ Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double wei
     for (size_t i = 1; i < scene->light_count; i++)
         c = colour_add(c, shade_direct(t, &scene->lights[i], sh, n, ns, weight));
     if (scene->has_ambient)
-        c = colour_add(colour(scene->ambient.r * sh->colour.r / 255,
-                              scene->ambient.g * sh->colour.g / 255,
-                              scene->ambient.b * sh->colour.b / 255),
+        c = colour_add(colour(sh->ambient * (scene->ambient.r * sh->colour.r / 255),
+                              sh->ambient * (scene->ambient.g * sh->colour.g / 255),
+                              sh->ambient * (scene->ambient.b * sh->colour.b / 255)),
                        c);
     return c;
 }

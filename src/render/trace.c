@@ -3,10 +3,25 @@
 #include "render/trace.h"
 
 #include <math.h>
+#include <stdint.h>
 
 #include "render/cut.h"
+#include "render/sampler.h"
 #include "render/shade.h"
 #include "render/visibility.h"
+
+/* Where a ray is on its way from the camera: the key its indirect rays
+ * draw their directions from (sampler.h; 0 when there are none) and the
+ * diffuse bounces (gathering rays) taken so far. */
+typedef struct {
+    uint64_t key;
+    int bounce;
+} TracePath;
+
+/* The branches a path's key follows (sampler_branch()): a mirror or
+ * refracted ray takes its RayKind's, a gathering ray TRACE_GATHERED + its
+ * number; the occlusion and gathering rays of a point draw from their own. */
+enum { TRACE_OCCLUSION = 8, TRACE_GATHER = 9, TRACE_GATHERED = 16 };
 
 /* The colour along a ray of depth `depth`, reached with `weight` (the
  * product of the mirror and transparency weights from the primary ray),
@@ -14,8 +29,20 @@
  * whose weights are the same in every channel (trace_path()), and in a
  * scene of named materials, whose tinted mirrors and glass weigh the
  * channels apart (trace_named_path()). */
-static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weight);
-static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colour weight);
+static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weight,
+                         TracePath path);
+static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colour weight,
+                               TracePath path);
+
+/* Returns the path of the ray taking branch from path: its key follows
+ * only when there are gathering rays to draw. */
+static inline TracePath trace_branch(const Tracer *t, TracePath path, unsigned branch)
+{
+    if (t->indirect.gi_samples > 0)
+        path.key = sampler_branch(path.key, branch);
+    return path;
+}
+
 
 /* Counts a mirror or refracted ray (kind) as cast. */
 static inline void trace_count_secondary(RayKind kind, RayCounts *counts)
@@ -45,7 +72,8 @@ static inline int trace_cut_secondary(const Tracer *t, CutRay *d, RayKind kind, 
  * sh (facing normal n) in direction dir at depth `depth`, reached with
  * weight times share, or 0 when the cut-off allows leaving it out. */
 static inline Colour trace_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 dir,
-                                     RayKind kind, double share, int depth, double weight)
+                                     RayKind kind, double share, int depth, double weight,
+                                     TracePath path)
 {
     CutRay d;
 
@@ -55,13 +83,14 @@ static inline Colour trace_secondary(const Tracer *t, const Shade *sh, Vec3 n, V
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, colour(weight, weight, weight), weight))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);
-    return colour_scale(trace_path(t, &d.ray, depth, weight), share);
+    return colour_scale(trace_path(t, &d.ray, depth, weight, trace_branch(t, path, kind)), share);
 }
 
 /* trace_secondary() for a scene of named materials: the share and weight
  * channel by channel. */
 static inline Colour trace_named_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 dir,
-                                           RayKind kind, Colour share, int depth, Colour weight)
+                                           RayKind kind, Colour share, int depth, Colour weight,
+                                           TracePath path)
 {
     CutRay d;
 
@@ -71,25 +100,110 @@ static inline Colour trace_named_secondary(const Tracer *t, const Shade *sh, Vec
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, weight, colour_max(weight)))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);
-    return colour_mul(trace_named_path(t, &d.ray, depth, weight), share);
+    return colour_mul(trace_named_path(t, &d.ray, depth, weight, trace_branch(t, path, kind)),
+                      share);
 }
 
 Colour trace_deferred(const Tracer *t, CutRay d)
 {
+    /* The cut-off is off under global illumination (render.c), so a
+     * deferred ray's path draws nothing. */
+    TracePath none = {0, 0};
+
     if (d.kind == RAY_SHADOW)
         return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax)));
     trace_count_secondary(d.kind, t->counts);
     if (t->scene->named_count > 0)
-        return colour_mul(trace_named_path(t, &d.ray, d.depth, d.weight), d.weight);
+        return colour_mul(trace_named_path(t, &d.ray, d.depth, d.weight, none), d.weight);
     /* A course scene's weights are grey. */
-    return colour_scale(trace_path(t, &d.ray, d.depth, d.weight.r), d.weight.r);
+    return colour_scale(trace_path(t, &d.ray, d.depth, d.weight.r, none), d.weight.r);
 }
 
 Colour trace_ray(const Tracer *t, const Ray *ray)
 {
+    TracePath primary = {0, 0};
+
     if (t->scene->named_count > 0)
-        return trace_named_path(t, ray, 0, colour(1, 1, 1));
-    return trace_path(t, ray, 0, 1);
+        return trace_named_path(t, ray, 0, colour(1, 1, 1), primary);
+    return trace_path(t, ray, 0, 1, primary);
+}
+
+/* Returns the share of the hemisphere over sh (n and ns its facing
+ * normals) that nothing nearer than the occlusion distance hides, seen
+ * through t's occlusion rays: cosine-weighted and stratified over the
+ * pixel's samples (sampler_hemisphere()); a direction below the surface
+ * (smooth shading) counts as hidden. */
+static double trace_occlusion(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns)
+{
+    const TraceSample *s = t->sample;
+    unsigned rays = (unsigned)t->indirect.ao_samples, open = 0;
+    uint64_t key = sampler_branch(0, TRACE_OCCLUSION);
+
+    for (unsigned i = 0; i < rays; i++) {
+        double d[3];
+        Ray r;
+
+        sampler_hemisphere(&t->ao_grid, s->x, s->y, s->k * rays + i, key, d);
+        r.dir = vec3_from_frame(ns, d[0], d[1], d[2]);
+        if (!(vec3_dot(r.dir, n) > 0))
+            continue;
+        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+        t->counts->occlusion++;
+        open += !visibility_occluded(t->scene, &r, t->indirect.ao_distance);
+    }
+    return (double)open / rays;
+}
+
+/* Says whether the point of a ray on path gathers diffuse light. */
+static inline int trace_gathers(const Tracer *t, TracePath path)
+{
+    return t->indirect.gi_samples > 0 && path.bounce < t->indirect.gi_bounces;
+}
+
+/* Returns the mean colour seen from sh (n and ns its facing normals, the
+ * ray at depth `depth` with weight) along its gathering rays: at the
+ * first bounce t's gi_samples rays, after it one (a path), cosine-weighted
+ * and stratified over the pixel's samples. Each is traced as any ray is
+ * (its own direct light, mirrors, and its gathering while bounces remain),
+ * at the same depth; one that meets nothing brings nothing (the
+ * background lights nothing). */
+static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, int depth,
+                           Colour weight, TracePath path)
+{
+    const TraceSample *s = t->sample;
+    int first = path.bounce == 0;
+    unsigned rays = first ? (unsigned)t->indirect.gi_samples : 1;
+    const SamplerGrid *g = first ? &t->gi_grid : &t->path_grid;
+    uint64_t key = sampler_branch(path.key, TRACE_GATHER);
+    Colour sum = colour(0, 0, 0);
+
+    for (unsigned i = 0; i < rays; i++) {
+        TracePath next = {sampler_branch(path.key, TRACE_GATHERED + i), path.bounce + 1};
+        double d[3];
+        Ray r;
+
+        sampler_hemisphere(g, s->x, s->y, s->k * rays + i, key, d);
+        r.dir = vec3_from_frame(ns, d[0], d[1], d[2]);
+        if (!(vec3_dot(r.dir, n) > 0))
+            continue;
+        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+        t->counts->gather++;
+        sum = colour_add(sum, t->scene->named_count > 0
+                                  ? trace_named_path(t, &r, depth, weight, next)
+                                  : trace_path(t, &r, depth, weight.r, next));
+    }
+    return colour_scale(sum, 1.0 / rays);
+}
+
+/* Returns the light a diffuse surface of colour C (sh's) and weight kd
+ * reflects of what its gathering rays bring: kd C * mean / 255. */
+static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, int depth,
+                             Colour weight, TracePath path, double kd)
+{
+    Colour g = trace_gather(t, sh, n, ns, depth, weight, path);
+
+    return colour(kd * (sh->colour.r * g.r / 255), kd * (sh->colour.g * g.g / 255),
+                  kd * (sh->colour.b * g.b / 255));
 }
 
 /* Returns the colour of the sky the ray sees: the background, or the
@@ -109,7 +223,7 @@ static Colour trace_background(const Scene *scene, const Ray *ray)
  * the local term of its model (shade.h) and the mirror and refracted rays
  * its model sends (docs/scene-format.md). */
 static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3 n, Vec3 ns,
-                          int depth, Colour weight)
+                          int depth, Colour weight, TracePath path)
 {
     const NamedMaterial *pm = &t->scene->named[sh->material->named];
     const Material *m = sh->material;
@@ -121,23 +235,29 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
 
     switch (pm->model) {
     case MODEL_MATTE:
-        return shade_phong(t, sh, pm, n, ns, view, weight);
+        c = shade_phong(t, sh, pm, n, ns, view, weight);
+        if (trace_gathers(t, path))
+            c = colour_add(c, trace_indirect(t, sh, n, ns, depth, weight, path, pm->kd));
+        return c;
     case MODEL_PLASTIC:
         /* A clear coat over the diffuse surface: Fresnel's share mirrors,
          * the rest is the surface's own light. */
         f = ray_fresnel(ray->dir, ns, eta);
         local = shade_phong(t, sh, pm, n, ns, view, colour_scale(weight, 1 - f));
+        if (trace_gathers(t, path))
+            local = colour_add(local, trace_indirect(t, sh, n, ns, depth,
+                                                     colour_scale(weight, 1 - f), path, pm->kd));
         c = colour_scale(local, 1 - f);
         if (deeper && f > 0)
             c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
-                                              colour(f, f, f), depth + 1, weight));
+                                              colour(f, f, f), depth + 1, weight, path));
         return c;
     case MODEL_METALLIC:
         /* A mirror tinted by its colour, and the highlights. */
         c = shade_phong(t, sh, pm, n, ns, view, weight);
         if (deeper)
             c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
-                                              tint, depth + 1, weight));
+                                              tint, depth + 1, weight, path));
         return c;
     case MODEL_DIELECTRIC:
         /* Fresnel's share mirrors, the rest enters, tinted; all of it
@@ -149,50 +269,60 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
         f = ray_refract(ray->dir, ns, eta, &bent) ? ray_fresnel(ray->dir, ns, eta) : 1;
         if (f < 1)
             c = colour_add(c, trace_named_secondary(t, sh, n, bent, RAY_REFRACTION,
-                                              colour_scale(tint, 1 - f), depth + 1, weight));
+                                              colour_scale(tint, 1 - f), depth + 1, weight, path));
         if (f > 0)
             c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
-                                              colour(f, f, f), depth + 1, weight));
+                                              colour(f, f, f), depth + 1, weight, path));
         return c;
     default: { /* Blinn-Phong: Whitted's sum, the weights already scaling
                 * the local term */
         double r = m->reflection, tr = m->transparency;
         c = shade_phong(t, sh, pm, n, ns, view, weight);
+        if (pm->kd > 0 && trace_gathers(t, path))
+            c = colour_add(c, trace_indirect(t, sh, n, ns, depth, weight, path, pm->kd));
         if (!deeper)
             return c;
         if (tr > 0) {
             if (ray_refract(ray->dir, ns, eta, &bent))
                 c = colour_add(c, trace_named_secondary(t, sh, n, bent, RAY_REFRACTION,
-                                                  colour(tr, tr, tr), depth + 1, weight));
+                                                  colour(tr, tr, tr), depth + 1, weight, path));
             else
                 r += tr; /* total internal reflection: the share T is mirrored */
         }
         if (r > 0)
             c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
-                                              colour(r, r, r), depth + 1, weight));
+                                              colour(r, r, r), depth + 1, weight, path));
         return c;
     }
     }
 }
 
-static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colour weight)
+static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colour weight,
+                               TracePath path)
 {
     const Scene *scene = t->scene;
     Hit hit;
     Shade sh;
     Vec3 n;
 
+    Vec3 ns;
+
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
-        return trace_background(scene, ray);
+        return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
     sh = shade_at(scene, ray, &hit);
     n = ray_facing_normal(sh.sp.normal, ray->dir);
-    return trace_named(t, ray, &sh, n,
-                       vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading,
-                       depth, weight);
+    ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
+    /* Ambient occlusion at the points the camera sees, where there is
+     * ambient light to hide. */
+    if (t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
+        scene->named[sh.material->named].ka > 0 && colour_max(scene->ambient) > 0)
+        sh.ambient = trace_occlusion(t, &sh, n, ns);
+    return trace_named(t, ray, &sh, n, ns, depth, weight, path);
 }
 
 /* The course's rule, for a ray of a course scene (trace.h). */
-static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weight)
+static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weight,
+                         TracePath path)
 {
     const Scene *scene = t->scene;
     Hit hit;
@@ -202,7 +332,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     double r, tr, own;
 
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
-        return scene->background;
+        return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
     sh = shade_at(scene, ray, &hit);
     /* n, the surface's normal facing the ray, decides where secondary rays
      * start; ns, the shading normal on n's side, how light and mirrors
@@ -213,7 +343,15 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     tr = sh.material->transparency;
     own = 1 - r - tr;
     own = own > 0 ? own : 0;
-    c = colour_scale(shade_local(t, &sh, n, ns, weight * own), own);
+    if (own > 0 && t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
+        scene->has_ambient && colour_max(scene->ambient) > 0)
+        sh.ambient = trace_occlusion(t, &sh, n, ns);
+    c = shade_local(t, &sh, n, ns, weight * own);
+    if (own > 0 && trace_gathers(t, path))
+        c = colour_add(c, trace_indirect(t, &sh, n, ns, depth, colour(weight * own, weight * own,
+                                                                      weight * own),
+                                         path, 1));
+    c = colour_scale(c, own);
     if (depth + 1 > t->max_depth)
         return c;
     if (tr > 0) {
@@ -224,13 +362,13 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
 
         if (ray_refract(ray->dir, ns, eta, &bent)) {
             c = colour_add(c, trace_secondary(t, &sh, n, bent, RAY_REFRACTION, tr, depth + 1,
-                                              weight));
+                                              weight, path));
         } else {
             r += tr; /* total internal reflection: the share T is mirrored */
         }
     }
     if (r > 0)
         c = colour_add(c, trace_secondary(t, &sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION, r,
-                                          depth + 1, weight));
+                                          depth + 1, weight, path));
     return c;
 }

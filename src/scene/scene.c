@@ -267,6 +267,49 @@ int scene_build_accel(Scene *scene, int threads)
     return 0;
 }
 
+/* Widens the box [lo, hi] to hold p, grown by r on each axis. */
+static void scene_widen(Vec3 *lo, Vec3 *hi, Vec3 p, real r)
+{
+    lo->x = fmin(lo->x, p.x - r);
+    lo->y = fmin(lo->y, p.y - r);
+    lo->z = fmin(lo->z, p.z - r);
+    hi->x = fmax(hi->x, p.x + r);
+    hi->y = fmax(hi->y, p.y + r);
+    hi->z = fmax(hi->z, p.z + r);
+}
+
+double scene_size(const Scene *scene)
+{
+    Vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3(-INFINITY, -INFINITY, -INFINITY);
+    const Camera *cam = &scene->camera;
+
+    for (size_t i = 0; i < scene->sphere_count; i++)
+        scene_widen(&lo, &hi, scene->spheres[i].centre, scene->spheres[i].radius);
+    for (size_t i = 0; i < scene->triangle_count; i++)
+        for (int k = 0; k < 3; k++)
+            scene_widen(&lo, &hi, scene->triangles[i].v[k], 0);
+    for (size_t i = 0; i < scene->cube_count; i++) {
+        scene_widen(&lo, &hi, scene->cubes[i].lo, 0);
+        scene_widen(&lo, &hi, scene->cubes[i].hi, 0);
+    }
+    for (size_t i = 0; i < scene->square_count; i++)
+        scene_widen(&lo, &hi, scene->squares[i].centre, scene->squares[i].half * (real)1.5);
+    for (size_t i = 0; i < scene->plane_count; i++)
+        scene_widen(&lo, &hi, scene->planes[i].point, 0);
+    for (size_t i = 0; i < scene->cylinder_count; i++)
+        scene_widen(&lo, &hi, scene->cylinders[i].centre, scene->cylinders[i].radius);
+    for (size_t i = 0; i < scene->cone_count; i++) {
+        scene_widen(&lo, &hi, scene->cones[i].base, scene->cones[i].radius);
+        scene_widen(&lo, &hi, scene->cones[i].apex, 0);
+    }
+    if (!(lo.x < hi.x || lo.y < hi.y || lo.z < hi.z)) {
+        scene_widen(&lo, &hi, cam->eye, 0);
+        scene_widen(&lo, &hi, cam->top_left, 0);
+        scene_widen(&lo, &hi, vec3_add(cam->top_left, vec3_add(cam->u, cam->v)), 0);
+    }
+    return vec3_length(vec3_sub(hi, lo));
+}
+
 size_t scene_object_count(const Scene *scene)
 {
     return scene->sphere_count + scene->plane_count + scene->triangle_count + scene->cube_count +

@@ -13,6 +13,7 @@
  *   setting   -> 'c' Camera px py pz tx ty tz fov width height    (at most once)
  *              | 'c' Background r g b | 'c' Sky r g b r g b        (one of them)
  *              | 'c' Ambient r g b | 'c' Samples n                 (each at most once)
+ *              | 'c' AO n [distance] | 'c' GI n [bounces]          (each at most once)
  *
  * Colours are 0 to 1 (scaled to the renderer's 0 to 255).
  */
@@ -38,6 +39,8 @@ typedef struct {
     int background_line; /* (Background or Sky) */
     int ambient_line;
     int samples_line;
+    int ao_line;         /* (c AO, c GI) */
+    int gi_line;
     Names names;         /* the materials by name */
 } Mpl;
 
@@ -65,6 +68,10 @@ static const char *const mpl_sky_names[] = {"zenith red", "zenith green", "zenit
                                             "nadir red",  "nadir green",  "nadir blue"};
 static const FieldKind mpl_sky_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION,
                                           FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
+static const char *const mpl_ao_names[] = {"distance"};
+static const FieldKind mpl_ao_kinds[] = {FIELD_POSITIVE};
+static const RecordSpec mpl_ao_distance = {"the ambient occlusion", NULL, 1, 0, 0, mpl_ao_names,
+                                           mpl_ao_kinds};
 static const char *const mpl_tri_names[] = {"size", "x", "y", "z"};
 static const FieldKind mpl_tri_kinds[] = {FIELD_POSITIVE, FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
@@ -473,15 +480,41 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
     }
 }
 
+/* AO -> 'c' AO n [distance] | GI -> 'c' GI n [bounces]: ambient occlusion
+ * and global illumination rays (seed 001's section IV, trace.h). */
+static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
+{
+    const char *what = gi ? "the global illumination" : "the ambient occlusion";
+
+    if (lex_once(&M->lex, rec, gi ? &M->gi_line : &M->ao_line, what) != 0 ||
+        mpl_need(M, rec, 2, gi ? "the number of global illumination rays"
+                               : "the number of ambient occlusion rays",
+                 gi ? "c GI n [bounces]" : "c AO n [distance]") != 0 ||
+        lex_whole_number(&M->lex, rec, 2, gi ? "the number of global illumination rays"
+                                             : "the number of ambient occlusion rays",
+                         "rays", SCENE_MAX_INDIRECT, gi ? &scene->gi_samples : &scene->ao_samples) != 0)
+        return -1;
+    if (rec->count > 4)
+        return lex_fail_extra(&M->lex, rec, 4, gi ? "the number of bounces" : "the distance");
+    if (rec->count == 4)
+        return gi ? lex_whole_number(&M->lex, rec, 3, "the number of bounces", "bounces",
+                                     SCENE_MAX_BOUNCES, &scene->gi_bounces)
+                  : lex_number(&M->lex, rec, 3, &mpl_ao_distance, 0, &scene->ao_distance);
+    return 0;
+}
+
 /* setting -> 'c' Camera ... | Background r g b | Sky r g b r g b | Ambient r g b
- *          | Samples n */
+ *          | Samples n | AO n [distance] | GI n [bounces] */
 static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
 {
     double v[6];
     char q[64];
 
-    if (mpl_need(M, rec, 1, "the setting", "Camera, Background, Sky, Ambient or Samples") != 0)
+    if (mpl_need(M, rec, 1, "the setting", "Camera, Background, Sky, Ambient, Samples, AO or GI") !=
+        0)
         return -1;
+    if (mpl_word_is(&rec->tok[1], "AO") || mpl_word_is(&rec->tok[1], "GI"))
+        return mpl_indirect_record(M, rec, scene, mpl_word_is(&rec->tok[1], "GI"));
     if (mpl_word_is(&rec->tok[1], "Camera"))
         return mpl_camera_record(M, rec, scene);
     if (mpl_word_is(&rec->tok[1], "Background") || mpl_word_is(&rec->tok[1], "Sky")) {
@@ -513,7 +546,7 @@ static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
                                 CAMERA_MAX_SAMPLES, &scene->samples);
     }
     mpl_fail(M, &rec->line, rec->tok[1].column,
-             "unknown setting %s (expected Camera, Background, Sky, Ambient or Samples)",
+             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO or GI)",
              lex_quote(q, sizeof q, &rec->tok[1]));
     return -1;
 }
@@ -564,6 +597,7 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     scene->background = colour(255, 255, 255);
     lex_init(&M.lex, name, text, len, err);
     M.camera_line = M.background_line = M.ambient_line = M.samples_line = 0;
+    M.ao_line = M.gi_line = 0;
     names_init(&M.names);
     rc = mpl_lines(&M, scene);
     names_free(&M.names);

@@ -225,6 +225,18 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
     }
     if (scene->samples)
         fprintf(fp, "c Samples %d\n", scene->samples);
+    if (scene->ao_samples) {
+        fprintf(fp, "c AO %d", scene->ao_samples);
+        if (scene->ao_distance > 0)
+            save_numbers(fp, &scene->ao_distance, 1);
+        fputc('\n', fp);
+    }
+    if (scene->gi_samples) {
+        fprintf(fp, "c GI %d", scene->gi_samples);
+        if (scene->gi_bounces > 0)
+            fprintf(fp, " %d", scene->gi_bounces);
+        fputc('\n', fp);
+    }
     for (i = 0; i < scene->named_count; i++) {
         const NamedMaterial *pm = &scene->named[i];
         double v[2] = {pm->ks, pm->shininess};

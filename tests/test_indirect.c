@@ -1,0 +1,216 @@
+/* test_indirect.c: ambient occlusion and global illumination against
+ * shares and colours known in closed form, and their bytes against thread
+ * counts and against renders without them. */
+#include <math.h>
+#include <string.h>
+
+#include "render/render.h"
+#include "render/trace.h"
+#include "scenefile/course.h"
+#include "test.h"
+
+#define PI 3.14159265358979323846
+
+/* Reads a course scene from text into *sc; returns 0 or -1 (reported). */
+static int indirect_scene(const char *text, Scene *sc)
+{
+    Error err;
+
+    if (course_parse_text("t.txt", text, strlen(text), 0, sc, &err) != 0) {
+        test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
+        return -1;
+    }
+    return 0;
+}
+
+/* The colour of the sample of pixel (0, 0) along the ray from o towards
+ * d, traced with indirect light `in`, one sample a pixel. */
+static Colour indirect_seen(const Scene *sc, Indirect in, Vec3 o, Vec3 d, RayCounts *counts)
+{
+    TraceSample s = {0, 0, 0, 1};
+    Ray r = {o, vec3_normalize(d)};
+    Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = counts, .indirect = in,
+                .sample = &s};
+
+    t.ao_grid = sampler_grid((unsigned)(in.ao_samples ? in.ao_samples : 1));
+    t.gi_grid = sampler_grid((unsigned)(in.gi_samples ? in.gi_samples : 1));
+    t.path_grid = sampler_grid(1);
+    return trace_ray(&t, &r);
+}
+
+/* A white floor (y = 0) in white ambient light, lit by nothing (the light
+ * is below it), and a wall x = 0.5: seen from the floor's origin, the wall
+ * hides within distance D the directions whose x exceeds c = 0.5 / D. The
+ * cosine-weighted share of those is the disk's segment beyond c, (acos c -
+ * c sqrt(1 - c^2)) / pi (0.1955 for D = 1, where uniform directions would
+ * give (1 - c) / 2 = 0.25; 4,096 stratified rays find it within 0.002). */
+static void indirect_occlusion_follows_the_cosine_law(void)
+{
+    static const char text[] = "0 5 -5\n-1 5 -4\n1 5 -4\n-1 3 -4\n8\n0 0 0\n0 -10 0 255 255 255\n"
+                               "ambient: 255 255 255\n"
+                               "plane: 0 0 0 0 1 0 255 255 255 0\n"
+                               "plane: 0.5 0 0 1 0 0 255 255 255 0\n";
+    const double distances[] = {1, 2, 0.75};
+    Scene sc;
+    RayCounts counts = {0};
+
+    if (indirect_scene(text, &sc) != 0)
+        return;
+    for (int k = 0; k < 3; k++) {
+        Indirect in = {4096, distances[k], 0, 1};
+        double c = 0.5 / distances[k], hidden = (acos(c) - c * sqrt(1 - c * c)) / PI;
+        Colour got = indirect_seen(&sc, in, vec3(0, 1, 0), vec3(0, -1, 0), &counts);
+        CHECK_NEAR(255 * (1 - hidden), got.r, 0.6); /* 0.0024 of the share */
+        CHECK_NEAR(got.r, got.b, 0);
+    }
+    CHECK_INT(3 * 4096, (long long)counts.occlusion);
+    /* Nearer than nothing: nothing is hidden, the colour is the ambient's. */
+    {
+        Indirect none = {64, 0.01, 0, 1};
+        CHECK_NEAR(255, indirect_seen(&sc, none, vec3(0, 1, 0), vec3(0, -1, 0), &counts).g, 0);
+    }
+    scene_free(&sc);
+}
+
+/* A point light at the centre of a hollow grey ball (radius 100, colour
+ * 128) lights its inside head on everywhere, so every gathering ray from a
+ * triangle facing the light sees 128: the triangle's colour gains exactly
+ * Ci * 128 / 255 over its direct light, whatever the rays' directions. */
+static void indirect_gathering_from_a_uniformly_lit_ball(void)
+{
+    static const char text[] = "0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n8\n0 0 0\n0 0 0 255 255 255\n"
+                               "sphere: 0 0 0 100 128 128 128 0\n"
+                               "triangle: -1 -1 10 1 -1 10 0 1 10 200 100 50 0\n";
+    Scene sc;
+    RayCounts counts = {0};
+    Indirect off = {0, 1, 0, 1}, gi = {0, 1, 64, 1};
+    Vec3 o = vec3(0, 0, -5), d = vec3(0, 0, 1);
+
+    if (indirect_scene(text, &sc) != 0)
+        return;
+    {
+        Colour direct = indirect_seen(&sc, off, o, d, &counts);
+        Colour both = indirect_seen(&sc, gi, o, d, &counts);
+        CHECK_NEAR(direct.r + 200 * 128.0 / 255, both.r, 1e-9);
+        CHECK_NEAR(direct.g + 100 * 128.0 / 255, both.g, 1e-9);
+        CHECK_NEAR(direct.b + 50 * 128.0 / 255, both.b, 1e-9);
+        CHECK_INT(64, (long long)counts.gather);
+    }
+    scene_free(&sc);
+}
+
+/* Renders text at 12 x 12 with indirect light `in`, spp samples, on
+ * `threads` threads into img (allocated here); counts the rays. */
+static void indirect_render(const char *text, Indirect in, int spp, int threads, Image *img,
+                            RayCounts *counts)
+{
+    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in};
+    Scene sc;
+
+    img->rgb = NULL;
+    img->linear = NULL;
+    if (indirect_scene(text, &sc) != 0)
+        return;
+    CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));
+    render(&sc, &opts, img, counts);
+    scene_free(&sc);
+}
+
+/* Three balls on a mirrored floor in ambient light, one of glass. */
+static const char indirect_balls[] =
+    "0 2 -8\n-1.5 1.9 -6\n1.5 1.9 -6\n-1.5 -0.3 -6\n12\n20 30 40\n-4 6 -3 255 240 220\n"
+    "ambient: 60 60 60\n"
+    "plane: 0 0 0 0 1 0 200 200 200 0.2\n"
+    "sphere: -1.2 1 0 1 220 80 60 0\n"
+    "sphere: 1.2 1 0.5 1 60 200 90 0.3\n"
+    "sphere: 0 0.6 -1.5 0.6 255 255 255 0.05 0.9 1.5\n";
+
+/* Occlusion and gathering draw from the pixel and the sample alone: the
+ * same bytes on 1, 2 and 7 threads, with one sample a pixel or four. */
+static void indirect_bytes_do_not_depend_on_threads(void)
+{
+    Indirect in = {8, 1.5, 8, 2};
+    size_t size;
+    Image one, two, seven;
+    RayCounts counts = {0};
+
+    for (int spp = 1; spp <= 4; spp += 3) {
+        indirect_render(indirect_balls, in, spp, 1, &one, &counts);
+        indirect_render(indirect_balls, in, spp, 2, &two, &counts);
+        indirect_render(indirect_balls, in, spp, 7, &seven, &counts);
+        size = 3 * (size_t)one.width * (size_t)one.height;
+        CHECK(one.rgb && two.rgb && seven.rgb);
+        CHECK(one.rgb && two.rgb && memcmp(one.rgb, two.rgb, size) == 0);
+        CHECK(one.rgb && seven.rgb && memcmp(one.rgb, seven.rgb, size) == 0);
+        image_free(&one);
+        image_free(&two);
+        image_free(&seven);
+    }
+    CHECK(counts.occlusion > 0 && counts.gather > 0);
+}
+
+/* What hides nothing and what gathers nothing change no byte: occlusion
+ * within a distance shorter than any gap, gathering in a scene where
+ * every gathering ray escapes (one ball); and a scene without ambient
+ * light casts no occlusion ray. */
+static void indirect_that_finds_nothing_changes_nothing(void)
+{
+    static const char ball[] = "0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n12\n20 30 40\n"
+                               "-4 6 -3 255 240 220\nambient: 60 60 60\n"
+                               "sphere: 0 0 0 1 220 80 60 0\n";
+    static const char dark[] = "0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n12\n20 30 40\n"
+                               "-4 6 -3 255 240 220\n"
+                               "sphere: 0 0 0 1 220 80 60 0\nsphere: 0 -3 0 1.8 90 90 90 0\n";
+    Indirect off = {0, 1, 0, 1}, near = {16, 1e-9, 0, 1}, escaping = {0, 1, 16, 3};
+    Image a, b;
+    RayCounts counts = {0};
+
+    indirect_render(indirect_balls, off, 1, 2, &a, &counts);
+    indirect_render(indirect_balls, near, 1, 2, &b, &counts);
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, 3 * (size_t)a.width * (size_t)a.height) == 0);
+    image_free(&a);
+    image_free(&b);
+    indirect_render(ball, off, 1, 2, &a, &counts);
+    indirect_render(ball, escaping, 1, 2, &b, &counts);
+    CHECK(a.rgb && b.rgb && memcmp(a.rgb, b.rgb, 3 * (size_t)a.width * (size_t)a.height) == 0);
+    image_free(&a);
+    image_free(&b);
+    counts.occlusion = 0;
+    indirect_render(dark, near, 1, 2, &a, &counts);
+    CHECK_INT(0, (long long)counts.occlusion);
+    image_free(&a);
+}
+
+/* More bounces add light (each gathers what the last one reflected),
+ * and converge: the sixth bounce adds less than the second. */
+static void indirect_bounces_add_light_and_converge(void)
+{
+    Scene sc;
+    RayCounts counts = {0};
+    double last = 0, first_step = 0, step = 0;
+    Vec3 o = vec3(0, 2, -8), d = vec3(-0.3, -0.35, 1);
+
+    if (indirect_scene(indirect_balls, &sc) != 0)
+        return;
+    for (int b = 1; b <= 6; b++) {
+        Indirect in = {0, 1, 256, b};
+        Colour c = indirect_seen(&sc, in, o, d, &counts);
+        double sum = c.r + c.g + c.b;
+        CHECK(sum >= last);
+        step = sum - last;
+        if (b == 2)
+            first_step = step;
+        last = sum;
+    }
+    CHECK(step < first_step);
+    scene_free(&sc);
+}
+
+const TestCase indirect_tests[] = {
+    {"indirect_occlusion_follows_the_cosine_law", indirect_occlusion_follows_the_cosine_law},
+    {"indirect_gathering_from_a_uniformly_lit_ball", indirect_gathering_from_a_uniformly_lit_ball},
+    {"indirect_bytes_do_not_depend_on_threads", indirect_bytes_do_not_depend_on_threads},
+    {"indirect_that_finds_nothing_changes_nothing", indirect_that_finds_nothing_changes_nothing},
+    {"indirect_bounces_add_light_and_converge", indirect_bounces_add_light_and_converge},
+    {NULL, NULL},
+};
