@@ -1,7 +1,7 @@
 # raytrace: a ray tracer for the course scene format.
 #
-# make              build ./raytrace and ./raytrace-diff (with OpenMP when the
-#                   compiler has it)
+# make              build ./raytrace, ./raytrace-diff and ./raytrace-merge
+#                   (with OpenMP when the compiler has it)
 # make test         build and run every test (alias: make check)
 # make OPENMP=0     build without OpenMP
 # make REAL=float   build with single-precision geometry (not exact: see
@@ -86,15 +86,15 @@ TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 PREFIX ?= /usr/local
 BINDIR := $(PREFIX)/bin
 MANDIR := $(PREFIX)/share/man/man1
-PROGRAMS := raytrace raytrace-diff
-MANPAGES := docs/raytrace.1 docs/raytrace-diff.1
+PROGRAMS := raytrace raytrace-diff raytrace-merge
+MANPAGES := docs/raytrace.1 docs/raytrace-diff.1 docs/raytrace-merge.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
 
 .PHONY: all test check clean install uninstall gallery bench trade fuzz memcheck
 
-all: raytrace raytrace-diff
+all: raytrace raytrace-diff raytrace-merge
 
 raytrace: $(RAYTRACE_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
@@ -103,6 +103,9 @@ $(BUILD)/unit: $(TEST_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 raytrace-diff: $(BUILD)/cli/diff_main.o $(LIB_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+
+raytrace-merge: $(BUILD)/cli/merge_main.o $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
@@ -119,7 +122,7 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 
 # The unit tests, the fuzz targets on their seeds and past crashes, then the
 # command-line and render tests on the real binary.
-test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
+test: raytrace raytrace-diff raytrace-merge $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
 	$(BUILD)/unit
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
@@ -128,6 +131,7 @@ test: raytrace raytrace-diff $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $
 	sh tests/install.sh
 	sh tests/layers.sh
 	sh tests/jpeg.sh ./raytrace ./raytrace-diff
+	sh tests/tiles.sh ./raytrace ./raytrace-merge
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
@@ -229,6 +233,6 @@ memcheck: raytrace raytrace-diff
 check: test
 
 clean:
-	rm -rf $(BUILD) raytrace raytrace-diff
+	rm -rf $(BUILD) raytrace raytrace-diff raytrace-merge
 
 -include $(wildcard $(BUILD)/*/*.d $(BUILD)/tests/*.d $(BUILD)/float/*/*.d $(BUILD)/embree/*.d)

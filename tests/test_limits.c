@@ -210,8 +210,8 @@ static void limits_inflating_stops_at_the_size_promised(void)
 
 static void limits_image_needs_are_known_per_format(void)
 {
-    WriterOptions ppm = {FORMAT_PPM, 0, DEFLATE_FIXED, 90, 0}, pfm = {FORMAT_PFM, 0, DEFLATE_FIXED, 90, 0},
-                  png = {FORMAT_PNG, 0, DEFLATE_FIXED, 90, 0};
+    WriterOptions ppm = {FORMAT_PPM, 0, DEFLATE_FIXED, 90, 0, NULL}, pfm = {FORMAT_PFM, 0, DEFLATE_FIXED, 90, 0, NULL},
+                  png = {FORMAT_PNG, 0, DEFLATE_FIXED, 90, 0, NULL};
     size_t n = 3 * (size_t)32768 * 32768;
 
     CHECK(writer_memory(&ppm, 32768, 32768) == n);

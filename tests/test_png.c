@@ -111,7 +111,7 @@ static void png_round_trip_keeps_every_byte(void)
         CHECK(f != NULL);
         if (!f)
             return;
-        CHECK_INT(0, png_write(f, W, H, rgb, mode ? DEFLATE_FIXED : DEFLATE_STORED));
+        CHECK_INT(0, png_write(f, W, H, rgb, mode ? DEFLATE_FIXED : DEFLATE_STORED, NULL));
         fclose(f);
         CHECK_INT(0, png_read("build/round.png", &img, &err));
         CHECK_INT(W, img.width);
@@ -167,7 +167,7 @@ static void ppm_ascii_reads_back(void)
     CHECK(f != NULL);
     if (!f)
         return;
-    CHECK_INT(0, ppm_write_ascii(f, W, H, rgb));
+    CHECK_INT(0, ppm_write_ascii(f, W, H, rgb, NULL));
     fclose(f);
     CHECK_INT(0, ppm_read("build/ascii.ppm", &img, &err));
     for (int i = 0; img.samples && i < 3 * W * H; i++)

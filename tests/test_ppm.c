@@ -56,7 +56,7 @@ static void ppm_writer_bytes_are_exact(void)
     CHECK(f != NULL);
     if (!f)
         return;
-    CHECK_INT(0, ppm_write(f, img.width, img.height, img.rgb));
+    CHECK_INT(0, ppm_write(f, img.width, img.height, img.rgb, NULL));
     rewind(f);
     n = fread(buf, 1, sizeof buf, f);
     fclose(f);
@@ -104,7 +104,7 @@ static void ppm_reader_round_trip_and_p3(void)
     path = ppm_temp_file("", 0);
     CHECK(path != NULL);
     f = fopen(path, "wb");
-    CHECK_INT(0, ppm_write(f, img.width, img.height, img.rgb));
+    CHECK_INT(0, ppm_write(f, img.width, img.height, img.rgb, NULL));
     fclose(f);
     CHECK_INT(0, ppm_read(path, &in, &err));
     CHECK_INT(6, in.width);

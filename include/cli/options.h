@@ -36,6 +36,9 @@ typedef struct {
     int gi_bounces;          /* --gi-bounces; 0: the scene's, else 1 */
     int jpeg_quality;        /* --jpeg-quality, 1..100 (default 90) */
     int jpeg_444;            /* --jpeg-subsampling 444: chroma kept whole */
+    const char *tile;        /* --tile K/N as given, or NULL */
+    int tile_k, tile_n;      /* its K and N, 1 <= K <= N <= TILE_MAX */
+    int tile_layout;         /* --tile-layout: a TileLayout (tile.h) */
 } Options;
 
 /* What options_parse() found the command line asks for. */
@@ -53,7 +56,8 @@ typedef enum {
 OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
                             size_t msg_size);
 
-/* Returns the text printed by --help. */
-const char *options_help(void);
+/* Returns the text printed by --help, in parts (NULL after the last):
+ * C11 compilers need only take string literals of 4095 bytes. */
+const char *const *options_help(void);
 
 #endif

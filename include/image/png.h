@@ -18,9 +18,11 @@
 #include "image/deflate.h"
 
 /* Writes the width x height image rgb (rows top to bottom, 3 bytes a
- * pixel) to f as a PNG compressed with mode; returns 0, or -1 with errno
- * set (ENOMEM when memory runs out). */
-int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateMode mode);
+ * pixel) to f as a PNG compressed with mode, with note (unless NULL) as a
+ * tEXt chunk of keyword "Comment" before the pixels; returns 0, or -1 with
+ * errno set (ENOMEM when memory runs out). */
+int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateMode mode,
+              const char *note);
 
 typedef struct {
     int width, height;  /* pixels */

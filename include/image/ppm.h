@@ -14,14 +14,16 @@
 
 #include "base/error.h"
 
-/* Writes a P6 image of width x height pixels from rgb to f; returns 0, or -1
- * with errno set when a write fails (the caller closes f either way). */
-int ppm_write(FILE *f, int width, int height, const unsigned char *rgb);
+/* Writes a P6 image of width x height pixels from rgb to f, with the
+ * one-line comment note after the magic number unless it is NULL; returns
+ * 0, or -1 with errno set when a write fails (the caller closes f either
+ * way). */
+int ppm_write(FILE *f, int width, int height, const unsigned char *rgb, const char *note);
 
 /* Writes the same image as ASCII P3 ("P3\n<width> <height>\n255\n", then
  * the samples in decimal, one pixel's three a group, at most 70 characters
  * a line); returns 0, or -1 with errno set. */
-int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb);
+int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb, const char *note);
 
 typedef struct {
     int width;               /* pixels per row */

@@ -32,6 +32,9 @@ typedef struct {
     void *progress_ctx;      /* passed to progress */
     Indirect indirect;       /* ambient occlusion and global illumination
                                 (tracer.h); zeros: none */
+    int row_first, row_step; /* the image's row y is the picture's row
+                                row_first + y row_step (a tile, tile.h);
+                                row_step 0: the whole picture */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's

@@ -11,6 +11,7 @@
 #define RAYTRACE_SCENE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "geometry/cone.h"
 #include "geometry/cube.h"
@@ -156,6 +157,9 @@ typedef struct Scene {
                                enlarged a tiny scene */
     size_t memory_limit;    /* bytes the scene's arrays, meshes being read and
                                hierarchy may take together; 0: no limit */
+    uint64_t source_hash;   /* fingerprint of what it was read from: its
+                               texture texels, mesh files and, once read
+                               (load.h), its text and format */
 } Scene;
 
 /* What scene_add_*() and scene_build_accel() return when the memory limit

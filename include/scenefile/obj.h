@@ -16,6 +16,7 @@
 #define RAYTRACE_OBJ_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "base/error.h"
 #include "math/vec3.h"
@@ -34,6 +35,7 @@ typedef struct ObjMesh {
     size_t vn_count;
     ObjCorner (*tri)[3]; /* triangles, after fan triangulation */
     size_t tri_count;
+    uint64_t hash;    /* the fingerprint of the file's bytes (hash.h) */
 } ObjMesh;
 
 /* Reads the OBJ file at path into *mesh, its arrays taking at most

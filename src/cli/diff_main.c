@@ -75,7 +75,7 @@ static int diff_number(const char *text, double *out)
 static int diff_write_image(const char *path, const Picture *a, const Picture *b,
                             double tolerance)
 {
-    WriterOptions wopts = {writer_format_for(path), 0, DEFLATE_FIXED, 95, 1};
+    WriterOptions wopts = {writer_format_for(path), 0, DEFLATE_FIXED, 95, 1, NULL};
     Image img;
     OutFile out;
     Error err;

@@ -18,10 +18,12 @@
 #include "accel/bvh.h"
 #include "base/error.h"
 #include "base/file.h"
+#include "base/hash.h"
 #include "base/outfile.h"
 #include "base/threads.h"
 #include "cli/options.h"
 #include "image/image.h"
+#include "image/tile.h"
 #include "image/writer.h"
 #include "math/number.h"
 #include "render/render.h"
@@ -321,9 +323,9 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, Scene *
 /* Allocates *img for scene's camera, keeping its linear colours for PFM;
  * returns 0, or -1 with *err set (and *img empty). */
 static int main_image(const Options *opts, const WriterOptions *wopts, const Scene *scene,
-                      Image *img, Error *err)
+                      int rows, Image *img, Error *err)
 {
-    int w = scene->camera.width, h = scene->camera.height;
+    int w = scene->camera.width, h = rows;
 
     if (image_init(img, w, h) == 0 && (wopts->format != FORMAT_PFM || image_keep_linear(img) == 0))
         return 0;
@@ -372,16 +374,51 @@ static void main_indirect(const Options *opts, const Scene *scene, Indirect *in)
                                              : 1;
 }
 
+/* Returns the fingerprint of a render of scene with ropts: what it was read
+ * from and every option that changes its pixels, so that tiles of
+ * different renders are never merged. */
+static uint64_t main_fingerprint(const Scene *scene, const RenderOptions *ropts)
+{
+    uint64_t h = hash_u64(HASH_START, scene->source_hash), distance;
+    double d = ropts->indirect.ao_distance;
+
+    memcpy(&distance, &d, sizeof distance);
+    h = hash_u64(h, (uint64_t)ropts->max_depth);
+    h = hash_u64(h, (uint64_t)ropts->samples);
+    h = hash_u64(h, (uint64_t)ropts->indirect.ao_samples);
+    h = hash_u64(h, ropts->indirect.ao_samples ? distance : 0);
+    h = hash_u64(h, (uint64_t)ropts->indirect.gi_samples);
+    h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
+    return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
+}
+
+/* Makes *tile opts' tile of the scene's picture rendered with ropts;
+ * returns 0, or -1 with *err when it would hold no row. */
+static int main_tile(const Options *opts, const Scene *scene, const RenderOptions *ropts,
+                     Tile *tile, Error *err)
+{
+    if (tile_make(tile, opts->tile_k, opts->tile_n, (TileLayout)opts->tile_layout,
+                  scene->camera.width, scene->camera.height, main_fingerprint(scene, ropts)) == 0)
+        return 0;
+    error_set(err, opts->scene_path,
+              "--tile %d/%d: the picture has %d rows, so at most %d tiles (each holds whole rows)",
+              opts->tile_k, opts->tile_n, scene->camera.height, scene->camera.height);
+    return -1;
+}
+
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
     WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
                            opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED, opts->jpeg_quality,
-                           opts->jpeg_444};
+                           opts->jpeg_444, NULL};
     /* The linear colours of PFM would show what the cut-off leaves out. */
     RenderOptions ropts = {opts->max_depth, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL, {0, 0, 0, 0}};
+                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0};
     RayCounts counts = {0};
+    Tile tile;
+    char record[TILE_RECORD_MAX];
+    int rows;
     double start = main_now(), read_time, accel_time, render_time, write_time;
     Scene scene;
     Image img;
@@ -401,11 +438,21 @@ static int main_render(const Options *opts)
         goto fail_scene;
     accel_time = main_now() - start - read_time;
     ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
+    rows = scene.camera.height;
     main_indirect(opts, &scene, &ropts.indirect);
     /* Gathered light has no bound the cut-off could use. */
     if (ropts.indirect.gi_samples > 0)
         ropts.cutoff = 0;
-    if (main_image(opts, &wopts, &scene, &img, &err) != 0)
+    if (opts->tile) {
+        if (main_tile(opts, &scene, &ropts, &tile, &err) != 0)
+            goto fail_scene;
+        tile_record(&tile, record);
+        wopts.note = record;
+        ropts.row_first = tile.first;
+        ropts.row_step = tile.step;
+        rows = tile.count;
+    }
+    if (main_image(opts, &wopts, &scene, rows, &img, &err) != 0)
         goto fail_scene;
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
@@ -466,7 +513,8 @@ int main(int argc, char **argv)
         threads_use(opts.threads); /* -j: reading, building and rendering */
     switch (action) {
     case OPTIONS_HELP:
-        fputs(options_help(), stdout);
+        for (const char *const *part = options_help(); *part; part++)
+            fputs(*part, stdout);
         return 0;
     case OPTIONS_VERSION:
 #ifdef RAYTRACE_REAL_FLOAT

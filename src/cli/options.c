@@ -1,11 +1,13 @@
 /* options.c: command-line parsing (see options.h). */
 #include "cli/options.h"
 
+#include <ctype.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "image/tile.h"
 #include "image/writer.h"
 #include "math/number.h"
 #include "render/sampler.h"
@@ -14,74 +16,83 @@
 
 enum { OPTIONS_MAX_THREADS = 1024 };
 
-const char *options_help(void)
+const char *const *options_help(void)
 {
-    return "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
-           "       raytrace --check SCENE\n"
-           "       raytrace --save OUT SCENE\n"
-           "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
-           "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
-           "PNG, PFM or JPEG image, chosen by OUTPUT's extension (.ppm, .png, .pfm,\n"
-           ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG or JPEG files.\n"
-           "SCENE may be '-' for standard input,\n"
-           "OUTPUT '-' for standard output. OUTPUT is replaced only when the whole\n"
-           "image has been written.\n"
-           "\n"
-           "Options:\n"
-           "  -d, --max-depth N  trace mirror and refracted rays down to depth N,\n"
-           "                     0 to 1000 (default 10; 0 traces none)\n"
-           "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
-           "                     (anti-aliasing; a lens: record blurs with them);\n"
-           "                     default: the scene's samples: record, else 1\n"
-           "  --cutoff L         leave out mirror, refracted and shadow rays that could\n"
-           "                     add less than L levels (0 to 255, default 0.1) to a\n"
-           "                     pixel; in pixels near a rounding boundary they are\n"
-           "                     traced after all, with smaller cut-offs, then in\n"
-           "                     full, so the bytes never change (0: off)\n"
-           "  --ao N             ambient occlusion: N rays per point the camera sees\n"
-           "                     (0 to 4096) darken its ambient light by the share\n"
-           "                     they find hidden (default: the scene's, else 0)\n"
-           "  --ao-distance D    what is nearer than D hides (default: the scene's,\n"
-           "                     else a tenth of the diagonal of its objects' box)\n"
-           "  --gi N             global illumination: N rays per point the camera\n"
-           "                     sees (0 to 4096) gather the light other surfaces\n"
-           "                     reflect onto its diffuse part (default: 0)\n"
-           "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
-           "  --memory-limit M   fail early, before allocating, when the scene, its\n"
-           "                     hierarchy and the image would need more than M\n"
-           "                     bytes (suffix K, M or G: powers of 1024; default\n"
-           "                     4G; 0: no limit)\n"
-           "  -j, --threads N    read, build and render with N threads, 1 to 1024\n"
-           "                     (default: one per processor; ignored in builds\n"
-           "                     without OpenMP)\n"
-           "  --format F         write F: ppm, png, pfm (linear floats, unclamped) or\n"
-           "                     jpeg (lossy: smaller files, not the exact bytes)\n"
-           "  --jpeg-quality Q   JPEG quality, 1 to 100 (default 90)\n"
-           "  --jpeg-subsampling S  JPEG chroma: 420 (halved both ways, the default)\n"
-           "                     or 444 (whole: sharp coloured edges)\n"
-           "  --ascii            write PPM as ASCII (P3) instead of binary (P6)\n"
-           "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
-           "                     default) or stored (no compression, faster)\n"
-           "  --check            read SCENE, report any error, render nothing\n"
-           "  --save OUT         read SCENE, a keyword- or MPL-format scene, and write\n"
-           "                     it to OUT in its format, every number exact; render\n"
-           "                     nothing\n"
-           "  --scene-format F   read SCENE as F: course, keyword, mpl, or auto (the\n"
-           "                     default: mpl when its first element is m, p, l or c,\n"
-           "                     keyword when it is another word, else course)\n"
-           "  --no-accel         test every ray against every object (no bounding\n"
-           "                     volume hierarchy): slower, the same image\n"
-           "  -v, --verbose      after rendering, print the image size, threads, rays\n"
-           "                     cast by kind, time and speed\n"
-           "  -q, --quiet        print nothing on success, not even the progress bar\n"
-           "  -h, --help         print this help and exit\n"
-           "  -V, --version      print the version and exit\n"
-           "\n"
-           "Exit status: 0 the image was written; 1 the scene or an output could not be\n"
-           "read or written (the message says where); 2 the command line is wrong;\n"
-           "130 or 143 interrupted by SIGINT or SIGTERM.\n"
-           "\n"
-           "The scene formats are described in docs/scene-format.md.\n";
+    static const char *const parts[] = {
+        "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
+        "       raytrace --check SCENE\n"
+        "       raytrace --save OUT SCENE\n"
+        "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
+        "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
+        "PNG, PFM or JPEG image, chosen by OUTPUT's extension (.ppm, .png, .pfm,\n"
+        ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG\n"
+        "or JPEG files. SCENE may be '-' for standard input, OUTPUT '-' for\n"
+        "standard output. OUTPUT is replaced only when the whole image has been\n"
+        "written.\n"
+        "\n"
+        "Options:\n",
+        "  -d, --max-depth N  trace mirror and refracted rays down to depth N,\n"
+        "                     0 to 1000 (default 10; 0 traces none)\n"
+        "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
+        "                     (anti-aliasing; a lens: record blurs with them);\n"
+        "                     default: the scene's samples: record, else 1\n"
+        "  --cutoff L         leave out mirror, refracted and shadow rays that could\n"
+        "                     add less than L levels (0 to 255, default 0.1) to a\n"
+        "                     pixel; in pixels near a rounding boundary they are\n"
+        "                     traced after all, with smaller cut-offs, then in\n"
+        "                     full, so the bytes never change (0: off)\n"
+        "  --ao N             ambient occlusion: N rays per point the camera sees\n"
+        "                     (0 to 4096) darken its ambient light by the share\n"
+        "                     they find hidden (default: the scene's, else 0)\n"
+        "  --ao-distance D    what is nearer than D hides (default: the scene's,\n"
+        "                     else a tenth of the diagonal of its objects' box)\n"
+        "  --gi N             global illumination: N rays per point the camera\n"
+        "                     sees (0 to 4096) gather the light other surfaces\n"
+        "                     reflect onto its diffuse part (default: 0)\n"
+        "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
+        "  --tile K/N         render only the K-th of N tiles (1 <= K <= N <= 65536)\n"
+        "                     to OUTPUT, a PPM or PNG that records where it\n"
+        "                     belongs; raytrace-merge puts the tiles together\n"
+        "  --tile-layout L    rows (the default: every N-th row, even loads) or\n"
+        "                     bands (N pieces, top to bottom)\n"
+        "  --memory-limit M   fail early, before allocating, when the scene, its\n"
+        "                     hierarchy and the image would need more than M\n"
+        "                     bytes (suffix K, M or G: powers of 1024; default\n"
+        "                     4G; 0: no limit)\n"
+        "  -j, --threads N    read, build and render with N threads, 1 to 1024\n"
+        "                     (default: one per processor; ignored in builds\n"
+        "                     without OpenMP)\n",
+        "  --format F         write F: ppm, png, pfm (linear floats, unclamped) or\n"
+        "                     jpeg (lossy: smaller files, not the exact bytes)\n"
+        "  --jpeg-quality Q   JPEG quality, 1 to 100 (default 90)\n"
+        "  --jpeg-subsampling S  JPEG chroma: 420 (halved both ways, the default)\n"
+        "                     or 444 (whole: sharp coloured edges)\n"
+        "  --ascii            write PPM as ASCII (P3) instead of binary (P6)\n"
+        "  --png-deflate M    compress PNG with M: fixed (Huffman codes, the\n"
+        "                     default) or stored (no compression, faster)\n"
+        "  --check            read SCENE, report any error, render nothing\n"
+        "  --save OUT         read SCENE, a keyword- or MPL-format scene, and write\n"
+        "                     it to OUT in its format, every number exact; render\n"
+        "                     nothing\n"
+        "  --scene-format F   read SCENE as F: course, keyword, mpl, or auto (the\n"
+        "                     default: mpl when its first element is m, p, l or c,\n"
+        "                     keyword when it is another word, else course)\n"
+        "  --no-accel         test every ray against every object (no bounding\n"
+        "                     volume hierarchy): slower, the same image\n"
+        "  -v, --verbose      after rendering, print the image size, threads, rays\n"
+        "                     cast by kind, time and speed\n"
+        "  -q, --quiet        print nothing on success, not even the progress bar\n"
+        "  -h, --help         print this help and exit\n"
+        "  -V, --version      print the version and exit\n"
+        "\n"
+        "Exit status: 0 the image was written; 1 the scene or an output could not be\n"
+        "read or written (the message says where); 2 the command line is wrong;\n"
+        "130 or 143 interrupted by SIGINT or SIGTERM.\n"
+        "\n"
+        "The scene formats are described in docs/scene-format.md.\n",
+        NULL};
+
+    return parts;
 }
 
 /* Reads the whole number in text, between lo and hi, into *out. */
@@ -164,6 +175,7 @@ static const OptionWord options_formats[] = {{"ppm", FORMAT_PPM},   {"png", FORM
                                              {"pfm", FORMAT_PFM},   {"jpeg", FORMAT_JPEG},
                                              {"jpg", FORMAT_JPEG}, {NULL, 0}};
 static const OptionWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
+static const OptionWord options_layouts[] = {{"rows", TILE_ROWS}, {"bands", TILE_BANDS}, {NULL, 0}};
 static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
 static const OptionWord options_scene_formats[] = {{"course", SCENE_COURSE},
                                                     {"keyword", SCENE_KEYWORD},
@@ -191,6 +203,8 @@ static const OptionSpec options_table[] = {
     {"--memory-limit", OPT(NULL, OPTION_SIZE, memory_limit), 0, 0, NULL, 0},
     {"--jpeg-quality", OPT(NULL, OPTION_INT, jpeg_quality), 1, 100, NULL, 0},
     {"--jpeg-subsampling", OPT(NULL, OPTION_WORD, jpeg_444), 0, 0, options_subsampling, 0},
+    {"--tile", OPT(NULL, OPTION_TEXT, tile), 0, 0, NULL, 0},
+    {"--tile-layout", OPT(NULL, OPTION_WORD, tile_layout), 0, 0, options_layouts, 0},
     {"--ao", OPT(NULL, OPTION_INT, ao), 0, SCENE_MAX_INDIRECT, NULL, 0},
     {"--ao-distance", OPT(NULL, OPTION_REAL, ao_distance), 0, 1e300, NULL, 0},
     {"--gi", OPT(NULL, OPTION_INT, gi), 0, SCENE_MAX_INDIRECT, NULL, 0},
@@ -328,6 +342,32 @@ static int options_one(Options *opts, int argc, char **argv, int *i, OptionsActi
     return -1;
 }
 
+/* Reads --tile K/N into opts (1 <= K <= N <= TILE_MAX), and checks that
+ * the output can keep a tile's record; returns 0, or -1 with msg set. */
+static int options_tile(Options *opts, char *msg, size_t msg_size)
+{
+    int k, n, end = 0;
+
+    if (sscanf(opts->tile, "%d/%d%n", &k, &n, &end) != 2 || opts->tile[end] != '\0' ||
+        !isdigit((unsigned char)opts->tile[0]) || !(k >= 1 && k <= n && n <= TILE_MAX)) {
+        snprintf(msg, msg_size,
+                 "option '--tile' takes K/N, the K-th of N tiles with 1 <= K <= N <= %d, "
+                 "found '%.40s'",
+                 TILE_MAX, opts->tile);
+        return -1;
+    }
+    if (opts->output_path && opts->format != FORMAT_PPM && opts->format != FORMAT_PNG) {
+        snprintf(msg, msg_size,
+                 "--tile writes PPM or PNG tiles, which raytrace-merge puts together in any "
+                 "format: not %s",
+                 opts->format == FORMAT_PFM ? "PFM" : "JPEG");
+        return -1;
+    }
+    opts->tile_k = k;
+    opts->tile_n = n;
+    return 0;
+}
+
 OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
                             size_t msg_size)
 {
@@ -392,5 +432,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         snprintf(msg, msg_size, "--ascii applies to PPM output only");
         return OPTIONS_USAGE;
     }
+    if (opts->tile && options_tile(opts, msg, msg_size) != 0)
+        return OPTIONS_USAGE;
     return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;
 }

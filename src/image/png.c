@@ -122,7 +122,8 @@ static void png_filter(const unsigned char *rgb, int width, int height, int choo
     }
 }
 
-int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateMode mode)
+int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateMode mode,
+              const char *note)
 {
     size_t raw_len = (3 * (size_t)width + 1) * (size_t)height;
     unsigned char *raw = malloc(raw_len), ihdr[13];
@@ -147,6 +148,21 @@ int png_write(FILE *f, int width, int height, const unsigned char *rgb, DeflateM
     ihdr[12] = 0; /* not interlaced */
     if (fwrite(png_signature, 1, 8, f) != 8 || png_chunk(f, "IHDR", ihdr, 13) != 0)
         goto done;
+    if (note) {
+        size_t n = strlen(note);
+        unsigned char *text = malloc(8 + n);
+        int bad;
+        if (!text) {
+            errno = ENOMEM;
+            goto done;
+        }
+        memcpy(text, "Comment", 8); /* the keyword and its NUL */
+        memcpy(text + 8, note, n);
+        bad = png_chunk(f, "tEXt", text, 8 + n) != 0;
+        free(text);
+        if (bad)
+            goto done;
+    }
     for (size_t off = 0; off < z.len; off += PNG_IDAT_MAX) {
         size_t n = z.len - off < PNG_IDAT_MAX ? z.len - off : PNG_IDAT_MAX;
         if (png_chunk(f, "IDAT", z.data + off, n) != 0)

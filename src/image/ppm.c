@@ -9,23 +9,25 @@
 #include "base/file.h"
 #include "image/image.h"
 
-int ppm_write(FILE *f, int width, int height, const unsigned char *rgb)
+int ppm_write(FILE *f, int width, int height, const unsigned char *rgb, const char *note)
 {
     size_t n = image_size(width, height);
 
-    if (fprintf(f, "P6\n%d %d\n255\n", width, height) < 0)
+    if (fprintf(f, "P6\n%s%s%s%d %d\n255\n", note ? "# " : "", note ? note : "",
+                note ? "\n" : "", width, height) < 0)
         return -1;
     if (fwrite(rgb, 1, n, f) != n)
         return -1;
     return 0;
 }
 
-int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb)
+int ppm_write_ascii(FILE *f, int width, int height, const unsigned char *rgb, const char *note)
 {
     size_t n = (size_t)width * (size_t)height;
     int col = 0;
 
-    if (fprintf(f, "P3\n%d %d\n255\n", width, height) < 0)
+    if (fprintf(f, "P3\n%s%s%s%d %d\n255\n", note ? "# " : "", note ? note : "",
+                note ? "\n" : "", width, height) < 0)
         return -1;
     for (size_t k = 0; k < n; k++) {
         const unsigned char *p = rgb + 3 * k;

@@ -53,14 +53,14 @@ int writer_write(FILE *f, const Image *img, const WriterOptions *opts)
 {
     switch (opts->format) {
     case FORMAT_PNG:
-        return png_write(f, img->width, img->height, img->rgb, opts->png_deflate);
+        return png_write(f, img->width, img->height, img->rgb, opts->png_deflate, opts->note);
     case FORMAT_PFM:
         return pfm_write(f, img->width, img->height, img->linear);
     case FORMAT_JPEG:
         return jpeg_write(f, img->width, img->height, img->rgb, opts->jpeg_quality,
                           !opts->jpeg_444);
     default:
-        return opts->ascii ? ppm_write_ascii(f, img->width, img->height, img->rgb)
-                           : ppm_write(f, img->width, img->height, img->rgb);
+        return opts->ascii ? ppm_write_ascii(f, img->width, img->height, img->rgb, opts->note)
+                           : ppm_write(f, img->width, img->height, img->rgb, opts->note);
     }
 }

@@ -159,10 +159,12 @@ static void render_tile(const Tracer *t, const RenderOptions *opts, const Sample
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
 
     for (int y = y0; y < y1; y++) {
-        RenderRow row = {columns, camera_row(&t->scene->camera, y + 0.5)};
+        /* The picture's row: the image's, or a tile's (tile.h). */
+        int py = opts->row_step > 0 ? opts->row_first + y * opts->row_step : y;
+        RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
 
         for (int x = x0; x < x1; x++)
-            image_set(img, x, y, render_pixel(t, opts, g, &row, x, y));
+            image_set(img, x, y, render_pixel(t, opts, g, &row, x, py));
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include "accel/bvh.h"
 #include "base/grow.h"
+#include "base/hash.h"
 
 void scene_init(Scene *scene)
 {
@@ -577,6 +578,11 @@ int scene_add_texture(Scene *scene, Texture *tex)
         return rc;
     }
     scene->textures[scene->texture_count] = *tex;
+    scene->source_hash = hash_u64(hash_u64(scene->source_hash, (uint64_t)tex->width),
+                                  (uint64_t)tex->height);
+    scene->source_hash = hash_bytes(scene->source_hash, tex->texels,
+                                    3 * (size_t)tex->width * (size_t)tex->height *
+                                        sizeof *tex->texels);
     return (int)scene->texture_count++;
 }
 

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "base/hash.h"
 #include "math/number.h"
 #include "scenefile/course.h"
 #include "scenefile/keyword.h"
@@ -47,13 +48,19 @@ SceneFormat load_detect(const char *text, size_t len)
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
                     size_t memory_limit, Scene *scene, Error *err)
 {
+    int rc;
+
     if (format == SCENE_AUTO)
         format = load_detect(text, len);
     if (format == SCENE_KEYWORD)
-        return keyword_parse_text(name, text, len, memory_limit, scene, err);
-    if (format == SCENE_MPL)
-        return mpl_parse_text(name, text, len, memory_limit, scene, err);
-    return course_parse_text(name, text, len, memory_limit, scene, err);
+        rc = keyword_parse_text(name, text, len, memory_limit, scene, err);
+    else if (format == SCENE_MPL)
+        rc = mpl_parse_text(name, text, len, memory_limit, scene, err);
+    else
+        rc = course_parse_text(name, text, len, memory_limit, scene, err);
+    if (rc == 0)
+        scene->source_hash = hash_bytes(hash_u64(scene->source_hash, (uint64_t)format), text, len);
+    return rc;
 }
 
 int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,

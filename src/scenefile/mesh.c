@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "base/hash.h"
 #include "base/threads.h"
 
 /* Meshes of fewer triangles are made on one thread. */
@@ -75,6 +76,7 @@ static size_t mesh_fill(Triangle *tris, TriangleShading *sh, void *ctx)
 
 long mesh_add(Scene *scene, const ObjMesh *m, const Material *mat)
 {
+    scene->source_hash = hash_u64(scene->source_hash, m->hash);
     long added = 0, material;
     size_t left = scene_memory_left(scene), held = obj_memory(m);
     int shaded = m->vn_count > 0 || m->vt_count > 0, rc;

@@ -9,6 +9,7 @@
 
 #include "base/file.h"
 #include "base/grow.h"
+#include "base/hash.h"
 #include "base/threads.h"
 #include "math/number.h"
 #include "scenefile/lex.h"
@@ -293,6 +294,7 @@ int obj_load(const char *path, size_t max_bytes, ObjMesh *mesh, Error *err)
     if (file_read_all(path, &data, &len, err) != 0)
         return -1;
     rc = obj_parse(file_display_name(path), data, len, max_bytes, mesh, err);
+    mesh->hash = hash_bytes(HASH_START, data, len);
     free(data);
     return rc;
 }
