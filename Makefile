@@ -227,8 +227,8 @@ $(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene
 fuzz: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 	sh tests/fuzz/fuzz.sh $(BUILD) $(FUZZ_TARGETS)
 
-memcheck: raytrace raytrace-diff
-	sh tests/memcheck.sh ./raytrace ./raytrace-diff
+memcheck: raytrace raytrace-diff raytrace-merge
+	sh tests/memcheck.sh ./raytrace ./raytrace-diff ./raytrace-merge
 
 check: test
 

@@ -3,10 +3,12 @@
 # (`make memcheck`, and CI): no invalid read or write, no use of an
 # uninitialised value, no leak, on the success paths and the failure ones.
 #
-# Usage: sh tests/memcheck.sh RAYTRACE RAYTRACE-DIFF   (from the repository root)
+# Usage: sh tests/memcheck.sh RAYTRACE RAYTRACE-DIFF [RAYTRACE-MERGE]
+#        (from the repository root)
 
 RT=$1
 DIFF=$2
+MERGE=${3:-./raytrace-merge}
 T=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-memcheck.XXXXXX") || exit 2
 passed=0
 failed=0
@@ -37,6 +39,8 @@ trap 'rm -rf "$T" scenes/.memcheck-*' EXIT
 
 command -v valgrind >/dev/null || { echo "memcheck: valgrind is not installed" >&2; exit 1; }
 for s in course keyword textures glass; do small "scenes/$s.txt" 48; done
+sed 's/^c Camera \(.*\) 640 400$/c Camera \1 48 30/' scenes/materials.txt >scenes/.memcheck-materials.txt
+sed 's/^c Camera \(.*\) 400 400$/c Camera \1 24 24/' scenes/indirect.txt >scenes/.memcheck-indirect.txt
 run "course scene" 0 "$RT" -q -j 2 scenes/course.txt "$T/course.ppm"
 run "keyword scene, mesh and hierarchy" 0 "$RT" -q -j 2 scenes/.memcheck-keyword.txt "$T/keyword.png"
 run "textures, samples, PFM" 0 "$RT" -q -j 1 --spp 2 scenes/.memcheck-textures.txt "$T/textures.pfm"
@@ -51,6 +55,14 @@ run "a large field read on every thread" 0 "$RT" -q -j 2 "$T/field.txt" "$T/fiel
 sed '33000s/0.25/x/' "$T/field.txt" >"$T/field-bad.txt"
 run "a fault in a large field" 1 "$RT" -q -j 2 "$T/field-bad.txt" "$T/field.ppm"
 run "save a keyword scene" 0 "$RT" --save "$T/saved.txt" scenes/keyword.txt
+run "MPL scene, JPEG textures, every material, JPEG out" 0 "$RT" -q -j 2 \
+    scenes/.memcheck-materials.txt "$T/materials.jpg"
+run "ambient occlusion and global illumination" 0 "$RT" -q -j 2 --ao 4 --gi 3 --gi-bounces 2 \
+    scenes/.memcheck-indirect.txt "$T/indirect.ppm"
+run "a tile" 0 "$RT" -q -j 2 --tile 1/2 scenes/.memcheck-glass.txt "$T/tile-1.ppm"
+"$RT" -q --tile 2/2 scenes/.memcheck-glass.txt "$T/tile-2.png"
+run "raytrace-merge" 0 "$MERGE" -q "$T/merged.png" "$T/tile-2.png" "$T/tile-1.ppm"
+run "raytrace-merge, a tile missing" 1 "$MERGE" -q "$T/merged.png" "$T/tile-2.png"
 run "a scene fault" 1 "$RT" -q tests/hostile/mesh-bad-index.txt "$T/bad.ppm"
 run "a memory limit" 1 "$RT" -q --memory-limit 1K scenes/mirrors.txt "$T/bad.ppm"
 run "an unwritable output" 1 "$RT" -q scenes/course.txt "$T/no/dir/out.ppm"
