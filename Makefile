@@ -132,6 +132,7 @@ test: raytrace raytrace-diff raytrace-merge $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUI
 	sh tests/layers.sh
 	sh tests/jpeg.sh ./raytrace ./raytrace-diff
 	sh tests/tiles.sh ./raytrace ./raytrace-merge
+	sh tests/faults.sh ./raytrace
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'

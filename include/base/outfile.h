@@ -1,9 +1,14 @@
 /*
  * outfile.h: writing an output file all at once or not at all.
  *
- * A regular output file is written to a new temporary file beside it, which
- * replaces it (rename) only when everything was written and flushed: a
- * failed or interrupted render leaves an existing file untouched. "-" means
+ * A regular output file is written to a new file without a name (Linux's
+ * O_TMPFILE) in its directory, which is given the output's name (linkat,
+ * and rename over an existing file) only when everything was written and
+ * synced, then the directory synced: a failed, interrupted or killed
+ * render leaves an existing file untouched and nothing beside it. Where
+ * unnamed files are not possible, a named temporary file beside the
+ * output takes their place (removed on failure and on SIGINT/SIGTERM; a
+ * SIGKILL leaves it). "-" means
  * standard output, and an existing file that is not a regular file (a
  * device such as /dev/null, a FIFO) is written in place, since it cannot be
  * replaced.
@@ -21,7 +26,11 @@ typedef struct {
     FILE *fp;                    /* where to write; NULL when not open */
     char path[OUTFILE_PATH_MAX]; /* the file to produce, as named by the user */
     char dest[OUTFILE_PATH_MAX]; /* what the rename replaces (links resolved) */
-    char temp[OUTFILE_PATH_MAX]; /* temporary file, "" when writing in place */
+    char temp[OUTFILE_PATH_MAX]; /* temporary file, "" when writing in place
+                                    or to an unnamed file */
+    char dir[OUTFILE_PATH_MAX];  /* the destination's directory */
+    int unnamed;                 /* 1: fp is an unnamed file (O_TMPFILE)
+                                    that commit links to dest */
     int is_stdout;               /* 1 when writing to standard output */
 } OutFile;
 

@@ -1,10 +1,14 @@
 /* outfile.c: all-or-nothing output files (see outfile.h). */
-#define _XOPEN_SOURCE 700 /* POSIX.1-2008 with XSI: mkstemp, fchmod, realpath */
+/* POSIX.1-2008 with XSI (mkstemp, fchmod, realpath) and, on Linux,
+ * O_TMPFILE and linkat()'s AT_SYMLINK_FOLLOW. */
+#define _GNU_SOURCE
 
 #include "base/outfile.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -40,6 +44,33 @@ static mode_t outfile_mode(const struct stat *existing, int exists)
     mask = umask(0);
     umask(mask);
     return 0666 & ~mask;
+}
+
+/* Opens an unnamed file in directory dir with mode (Linux's O_TMPFILE):
+ * nothing is in the directory until outfile_commit() links it there, so a
+ * process killed before then leaves nothing. Returns its descriptor, or -1
+ * (where the system or the file system cannot). */
+static int outfile_unnamed(const char *dir, mode_t mode)
+{
+#ifdef O_TMPFILE
+    int fd;
+
+    /* Naming it later goes through /proc/self/fd. */
+    if (access("/proc/self/fd", F_OK) != 0)
+        return -1;
+    fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
+
+    /* O_TMPFILE ignores the umask's effect on the mode we ask for exactly. */
+    if (fd >= 0 && fchmod(fd, mode) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+#else
+    (void)dir;
+    (void)mode;
+    return -1;
+#endif
 }
 
 int outfile_open(OutFile *out, const char *path, Error *err)
@@ -83,6 +114,16 @@ int outfile_open(OutFile *out, const char *path, Error *err)
         out->temp[0] = '\0';
         return -1;
     }
+    strcpy(out->dir, dir);
+    fd = outfile_unnamed(dir, outfile_mode(&st, exists));
+    if (fd >= 0 && (out->fp = fdopen(fd, "wb")) != NULL) {
+        out->unnamed = 1;
+        out->temp[0] = '\0';
+        return 0;
+    }
+    if (fd >= 0)
+        close(fd);
+    /* No O_TMPFILE here: a named temporary file beside the output. */
     fd = mkstemp(out->temp);
     if (fd < 0) {
         error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(errno));
@@ -99,27 +140,84 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     return 0;
 }
 
+/* Syncs directory dir, so that a name just made in it survives a crash
+ * (where the file system allows: errors are not the caller's concern). */
+static void outfile_sync_dir(const char *dir)
+{
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+
+    if (fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+}
+
+/* Gives out's unnamed file its name: linked straight to the destination
+ * when there is none yet, else linked to a temporary name beside it and
+ * renamed over it (rename replaces at once; linkat does not). Returns 0, or
+ * -1 with errno set and no name left behind. */
+static int outfile_link(OutFile *out)
+{
+    char proc[64];
+
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(out->fp));
+    if (linkat(AT_FDCWD, proc, AT_FDCWD, out->dest, AT_SYMLINK_FOLLOW) == 0)
+        return 0;
+    if (errno != EEXIST)
+        return -1;
+    for (int tries = 0; tries < 100; tries++) {
+        char name[OUTFILE_PATH_MAX];
+        const char *slash = strrchr(out->dest, '/');
+        int saved;
+        snprintf(name, sizeof name, "%s/.%.200s.%06u", out->dir, slash ? slash + 1 : out->dest,
+                 ((unsigned)getpid() * 7919u + (unsigned)tries * 104729u) % 1000000u);
+        if (linkat(AT_FDCWD, proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
+            if (errno == EEXIST)
+                continue;
+            return -1;
+        }
+        if (rename(name, out->dest) == 0)
+            return 0;
+        saved = errno;
+        unlink(name);
+        errno = saved;
+        return -1;
+    }
+    errno = EEXIST;
+    return -1;
+}
+
 int outfile_commit(OutFile *out, Error *err)
 {
     int failed = fflush(out->fp) != 0 || ferror(out->fp);
     int saved = errno;
 
     /* Make the data durable before the rename makes it visible. */
-    if (!failed && out->temp[0] && fsync(fileno(out->fp)) != 0) {
+    if (!failed && (out->temp[0] || out->unnamed) && fsync(fileno(out->fp)) != 0) {
         failed = 1;
         saved = errno;
     }
-    if (!out->is_stdout) {
+    if (!out->is_stdout && !out->unnamed) {
         if (fclose(out->fp) != 0 && !failed) {
             failed = 1;
             saved = errno;
         }
+        out->fp = NULL;
     }
+    if (!failed && out->unnamed && outfile_link(out) != 0) {
+        failed = 1;
+        saved = errno;
+    }
+    if (!out->is_stdout && out->fp)
+        fclose(out->fp);
     out->fp = NULL;
     if (!failed && out->temp[0] && rename(out->temp, out->dest) != 0) {
         failed = 1;
         saved = errno;
     }
+    /* Make the new name durable too. */
+    if (!failed && (out->temp[0] || out->unnamed))
+        outfile_sync_dir(out->dir);
     if (failed) {
         error_set(err, out->is_stdout ? "<stdout>" : out->path, "cannot write the image: %s",
                   strerror(saved ? saved : EIO));
@@ -134,6 +232,7 @@ int outfile_commit(OutFile *out, Error *err)
 
 void outfile_abort(OutFile *out)
 {
+    /* An unnamed file vanishes with its descriptor. */
     if (out->fp && !out->is_stdout)
         fclose(out->fp);
     out->fp = NULL;
