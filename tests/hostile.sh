@@ -103,6 +103,36 @@ awk 'BEGIN { print "v 0 0 0"; print "v 1 0 0"; print "v 0 1 0"; printf "f"; for 
 check "memory limit while reading a mesh" 1 "raytrace: $T/fan.txt:8:7: error: cannot use the mesh 'fan.obj': $T/fan.obj:4:16391: the mesh needs more memory than the 1022 KiB the memory limit leaves it, after 8192 triangles" \
     "$T/o/out.ppm" --memory-limit 1M "$T/fan.txt" "$T/o/out.ppm"
 
+# User bytes in messages are shown safely: control bytes and invalid UTF-8
+# as \xNN, valid UTF-8 (a French name) as it is; every message is valid
+# UTF-8 with no control byte but its newlines.
+printf '%s\nsphere: 1 \033[2J\377 2 3 4 5 6 7\n' "$H" >"$T/bytes.txt"
+check "control bytes and invalid UTF-8 in a token" 1 \
+    "raytrace: $T/bytes.txt:8:11: error: expected a number for the sphere's centre y, found '\\x1B[2J\\xFF'" \
+    "$T/o/out.ppm" "$T/bytes.txt" "$T/o/out.ppm"
+sed -n 2p "$T/err" | grep -qF '    8 | sphere: 1 \x1B[2J\xFF 2 3 4 5 6 7' && pass ||
+    fail "the excerpt is not escaped" "$(sed -n 2p "$T/err")"
+fr=$(printf 'sc\303\250ne') # "scène", valid UTF-8
+bad=$(printf 'sc\350ne-\001x') # Latin-1 "è" and a control byte
+e=$(printf '\303\250')
+printf '%s\nbogus\n' "$H" >"$T/$bad.txt"
+printf '%s\nsph%sre: 1\n' "$H" "$e" >"$T/$fr.txt"
+check "a French scene name and record" 1 \
+    "raytrace: $T/$fr.txt:8:1: error: unknown record 'sph${e}re:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', 'cylinder:', 'cone:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:')" \
+    "$T/o/out.ppm" "$T/$fr.txt" "$T/o/out.ppm"
+"$RT" -q "$T/$bad.txt" "$T/o/out.ppm" 2>"$T/err"
+grep -qF 'sc\xE8ne-\x01x.txt' "$T/err" && pass ||
+    fail "a file name with invalid UTF-8 and a control byte is not escaped" "$(cat "$T/err")"
+for f in "$T/bytes.txt" "$T/$fr.txt" "$T/$bad.txt"; do
+    "$RT" -q "$f" "$T/o/out.ppm" 2>"$T/err"
+    if ! iconv -f UTF-8 -t UTF-8 "$T/err" >/dev/null 2>&1 || tr -d '\n' <"$T/err" | LC_ALL=C grep -q '[[:cntrl:]]'; then
+        fail "a message that is not plain UTF-8 text" "$(od -c "$T/err" | head -5)"
+    else
+        pass
+    fi
+done
+rm -f "$T"/sc*
+
 # Inputs that are not files.
 check "scene is a directory" 1 "raytrace: tests/hostile/files: error: cannot read: it is a directory, not a file" \
     "$T/o/out.ppm" tests/hostile/files "$T/o/out.ppm"

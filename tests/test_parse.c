@@ -540,8 +540,17 @@ static const BadScene parse_bad_scenes[] = {
     {"0 0\r0\n", 1, 4, "carriage return inside a line: lines must end with LF or CRLF"},
     {"0 0 0\n# \x01\x02 fine\n-1 1 1\n1 1\x00 1\n", 4, 4,
      "NUL byte in the scene file: a scene is a text file"},
-    {"0 0 \xff\xfe\n", 1, 5, "expected a number for the camera position's z, found '\xff\xfe'"},
-    {"0 0 \x1b[31m\n", 1, 5, "expected a number for the camera position's z, found '?[31m'"},
+    /* User bytes are shown safely: invalid UTF-8 and control bytes as \xNN,
+     * valid UTF-8 as it is. */
+    {"0 0 \xff\xfe\n", 1, 5,
+     "expected a number for the camera position's z, found '\\xFF\\xFE'"},
+    {"0 0 \x1b[31m\n", 1, 5,
+     "expected a number for the camera position's z, found '\\x1B[31m'"},
+    {"0 0 z\xc3\xa9ro\n", 1, 5,
+     "expected a number for the camera position's z, found 'z\xc3\xa9ro'"},
+    {"0 0 \xc3\n", 1, 5, "expected a number for the camera position's z, found '\\xC3'"},
+    {"0 0 \xed\xa0\x80\n", 1, 5,
+     "expected a number for the camera position's z, found '\\xED\\xA0\\x80'"},
 };
 
 static void parse_rejects_bad_scenes_with_position(void)
@@ -688,6 +697,46 @@ static void parse_error_excerpt_and_caret(void)
         CHECK(strlen(err.excerpt) < 180);
         CHECK_INT('x', err.excerpt[err.caret]);
     }
+    /* Control bytes in the line are escaped and the caret follows. */
+    CHECK_INT(-1, parse(CAMERA "90\x01\x02 x\n", &sc, &err));
+    CHECK_CONTAINS(err.excerpt, "90\\x01\\x02 x");
+    CHECK_INT('9', err.excerpt[err.caret]);
+    /* A long line of accented letters is cut between characters. */
+    {
+        char text[1000];
+        size_t n = 7;
+        memcpy(text, "0 0 x #", 7);
+        while (n < 600) {
+            text[n++] = (char)0xc3;
+            text[n++] = (char)0xa9;
+        }
+        text[n++] = '\n';
+        CHECK_INT(-1, course_parse_text("t.txt", text, n, 0, &sc, &err));
+        CHECK(strstr(err.excerpt, "\\x") == NULL);
+        CHECK_INT('x', err.excerpt[err.caret]);
+    }
+}
+
+/* error_escape(): what it keeps and what it writes as \xNN. */
+static void error_escape_keeps_utf8_and_escapes_the_rest(void)
+{
+    char out[64];
+    size_t used;
+
+    error_escape(out, sizeof out, "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80", 14, 0, NULL);
+    CHECK(strcmp(out, "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80") == 0);
+    error_escape(out, sizeof out, "a\tb\x7f" "\0" "c", 6, 0, NULL);
+    CHECK(strcmp(out, "a\\x09b\\x7F\\x00c") == 0);
+    error_escape(out, sizeof out, "a\tb", 3, 1, NULL);
+    CHECK(strcmp(out, "a\tb") == 0);
+    /* Overlong, surrogate, beyond U+10FFFF, a lone continuation. */
+    error_escape(out, sizeof out, "\xc0\xaf\xed\xa0\x80\xf4\x90\x80\x80\x80", 10, 0, NULL);
+    CHECK(strcmp(out, "\\xC0\\xAF\\xED\\xA0\\x80\\xF4\\x90\\x80\\x80\\x80") == 0);
+    /* Short room: cut on a whole character or escape, never inside one. */
+    CHECK_INT(4, (long long)error_escape(out, 6, "\x01\xc3\xa9", 3, 0, &used));
+    CHECK_INT(1, (long long)used);
+    CHECK_INT(2, (long long)error_escape(out, 4, "ab\xc3\xa9", 4, 0, &used));
+    CHECK_INT(2, (long long)used);
 }
 
 static void parse_file_errors(void)
@@ -720,6 +769,7 @@ const TestCase parse_tests[] = {
     {"parse_rejects_bad_scenes_with_position", parse_rejects_bad_scenes_with_position},
     {"parse_every_record_rejects_each_fault", parse_every_record_rejects_each_fault},
     {"parse_error_excerpt_and_caret", parse_error_excerpt_and_caret},
+    {"error_escape_keeps_utf8_and_escapes_the_rest", error_escape_keeps_utf8_and_escapes_the_rest},
     {"parse_file_errors", parse_file_errors},
     {NULL, NULL},
 };

@@ -6,6 +6,8 @@
  * file, where in it (when the fault has a position), and a message that says
  * what was expected and what was found. Only main.c turns a record into text
  * on the terminal. The record owns no heap memory: copy it, drop it, reuse it.
+ * The bytes of user input it keeps (the file name, the excerpt) are shown
+ * safely: control bytes and invalid UTF-8 as \xNN (error_escape()).
  */
 #ifndef RAYTRACE_ERROR_H
 #define RAYTRACE_ERROR_H
@@ -15,7 +17,7 @@
 enum {
     ERROR_FILE_MAX = 1024,   /* longest file name kept; longer ones are cut */
     ERROR_MESSAGE_MAX = 512, /* longest message kept */
-    ERROR_EXCERPT_MAX = 200  /* longest excerpt of the offending line kept */
+    ERROR_EXCERPT_MAX = 720  /* longest excerpt of the offending line kept */
 };
 
 typedef struct {
@@ -24,9 +26,18 @@ typedef struct {
     int column;                      /* 1-based byte column, 0 when no position */
     char message[ERROR_MESSAGE_MAX]; /* what was expected, what was found */
     char excerpt[ERROR_EXCERPT_MAX]; /* the offending line or a window of it,
-                                        control bytes replaced by '?' */
+                                        shown safely (error_escape()) */
     int caret;                       /* byte offset of column in excerpt */
 } Error;
+
+/* Copies the len bytes at src to dst (size bytes, NUL-terminated, cut on
+ * a whole character when short), safe to print on a terminal: valid UTF-8
+ * kept (a French file name reads right), tabs kept when keep_tabs, and any
+ * other control byte or byte that is not part of valid UTF-8 written as
+ * \xNN. Returns the length of dst; stores in *used (unless NULL) how many
+ * bytes of src it holds. */
+size_t error_escape(char *dst, size_t size, const char *src, size_t len, int keep_tabs,
+                    size_t *used);
 
 /* Records an error about file (may be NULL) with no position in it. */
 void error_set(Error *err, const char *file, const char *fmt, ...)

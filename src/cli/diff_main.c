@@ -51,12 +51,15 @@ static int diff_usage(const char *fmt, const char *arg)
 
 static void diff_report(const Error *err)
 {
+    char message[4 * ERROR_MESSAGE_MAX];
+
+    error_escape(message, sizeof message, err->message, strlen(err->message), 0, NULL);
     if (err->line > 0)
         fprintf(stderr, "raytrace-diff: %s:%d:%d: error: %s\n", err->file, err->line,
-                err->column, err->message);
+                err->column, message);
     else
         fprintf(stderr, "raytrace-diff: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
-                err->message);
+                message);
 }
 
 /* Reads a number >= 0 from text into *out; returns 0 or -1. */

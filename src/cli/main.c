@@ -93,13 +93,17 @@ static int main_open_output(OutFile *out, const char *path, Error *err)
  * "raytrace: FILE: error: MESSAGE". */
 static void main_report(const Error *err)
 {
+    /* Messages quote user bytes: shown safely, as the file and excerpt are. */
+    char message[4 * ERROR_MESSAGE_MAX];
+
+    error_escape(message, sizeof message, err->message, strlen(err->message), 0, NULL);
     if (err->line <= 0) {
         fprintf(stderr, "raytrace: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
-                err->message);
+                message);
         return;
     }
     fprintf(stderr, "raytrace: %s:%d:%d: error: %s\n", err->file, err->line, err->column,
-            err->message);
+            message);
     fprintf(stderr, "%5d | %s\n      | ", err->line, err->excerpt);
     /* Pad with the line's own tabs so the caret lines up; UTF-8 continuation
      * bytes take no column. */
@@ -117,7 +121,10 @@ static void main_report(const Error *err)
 
 static int main_usage(const char *msg)
 {
-    fprintf(stderr, "raytrace: %s\nTry 'raytrace --help'.\n", msg);
+    char safe[1024];
+
+    error_escape(safe, sizeof safe, msg, strlen(msg), 0, NULL);
+    fprintf(stderr, "raytrace: %s\nTry 'raytrace --help'.\n", safe);
     return 2;
 }
 

@@ -48,7 +48,10 @@ static const char merge_help[] =
 /* Prints "raytrace-merge: FILE: error: MESSAGE" for err. */
 static void merge_report(const Error *err)
 {
-    fprintf(stderr, "raytrace-merge: %s: error: %s\n", err->file, err->message);
+    char message[4 * ERROR_MESSAGE_MAX];
+
+    error_escape(message, sizeof message, err->message, strlen(err->message), 0, NULL);
+    fprintf(stderr, "raytrace-merge: %s: error: %s\n", err->file, message);
 }
 
 /* What the tiles read so far say about the picture. */

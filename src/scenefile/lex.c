@@ -46,10 +46,10 @@ const char *lex_quote(char *buf, size_t size, const Token *t)
     size_t n = 0, shown = t->len > 40 ? 40 : t->len;
 
     buf[n++] = '\'';
-    for (size_t i = 0; i < shown && n + 5 < size; i++) {
-        unsigned char ch = (unsigned char)t->text[i];
-        buf[n++] = ch < 0x20 || ch == 0x7f ? '?' : (char)ch;
-    }
+    /* Not inside a character: back to its first byte. */
+    while (shown < t->len && shown > 0 && ((unsigned char)t->text[shown] & 0xC0) == 0x80)
+        shown--;
+    n += error_escape(buf + n, size - n - 5, t->text, shown, 0, &shown);
     if (shown < t->len && n + 5 < size) {
         memcpy(buf + n, "...", 3);
         n += 3;
