@@ -108,6 +108,12 @@ raytrace-diff: $(BUILD)/cli/diff_main.o $(LIB_OBJ)
 raytrace-merge: $(BUILD)/cli/merge_main.o $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
+# The fault injector tests/faults.sh preloads (test-only, glibc): built with
+# flags of its own, since a sanitizer's runtime cannot be preloaded.
+$(BUILD)/inject.so: tests/inject.c
+	@mkdir -p $(@D)
+	$(CC) -std=c11 -O1 -g -shared -fPIC -o $@ $< -ldl
+
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
@@ -122,7 +128,7 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 
 # The unit tests, the fuzz targets on their seeds and past crashes, then the
 # command-line and render tests on the real binary.
-test: raytrace raytrace-diff raytrace-merge $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
+test: raytrace raytrace-diff raytrace-merge $(BUILD)/inject.so $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
 	$(BUILD)/unit
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
@@ -132,7 +138,7 @@ test: raytrace raytrace-diff raytrace-merge $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUI
 	sh tests/layers.sh
 	sh tests/jpeg.sh ./raytrace ./raytrace-diff
 	sh tests/tiles.sh ./raytrace ./raytrace-merge
-	sh tests/faults.sh ./raytrace
+	sh tests/faults.sh ./raytrace $(BUILD)/inject.so
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'

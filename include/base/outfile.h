@@ -31,6 +31,8 @@ typedef struct {
     char dir[OUTFILE_PATH_MAX];  /* the destination's directory */
     int unnamed;                 /* 1: fp is an unnamed file (O_TMPFILE)
                                     that commit links to dest */
+    int fd;                      /* fp's descriptor when it is a new file,
+                                    else -1 */
     int is_stdout;               /* 1 when writing to standard output */
 } OutFile;
 

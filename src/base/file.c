@@ -8,14 +8,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 const char *file_display_name(const char *path)
 {
     return strcmp(path, "-") == 0 ? "<stdin>" : path;
 }
 
-/* Reads f to its end into a growing buffer; returns 0, 1 when it holds
- * more than FILE_MAX bytes, or -1 with errno. */
+/* Reads f to its end into a growing buffer, with read() on its descriptor
+ * (f is not read through: a read interrupted by a signal, EINTR, is
+ * retried); returns 0, 1 when it holds more than FILE_MAX bytes, or -1 with
+ * errno. */
 static int file_slurp(FILE *f, char **data, size_t *len)
 {
     size_t cap = 4096, n = 0;
@@ -24,7 +27,7 @@ static int file_slurp(FILE *f, char **data, size_t *len)
     if (!buf)
         return -1;
     for (;;) {
-        size_t got;
+        ssize_t got;
         if (n > FILE_MAX) {
             free(buf);
             return 1;
@@ -39,17 +42,18 @@ static int file_slurp(FILE *f, char **data, size_t *len)
             buf = grown;
             cap *= 2;
         }
-        got = fread(buf + n, 1, cap - 1 - n, f);
-        n += got;
-        if (got == 0) {
-            if (ferror(f)) {
-                int saved = errno;
-                free(buf);
-                errno = saved ? saved : EIO;
-                return -1;
-            }
-            break;
+        got = read(fileno(f), buf + n, cap - 1 - n);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0) {
+            int saved = errno;
+            free(buf);
+            errno = saved ? saved : EIO;
+            return -1;
         }
+        if (got == 0)
+            break;
+        n += (size_t)got;
     }
     buf[n] = '\0';
     *data = buf;

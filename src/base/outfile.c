@@ -46,6 +46,61 @@ static mode_t outfile_mode(const struct stat *existing, int exists)
     return 0666 & ~mask;
 }
 
+/* Writes all n bytes at buf to descriptor *cookie, on after short writes
+ * and after writes a signal interrupted (EINTR); returns n, or -1 with
+ * errno set (the stdio stream then reports the error). */
+static ssize_t outfile_write_all(void *cookie, const char *buf, size_t n)
+{
+    int fd = *(int *)cookie;
+    size_t done = 0;
+
+    while (done < n) {
+        ssize_t w = write(fd, buf + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            if (w == 0)
+                errno = EIO;
+            return -1;
+        }
+        done += (size_t)w;
+    }
+    return (ssize_t)n;
+}
+
+/* Closes the descriptor behind a stream of outfile_stream(). */
+static int outfile_close_fd(void *cookie)
+{
+    int fd = *(int *)cookie;
+
+    free(cookie);
+    return close(fd);
+}
+
+/* Returns a stream writing to descriptor fd through outfile_write_all()
+ * (glibc's fopencookie; elsewhere fdopen, whose writes stdio makes), or
+ * NULL with fd left open. */
+static FILE *outfile_stream(int fd)
+{
+#ifdef __GLIBC__
+    cookie_io_functions_t io = {NULL, outfile_write_all, NULL, outfile_close_fd};
+    int *cookie = malloc(sizeof *cookie);
+    FILE *f;
+
+    if (!cookie)
+        return NULL;
+    *cookie = fd;
+    f = fopencookie(cookie, "wb", io);
+    if (!f)
+        free(cookie);
+    return f;
+#else
+    (void)outfile_write_all;
+    (void)outfile_close_fd;
+    return fdopen(fd, "wb");
+#endif
+}
+
 /* Opens an unnamed file in directory dir with mode (Linux's O_TMPFILE):
  * nothing is in the directory until outfile_commit() links it there, so a
  * process killed before then leaves nothing. Returns its descriptor, or -1
@@ -81,6 +136,7 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     int exists, fd;
 
     memset(out, 0, sizeof *out);
+    out->fd = -1;
     if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
         error_set(err, path, "output path is too long");
         return -1;
@@ -116,7 +172,8 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     }
     strcpy(out->dir, dir);
     fd = outfile_unnamed(dir, outfile_mode(&st, exists));
-    if (fd >= 0 && (out->fp = fdopen(fd, "wb")) != NULL) {
+    if (fd >= 0 && (out->fp = outfile_stream(fd)) != NULL) {
+        out->fd = fd;
         out->unnamed = 1;
         out->temp[0] = '\0';
         return 0;
@@ -130,13 +187,14 @@ int outfile_open(OutFile *out, const char *path, Error *err)
         out->temp[0] = '\0';
         return -1;
     }
-    if (fchmod(fd, outfile_mode(&st, exists)) != 0 || !(out->fp = fdopen(fd, "wb"))) {
+    if (fchmod(fd, outfile_mode(&st, exists)) != 0 || !(out->fp = outfile_stream(fd))) {
         error_set(err, path, "cannot write in directory '%s': %s", dir, strerror(errno));
         close(fd);
         unlink(out->temp);
         out->temp[0] = '\0';
         return -1;
     }
+    out->fd = fd;
     return 0;
 }
 
@@ -160,7 +218,7 @@ static int outfile_link(OutFile *out)
 {
     char proc[64];
 
-    snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(out->fp));
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", out->fd);
     if (linkat(AT_FDCWD, proc, AT_FDCWD, out->dest, AT_SYMLINK_FOLLOW) == 0)
         return 0;
     if (errno != EEXIST)
@@ -193,7 +251,9 @@ int outfile_commit(OutFile *out, Error *err)
     int saved = errno;
 
     /* Make the data durable before the rename makes it visible. */
-    if (!failed && (out->temp[0] || out->unnamed) && fsync(fileno(out->fp)) != 0) {
+    while (!failed && (out->temp[0] || out->unnamed) && fsync(out->fd) != 0) {
+        if (errno == EINTR)
+            continue;
         failed = 1;
         saved = errno;
     }
