@@ -15,6 +15,7 @@
 #                   writes docs/trade.md and docs/trade-*.svg
 # make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
 #                   each (default 60); tests/fuzz/fuzz.sh says more
+# make fuzz-long    the same, 30 minutes a parser, with totals
 # make memcheck     renders and comparisons under Valgrind's memcheck
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
@@ -80,7 +81,7 @@ LIB_OBJ += $(BUILD)/accel/bvh_query_avx2.o
 endif
 AVX2_FLAGS := -mavx2 -mfma -DBVH_QUERY_AVX2
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
-FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg
+FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg tile
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
 PREFIX ?= /usr/local
@@ -92,7 +93,7 @@ SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
 
-.PHONY: all test check clean install uninstall gallery bench trade fuzz memcheck
+.PHONY: all test check clean install uninstall gallery bench trade fuzz fuzz-long memcheck
 
 all: raytrace raytrace-diff raytrace-merge
 
@@ -233,6 +234,11 @@ $(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene
 
 fuzz: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 	sh tests/fuzz/fuzz.sh $(BUILD) $(FUZZ_TARGETS)
+
+# The long campaign: each target for FUZZ_TIME seconds (default 1800), its
+# totals in $(BUILD)/fuzz/totals.md (docs/robustness.md keeps the last).
+fuzz-long: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
+	FUZZ_TIME=$${FUZZ_TIME:-1800} sh tests/fuzz/fuzz.sh $(BUILD) $(FUZZ_TARGETS)
 
 memcheck: raytrace raytrace-diff raytrace-merge
 	sh tests/memcheck.sh ./raytrace ./raytrace-diff ./raytrace-merge
