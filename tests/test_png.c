@@ -138,7 +138,7 @@ static void pfm_rows_run_bottom_to_top(void)
     CHECK(f != NULL);
     if (!f)
         return;
-    CHECK_INT(0, pfm_write(f, 2, 3, rgb));
+    CHECK_INT(0, pfm_write(f, 2, 3, rgb, NULL));
     fclose(f);
     f = fopen("build/rows.pfm", "rb");
     CHECK(f && fread(head, 1, 12, f) == 12);

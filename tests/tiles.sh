@@ -83,6 +83,18 @@ tiles glass 5 rows png
 "$RT" -q scenes/glass.txt "$T/whole.jpg"
 "$MERGE" -q "$T/merged.jpg" "$T"/glass-*.png && cmp -s "$T/merged.jpg" "$T/whole.jpg" && pass ||
     fail "PNG tiles merged to JPEG differ from the whole JPEG"
+# PFM tiles (linear colours, the record after the pixels) merge to the
+# whole render's PFM; 8-bit and linear tiles do not mix.
+tiles glass 3 bands pfm
+"$RT" -q scenes/glass.txt "$T/whole.pfm"
+"$MERGE" -q "$T/merged.pfm" "$T"/glass-*.pfm && cmp -s "$T/merged.pfm" "$T/whole.pfm" && pass ||
+    fail "PFM tiles merged to PFM differ from the whole PFM"
+"$MERGE" -q "$T/merged.ppm" "$T"/glass-*.pfm 2>"$T/err"
+[ $? = 1 ] && grep -q "the tiles are PFM (linear colours): write a PFM" "$T/err" && pass ||
+    fail "PFM tiles merged to PPM" "$(cat "$T/err")"
+"$MERGE" -q "$T/merged.pfm" "$T/glass-1.pfm" "$T/glass-2.png" 2>"$T/err"
+[ $? = 1 ] && grep -q "a PPM or PNG tile among PFM ones" "$T/err" && pass ||
+    fail "PFM and PNG tiles mixed" "$(cat "$T/err")"
 # Each tile is a picture of its rows: its first row is the whole's row K - 1.
 "$RT" -q --tile 2/4 scenes/course.txt "$T/t.ppm"
 sed -n 2p "$T/t.ppm" | grep -q '^# raytrace-tile 2/4 layout rows first 1 step 4 count 100 of 400x400 fingerprint [0-9a-f]\{16\}$' &&

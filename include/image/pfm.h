@@ -17,8 +17,10 @@
 #include "base/error.h"
 
 /* Writes the width x height image of 3 floats a pixel (rows top to bottom
- * in memory) to f; returns 0, or -1 with errno set. */
-int pfm_write(FILE *f, int width, int height, const float *rgb);
+ * in memory) to f, and after the pixels a newline and "# NOTE" unless note is
+ * NULL (a tile's record: PFM has no comments, and readers stop at the
+ * pixels' end); returns 0, or -1 with errno set. */
+int pfm_write(FILE *f, int width, int height, const float *rgb, const char *note);
 
 typedef struct {
     int width, height; /* pixels */

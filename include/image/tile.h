@@ -14,8 +14,8 @@
  *     raytrace-tile K/N layout LAYOUT first FIRST step STEP count COUNT
  *         of WIDTHxHEIGHT fingerprint HEX16
  *
- * (on one line), kept as a comment after a PPM's magic number or in a PNG's
- * tEXt chunk "Comment". The fingerprint (16 hex digits) stands for the
+ * (on one line), kept as a comment after a PPM's magic number, in a PNG's
+ * tEXt chunk "Comment", or as a last line "# RECORD" after a PFM's pixels. The fingerprint (16 hex digits) stands for the
  * scene and every option that changes pixels, so that tiles of different
  * renders are never mixed.
  */

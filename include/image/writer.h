@@ -28,8 +28,8 @@ typedef struct {
     int jpeg_quality;       /* JPEG: 1..100 */
     int jpeg_444;           /* JPEG: 1 keeps chroma whole (4:4:4), 0 halves
                                it both ways (4:2:0) */
-    const char *note;       /* PPM and PNG: a line of text the file keeps
-                               (a tile's record, tile.h), or NULL */
+    const char *note;       /* PPM, PNG and PFM: a line of text the file
+                               keeps (a tile's record, tile.h), or NULL */
 } WriterOptions;
 
 /* Returns the format named name ("ppm", "png", "pfm", "jpeg" or "jpg"), or

@@ -21,6 +21,7 @@
 #include "base/outfile.h"
 #include "image/compare.h"
 #include "image/image.h"
+#include "image/pfm.h"
 #include "image/tile.h"
 #include "image/writer.h"
 
@@ -28,9 +29,10 @@
 
 static const char merge_help[] =
     "Usage: raytrace-merge [OPTIONS] OUT TILE...\n"
-    "Put the tiles of one render (raytrace --tile K/N, PPM or PNG files) back\n"
-    "together into OUT, a PPM, PNG or JPEG picture by its extension (as\n"
-    "raytrace's output): the same bytes as rendering the whole picture at once.\n"
+    "Put the tiles of one render (raytrace --tile K/N: PPM, PNG or PFM files)\n"
+    "back together into OUT, by its extension: PPM, PNG or JPEG from PPM or PNG\n"
+    "tiles, PFM from PFM tiles; the same bytes as rendering the whole picture\n"
+    "at once.\n"
     "Every tile 1/N to N/N must be given once, all of the same render (the same\n"
     "scene, options and size, as their records' fingerprints say).\n"
     "\n"
@@ -57,12 +59,41 @@ static void merge_report(const Error *err)
 /* What the tiles read so far say about the picture. */
 typedef struct {
     Tile first;            /* the first tile's record */
+    int linear;            /* the tiles are PFM: linear colours, kept exact */
     const char *first_path;
     const char **owner;    /* per row of the picture: the tile file that gave
                               it, or NULL */
     const char **by_k;     /* per tile number - 1: its file, or NULL */
     Image img;             /* the picture */
 } Merge;
+
+/* Copies the rows of t, a PFM tile (the len bytes at data, freed here),
+ * into m's linear colours, exactly; returns 0, or -1 with *err. */
+static int merge_linear(Merge *m, const char *path, char *data, size_t len, const Tile *t,
+                        Error *err)
+{
+    PfmImage pfm;
+    int rc = pfm_parse(path, data, len, &pfm, err);
+
+    free(data);
+    if (rc != 0)
+        return -1;
+    if (pfm.width != t->width || pfm.height != t->count) {
+        error_set(err, path, "holds %d x %d pixels, where its record says %d x %d", pfm.width,
+                  pfm.height, t->width, t->count);
+        pfm_free(&pfm);
+        return -1;
+    }
+    m->by_k[t->k - 1] = path;
+    for (int i = 0; i < t->count; i++) {
+        int y = t->first + i * t->step;
+        size_t row = 3 * (size_t)t->width;
+        m->owner[y] = path;
+        memcpy(m->img.linear + (size_t)y * row, pfm.rgb + (size_t)i * row, row * sizeof(float));
+    }
+    pfm_free(&pfm);
+    return 0;
+}
 
 /* Reads the tile at path into m; returns 0, or -1 with *err. */
 static int merge_tile(Merge *m, const char *path, int index, Error *err)
@@ -71,7 +102,7 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
     size_t len;
     Tile t;
     Picture pic;
-    int found;
+    int found, linear;
 
     if (file_read_all(path, &data, &len, err) != 0)
         return -1;
@@ -82,16 +113,23 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
             error_set(err, path, "not a tile of raytrace --tile: it has no tile record");
         return -1;
     }
+    linear = len >= 2 && data[0] == 'P' && (data[1] == 'F' || data[1] == 'f');
     if (index == 0) {
         m->first = t;
         m->first_path = path;
+        m->linear = linear;
         m->owner = calloc((size_t)t.height, sizeof *m->owner);
         m->by_k = calloc((size_t)t.n, sizeof *m->by_k);
-        if (!m->owner || !m->by_k || image_init(&m->img, t.width, t.height) != 0) {
+        if (!m->owner || !m->by_k || image_init(&m->img, t.width, t.height) != 0 ||
+            (linear && image_keep_linear(&m->img) != 0)) {
             free(data);
             error_set(err, path, "out of memory for a %d x %d picture", t.width, t.height);
             return -1;
         }
+    } else if (linear != m->linear) {
+        error_set(err, path, "a %s tile among %s ones (%s): 8-bit and linear tiles do not mix",
+                  linear ? "PFM" : "PPM or PNG", m->linear ? "PFM" : "PPM or PNG", m->first_path);
+        found = -1;
     } else if (t.fingerprint != m->first.fingerprint) {
         error_set(err, path,
                   "a tile of another render than %s (fingerprint %016" PRIx64 ", not %016" PRIx64
@@ -122,6 +160,8 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
                       t.first + i * t.step);
             return -1;
         }
+    if (linear)
+        return merge_linear(m, path, data, len, &t, err);
     if (picture_parse(path, data, len, &pic, err) != 0) {
         free(data);
         return -1;
@@ -230,13 +270,16 @@ int main(int argc, char **argv)
     w.jpeg_quality = quality;
     w.jpeg_444 = 0;
     w.note = NULL;
-    if (w.format == FORMAT_PFM) {
-        error_set(&err, out_path, "tiles hold 8-bit pixels: write PPM, PNG or JPEG, not PFM");
-        goto fail;
-    }
     for (int i = 0; i < ntiles; i++)
         if (merge_tile(&m, tiles[i], i, &err) != 0)
             goto fail;
+    /* 8-bit tiles make 8-bit pictures, PFM tiles a PFM: each kept exact. */
+    if ((w.format == FORMAT_PFM) != m.linear) {
+        error_set(&err, out_path,
+                  m.linear ? "the tiles are PFM (linear colours): write a PFM"
+                           : "the tiles hold 8-bit pixels: write PPM, PNG or JPEG, not PFM");
+        goto fail;
+    }
     if (merge_missing(&m, &err) != 0)
         goto fail;
     if (outfile_open(&out, out_path, &err) != 0)

@@ -51,7 +51,7 @@ const char *const *options_help(void)
         "                     reflect onto its diffuse part (default: 0)\n"
         "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
         "  --tile K/N         render only the K-th of N tiles (1 <= K <= N <= 65536)\n"
-        "                     to OUTPUT, a PPM or PNG that records where it\n"
+        "                     to OUTPUT, a PPM, PNG or PFM that records where it\n"
         "                     belongs; raytrace-merge puts the tiles together\n"
         "  --tile-layout L    rows (the default: every N-th row, even loads) or\n"
         "                     bands (N pieces, top to bottom)\n"
@@ -356,11 +356,10 @@ static int options_tile(Options *opts, char *msg, size_t msg_size)
                  TILE_MAX, opts->tile);
         return -1;
     }
-    if (opts->output_path && opts->format != FORMAT_PPM && opts->format != FORMAT_PNG) {
+    if (opts->output_path && opts->format == FORMAT_JPEG) {
         snprintf(msg, msg_size,
-                 "--tile writes PPM or PNG tiles, which raytrace-merge puts together in any "
-                 "format: not %s",
-                 opts->format == FORMAT_PFM ? "PFM" : "JPEG");
+                 "--tile writes PPM, PNG or PFM tiles (lossless), which raytrace-merge puts "
+                 "together in any format: not JPEG");
         return -1;
     }
     opts->tile_k = k;

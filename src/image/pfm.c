@@ -9,7 +9,7 @@
 
 #include "base/file.h"
 
-int pfm_write(FILE *f, int width, int height, const float *rgb)
+int pfm_write(FILE *f, int width, int height, const float *rgb, const char *note)
 {
     size_t row = 3 * (size_t)width;
     unsigned char *buf = malloc(4 * row);
@@ -36,6 +36,10 @@ int pfm_write(FILE *f, int width, int height, const float *rgb)
         }
     }
     free(buf);
+    /* PFM has no comments: a note follows the pixels, which readers stop
+     * before. */
+    if (note && fprintf(f, "\n# %s\n", note) < 0)
+        return -1;
     return 0;
 }
 

@@ -103,6 +103,21 @@ int tile_find(const char *name, const unsigned char *data, size_t len, Tile *t, 
         }
         return 0;
     }
+    if (len >= 3 && data[0] == 'P' && (data[1] == 'F' || data[1] == 'f')) {
+        /* PFM keeps it on the last line, after the pixels. */
+        size_t from = len > TILE_RECORD_MAX + 4 ? len - TILE_RECORD_MAX - 4 : 0;
+        for (size_t at = len - 1; at > from; at--)
+            if (data[at - 1] == '\n' && data[at] == '#' && len - at >= 3 + m &&
+                memcmp(data + at + 2, tile_magic, m) == 0) {
+                size_t end = len;
+                while (end > at && (data[end - 1] == '\n' || data[end - 1] == '\r'))
+                    end--;
+                return tile_parse(name, (const char *)data + at + 2, end - at - 2, t, err) == 0
+                           ? 1
+                           : -1;
+            }
+        return 0;
+    }
     if (len >= 3 && data[0] == 'P' && (data[1] == '6' || data[1] == '3') &&
         (data[2] == '\n' || data[2] == '\r' || data[2] == ' ')) {
         /* The comment lines straight after the magic number. */

@@ -55,7 +55,7 @@ int writer_write(FILE *f, const Image *img, const WriterOptions *opts)
     case FORMAT_PNG:
         return png_write(f, img->width, img->height, img->rgb, opts->png_deflate, opts->note);
     case FORMAT_PFM:
-        return pfm_write(f, img->width, img->height, img->linear);
+        return pfm_write(f, img->width, img->height, img->linear, opts->note);
     case FORMAT_JPEG:
         return jpeg_write(f, img->width, img->height, img->rgb, opts->jpeg_quality,
                           !opts->jpeg_444);
