@@ -22,7 +22,7 @@
 static const char diff_help[] =
     "Usage: raytrace-diff [OPTIONS] REFERENCE IMAGE\n"
     "Compare IMAGE with REFERENCE, channel by channel, on the 0..255 scale of an\n"
-    "8-bit image. Both may be PPM (P3 or P6, any maxval), PFM or PNG.\n"
+    "8-bit image. Both may be PPM (P3 or P6, any maxval), PFM, PNG or JPEG.\n"
     "\n"
     "Options:\n"
     "  -t, --tolerance N   a channel may differ by up to N levels (default 0)\n"
