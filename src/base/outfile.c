@@ -224,11 +224,16 @@ static int outfile_link(OutFile *out)
     if (errno != EEXIST)
         return -1;
     for (int tries = 0; tries < 100; tries++) {
-        char name[OUTFILE_PATH_MAX];
+        char name[OUTFILE_PATH_MAX + 256];
         const char *slash = strrchr(out->dest, '/');
         int saved;
-        snprintf(name, sizeof name, "%s/.%.200s.%06u", out->dir, slash ? slash + 1 : out->dest,
-                 ((unsigned)getpid() * 7919u + (unsigned)tries * 104729u) % 1000000u);
+        if (snprintf(name, sizeof name, "%s/.%.200s.%06u", out->dir,
+                     slash ? slash + 1 : out->dest,
+                     ((unsigned)getpid() * 7919u + (unsigned)tries * 104729u) % 1000000u) >=
+            (int)sizeof name) {
+            errno = ENAMETOOLONG;
+            return -1;
+        }
         if (linkat(AT_FDCWD, proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
             if (errno == EEXIST)
                 continue;
