@@ -307,17 +307,22 @@ static void bvh_is_the_same_built_by_one_thread_or_two(void)
     scene_free(&sc);
 }
 
+/* How often the shadow cache of queries_differ() answered alone. */
+static int cache_answers;
+
 /* Traces ray (and its segment seg) through sc with and without the
  * hierarchy accel, the latter with each build of its queries that the
  * processor runs (bvh_query.h); returns 1 when anything differs: the
  * nearest hit (t, object), occlusion or transmittance (to the bit), of the
- * segment and of the unbounded ray (a distant light's). Counts nearest
- * hits in *hits. */
+ * segment and of the unbounded ray (a distant light's), and occlusion
+ * through a shadow cache left by the previous call. Counts nearest hits in
+ * *hits. */
 static int queries_differ(Scene *sc, struct Bvh *accel, Ray ray, Ray seg, int *hits)
 {
     Hit a, b;
     int fa, fb, oa, ob, ua, ub, differ = 0, avx2 = accel->avx2;
     double ta, tb, va, vb;
+    static uint32_t cache = BVH_NO_SLOT;
 
     sc->accel = NULL; /* every object, one by one */
     fa = visibility_nearest(sc, &ray, INFINITY, &a);
@@ -333,6 +338,9 @@ static int queries_differ(Scene *sc, struct Bvh *accel, Ray ray, Ray seg, int *h
         tb = visibility_transmittance(sc, &seg, 1);
         ub = visibility_occluded(sc, &seg, INFINITY);
         vb = visibility_transmittance(sc, &seg, INFINITY);
+        cache_answers += bvh_slot_occludes(accel, cache, &seg, 1);
+        /* The slot may be another scene's: any slot gives the answer. */
+        differ |= visibility_occluded_cached(sc, &seg, 1, &cache) != oa;
         differ |= fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.index != b.index)) ||
                   oa != ob || memcmp(&ta, &tb, sizeof ta) != 0 || ua != ub ||
                   memcmp(&va, &vb, sizeof va) != 0;
@@ -367,6 +375,7 @@ static void bvh_queries_equal_the_loops(void)
         scene_free(&sc);
     }
     CHECK(hits > 3000);
+    CHECK(cache_answers > 100);
     CHECK_INT(0, differ);
 }
 

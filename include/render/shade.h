@@ -54,9 +54,10 @@ Colour shade_local(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, double wei
 Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Vec3 n, Vec3 ns,
                    Vec3 view, Colour weight);
 
-/* Casts the shadow ray `shadow` up to tmax and returns the share E of the
- * light that passes: 1 or 0 in opaque scenes, the product of the
- * transparencies crossed in others. */
-double shade_light_share(const Tracer *t, const Ray *shadow, real tmax);
+/* Casts the shadow ray `shadow` up to tmax towards light (one of the
+ * scene's, whose shadow cache it uses: tracer.h; NULL: none) and returns
+ * the share E of the light that passes: 1 or 0 in opaque scenes, the
+ * product of the transparencies crossed in others. */
+double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Light *light);
 
 #endif

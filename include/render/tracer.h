@@ -15,6 +15,7 @@
 #include "scene/scene.h"
 
 enum { TRACE_MAX_DEPTH_LIMIT = 1000 }; /* deepest max_depth accepted */
+enum { TRACE_OCCLUDERS = 8 };        /* lights with a shadow cache */
 
 /* Rays cast, by kind. */
 typedef struct {
@@ -62,6 +63,10 @@ typedef struct {
     SamplerGrid ao_grid;   /* ao_samples x the pixel's samples */
     SamplerGrid gi_grid;   /* gi_samples x the pixel's samples */
     SamplerGrid path_grid; /* the pixel's samples: one ray a later bounce */
+    uint32_t *occluders; /* the thread's shadow cache: for each of the
+                            first TRACE_OCCLUDERS lights, the hierarchy's
+                            slot that last stopped a ray towards it
+                            (visibility.h); NULL: none */
 } Tracer;
 
 #endif

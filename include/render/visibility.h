@@ -32,6 +32,13 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
  * ray->dir (ends excluded), tmax = INFINITY the whole ray. */
 int visibility_occluded(const Scene *scene, const Ray *ray, real tmax);
 
+/* visibility_occluded() with a shadow cache: *cache (BVH_NO_SLOT at first)
+ * names the last primitive of the hierarchy that occluded a ray like this
+ * one, which is tried first, and is set to the one found. The answer is the
+ * same; neighbouring shadow rays towards one light are often stopped by one
+ * object, and then skip the walk. */
+int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, uint32_t *cache);
+
 /* Returns the share of light that passes along the ray from t = 0 to tmax:
  * the product of the transparency T of every surface crossing there, in
  * the order of ShapeKind, each kind by index (so the same bits with or

@@ -477,7 +477,7 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *
     return 0;
 }
 
-int BVH_QUERY(bvh_occluded)(const Bvh *bvh, const Ray *ray, real tmax)
+int BVH_QUERY(bvh_occluder)(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot)
 {
     BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
@@ -487,8 +487,10 @@ int BVH_QUERY(bvh_occluded)(const Bvh *bvh, const Ray *ray, real tmax)
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count))
         for (uint32_t k = first; k < first + count; k++)
-            if (bvh_prim_hit(bvh, k, ray, 0, tmax, &t))
+            if (bvh_prim_hit(bvh, k, ray, 0, tmax, &t)) {
+                *slot = k;
                 return 1;
+            }
     return 0;
 }
 
@@ -532,7 +534,7 @@ int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit
  * called. */
 #if !defined(RAYTRACE_AVX2)
 #define bvh_nearest_avx2 bvh_nearest_base
-#define bvh_occluded_avx2 bvh_occluded_base
+#define bvh_occluder_avx2 bvh_occluder_base
 #define bvh_crossings_avx2 bvh_crossings_base
 #endif
 
@@ -541,9 +543,24 @@ int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
     return bvh->avx2 ? bvh_nearest_avx2(bvh, ray, tmax, hit) : bvh_nearest_base(bvh, ray, tmax, hit);
 }
 
+int bvh_occluder(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot)
+{
+    return bvh->avx2 ? bvh_occluder_avx2(bvh, ray, tmax, slot)
+                     : bvh_occluder_base(bvh, ray, tmax, slot);
+}
+
 int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
 {
-    return bvh->avx2 ? bvh_occluded_avx2(bvh, ray, tmax) : bvh_occluded_base(bvh, ray, tmax);
+    uint32_t slot;
+
+    return bvh_occluder(bvh, ray, tmax, &slot);
+}
+
+int bvh_slot_occludes(const Bvh *bvh, uint32_t slot, const Ray *ray, real tmax)
+{
+    real t;
+
+    return slot < bvh->prim_count && bvh_prim_hit(bvh, slot, ray, 0, tmax, &t);
 }
 
 int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx)

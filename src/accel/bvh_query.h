@@ -19,10 +19,10 @@ enum { BVH_STACK = (BVH_WIDTH - 1) * BVH_DEPTH_MAX + BVH_WIDTH };
 
 /* bvh.h's queries, as each build of bvh_query.c answers them. */
 int bvh_nearest_base(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
-int bvh_occluded_base(const Bvh *bvh, const Ray *ray, real tmax);
+int bvh_occluder_base(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot);
 int bvh_crossings_base(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
 int bvh_nearest_avx2(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
-int bvh_occluded_avx2(const Bvh *bvh, const Ray *ray, real tmax);
+int bvh_occluder_avx2(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot);
 int bvh_crossings_avx2(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
 
 #endif

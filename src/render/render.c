@@ -3,6 +3,7 @@
 
 #include <stdlib.h>
 
+#include "accel/bvh.h"
 #include "render/cut.h"
 #include "render/sampler.h"
 #include "render/trace.h"
@@ -206,11 +207,14 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         RayCounts mine = {0};
         Cut cut = proto; /* the thread's own: it keeps the rays left out */
         TraceSample sample = {0, 0, 0, g.n};
+        uint32_t occluders[TRACE_OCCLUDERS];
         Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
                     sampler_grid(g.n * (unsigned)(opts->indirect.ao_samples ? opts->indirect.ao_samples : 1)),
                     sampler_grid(g.n * (unsigned)(opts->indirect.gi_samples ? opts->indirect.gi_samples : 1)),
-                    g};
+                    g, occluders};
 
+        for (int k = 0; k < TRACE_OCCLUDERS; k++)
+            occluders[k] = BVH_NO_SLOT;
 #ifdef _OPENMP
 #pragma omp single
         used = omp_get_num_threads();

@@ -120,11 +120,15 @@ static inline Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, 
     return shadow;
 }
 
-double shade_light_share(const Tracer *t, const Ray *shadow, real tmax)
+double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Light *light)
 {
+    size_t k = light ? (size_t)(light - t->scene->lights) : TRACE_OCCLUDERS;
+
     t->counts->shadow++;
     if (t->scene->has_transparency)
         return visibility_transmittance(t->scene, shadow, tmax);
+    if (k < TRACE_OCCLUDERS && t->occluders)
+        return visibility_occluded_cached(t->scene, shadow, tmax, &t->occluders[k]) ? 0 : 1;
     return visibility_occluded(t->scene, shadow, tmax) ? 0 : 1;
 }
 
@@ -156,7 +160,7 @@ static inline double shade_visibility(const Tracer *t, const Shade *sh, Vec3 n,
     real tmax;
     Ray shadow = shade_shadow_ray(sh, n, light, to_light, &tmax);
 
-    return shade_light_share(t, &shadow, tmax);
+    return shade_light_share(t, &shadow, tmax, light);
 }
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the

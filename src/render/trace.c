@@ -111,7 +111,7 @@ Colour trace_deferred(const Tracer *t, CutRay d)
     TracePath none = {0, 0};
 
     if (d.kind == RAY_SHADOW)
-        return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax)));
+        return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax, NULL)));
     trace_count_secondary(d.kind, t->counts);
     if (t->scene->named_count > 0)
         return colour_mul(trace_named_path(t, &d.ray, d.depth, d.weight, none), d.weight);

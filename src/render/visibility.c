@@ -154,11 +154,21 @@ static int visibility_occluded_by(const Scene *scene, ShapeKind kind, const Ray 
 
 int visibility_occluded(const Scene *scene, const Ray *ray, real tmax)
 {
+    uint32_t cache = BVH_NO_SLOT;
+
+    return visibility_occluded_cached(scene, ray, tmax, &cache);
+}
+
+int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, uint32_t *cache)
+{
+    /* Any crossing will do, so the cached one may be tried first. */
+    if (scene->accel && bvh_slot_occludes(scene->accel, *cache, ray, tmax))
+        return 1;
     for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED; m != 0; m &= m - 1)
         if (visibility_occluded_by(scene, visibility_first(m), ray, tmax))
             return 1;
     if (scene->accel)
-        return bvh_occluded(scene->accel, ray, tmax);
+        return bvh_occluder(scene->accel, ray, tmax, cache);
     /* Spheres first, inline: the course scene's shadow rays meet nothing
      * else. */
     for (size_t k = 0; k < scene->sphere_count; k++) {

@@ -201,6 +201,19 @@ int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
     return rh.ray.tfar < 0;
 }
 
+/* Embree's any-hit query names no occluder: no shadow cache. */
+int bvh_occluder(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot)
+{
+    *slot = BVH_NO_SLOT;
+    return bvh_occluded(bvh, ray, tmax);
+}
+
+int bvh_slot_occludes(const Bvh *bvh, uint32_t slot, const Ray *ray, real tmax)
+{
+    (void)bvh, (void)slot, (void)ray, (void)tmax;
+    return 0;
+}
+
 int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx)
 {
     (void)bvh, (void)ray, (void)tmax, (void)visit, (void)ctx;
