@@ -11,6 +11,8 @@
 # make gallery      render every example scene to docs/gallery/*.png
 # make bench        measure speed on generated scenes; writes docs/benchmarks.md
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
+# make race         only its race against the exact Embree renderer, scaling
+#                   and shapes' fields (tests/bench/anchor.sh)
 # make trade        measure error against time for every speed/accuracy knob;
 #                   writes docs/trade.md and docs/trade-*.svg
 # make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
@@ -93,7 +95,7 @@ SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
 
-.PHONY: all test check clean install uninstall gallery bench trade fuzz fuzz-long memcheck
+.PHONY: all test check clean install uninstall gallery bench race trade fuzz fuzz-long memcheck
 
 all: raytrace raytrace-diff raytrace-merge
 
@@ -206,6 +208,13 @@ bench: raytrace raytrace-diff $(BUILD)/scenegen
 	echo "bench: no Embree 3 (libembree-dev): no race against its traversal" >&2; fi
 	BENCH_EMBREE=$(BUILD)/raytrace-embree sh tests/bench/bench.sh ./raytrace ./raytrace-diff \
 		$(BUILD)/scenegen
+	sh tests/bench/anchor.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
+
+# The race against the exact Embree renderer (BENCH_ANCHOR, default
+# ../shared/anchors/embree), the scaling and the shapes' fields alone: the
+# section of docs/benchmarks.md that tests/bench/anchor.sh writes.
+race: raytrace raytrace-diff $(BUILD)/scenegen
+	sh tests/bench/anchor.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
 
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen

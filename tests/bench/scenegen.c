@@ -96,6 +96,33 @@ static void scenegen_spheres(long n, int pov)
     }
 }
 
+/* The field of scenegen_spheres() in the keyword format, of n spheres,
+ * cubes (of the spheres' volume: half-edge (pi / 6)^(1/3) r) or infinite
+ * vertical cylinders of the spheres' radii, under eight Blinn-Phong
+ * materials, on a floor plane, lit by one distant light. */
+static int scenegen_field(const char *kind, long n)
+{
+    static const int rgb[8][3] = {{230, 80, 60}, {80, 200, 90}, {70, 110, 230}, {230, 200, 70},
+                                  {200, 90, 210}, {70, 210, 210}, {235, 235, 235}, {150, 110, 80}};
+    double scale = strcmp(kind, "cube") == 0 ? cbrt(3.14159265358979323846 / 6) : 1;
+
+    if (strcmp(kind, "sphere") != 0 && strcmp(kind, "cube") != 0 && strcmp(kind, "cylinder") != 0)
+        return 2;
+    printf("# %ld random %ss in seed 002's keyword format (the benchmark's field)\n"
+           "camera 0 35 -60 0 24.2 0 1.3495 %d %d\nbackground 20 24 36\nambient 30 30 30\n"
+           "light -0.5 -1 0.5 255 250 240 1\n"
+           "material floor 200 200 200 0.2 0.7 0 1 0.3\n",
+           n, kind, FIELD_WIDTH, FIELD_WIDTH * 9 / 16);
+    for (int k = 0; k < 8; k++)
+        printf("material m%d %d %d %d 0.2 0.7 0.3 20 0.3\n", k, rgb[k][0], rgb[k][1], rgb[k][2]);
+    printf("plane 0 0 0 0 1 0 floor\n");
+    for (long i = 0; i < n; i++) {
+        Ball b = scenegen_ball(n, i);
+        printf("%s %.6f %.6f %.6f %.6f m%ld\n", kind, b.x, b.y, b.z, b.r * scale, i % 8);
+    }
+    return 0;
+}
+
 /* A height field of rolling hills, (side - 1)^2 quads of two triangles. */
 static double scenegen_height(double x, double z)
 {
@@ -151,6 +178,9 @@ int main(int argc, char **argv)
     }
     if (argc == 4 && strcmp(argv[1], "terrain") == 0)
         return scenegen_terrain(atol(argv[2]), argv[3]);
-    fprintf(stderr, "usage: scenegen course WIDTH | spheres N [pov] | terrain N OBJ\n");
+    if (argc == 4 && strcmp(argv[1], "field") == 0 && scenegen_field(argv[2], atol(argv[3])) == 0)
+        return 0;
+    fprintf(stderr, "usage: scenegen course WIDTH | spheres N [pov] | terrain N OBJ"
+                    " | field sphere|cube|cylinder N\n");
     return 2;
 }

@@ -1,0 +1,213 @@
+#!/bin/sh
+# anchor.sh: the race against the exact Embree renderer, the scaling of
+# time and memory with the sphere count, and the shapes' fields (`make
+# bench`, after bench.sh; `make race` alone). Not a test: it measures.
+#
+# The anchor (embree_rt: Embree 3 packets, every hit re-solved in double,
+# so its pictures are ours) lives outside the project, in BENCH_ANCHOR
+# (default ../shared/anchors/embree); it is built in build/anchor with
+# its own Makefile when libembree-dev is installed, and its scenes are
+# made by its gen_spheres.py. Both renderers run on every processor, run
+# for run alternately, BENCH_RUNS times (default 3); the table gives the
+# median and the best wall time of the whole command, and the peak
+# resident memory (GNU time), of each. Without the anchor, the race is
+# left out and said so; the scaling and shapes tables need only raytrace.
+#
+# Usage: sh tests/bench/anchor.sh RAYTRACE RAYTRACE-DIFF SCENEGEN [OUT.md]
+# Environment: BENCH_RUNS, BENCH_ANCHOR, BENCH_SCALE_MAX (largest sphere
+# count of the scaling table, default 10000000).
+# The section it writes replaces the one between its markers in OUT.
+
+RT=$1
+DIFF=$2
+GEN=$3
+OUT=${4:-docs/benchmarks.md}
+RUNS=${BENCH_RUNS:-3}
+ANCHOR=${BENCH_ANCHOR:-../shared/anchors/embree}
+SCALE_MAX=${BENCH_SCALE_MAX:-10000000}
+DIR=build/anchor
+ALL=$(nproc 2>/dev/null || echo 1)
+mkdir -p "$DIR" || exit 2
+
+. tests/lib.sh
+
+# seconds MS: MS milliseconds in seconds, two decimals.
+seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
+
+# timed FILE CMD...: runs CMD, its output to /dev/null, and appends to FILE
+# its wall time (ms) and peak resident size (KB, 0 without GNU time).
+timed() {
+    f=$1
+    shift
+    start=$(now)
+    if [ -n "$GNUTIME" ]; then
+        "$GNUTIME" -f %M -o "$DIR/rss" "$@" >/dev/null 2>"$DIR/err" ||
+            { cat "$DIR/err" >&2; exit 1; }
+    else
+        "$@" >/dev/null 2>"$DIR/err" || { cat "$DIR/err" >&2; exit 1; }
+        echo 0 >"$DIR/rss"
+    fi
+    end=$(now)
+    echo "$(((end - start) / 1000000)) $(tail -n 1 "$DIR/rss")" >>"$f"
+}
+
+GNUTIME=
+for t in /usr/bin/time /bin/time; do
+    [ -x "$t" ] && "$t" -f %M true >/dev/null 2>&1 && GNUTIME=$t && break
+done
+
+section=$DIR/section.md
+{
+    echo "<!-- anchor.sh: begin -->"
+    echo "## Against an exact Embree renderer"
+    echo
+    echo "Written by \`make bench\` (tests/bench/anchor.sh) on $(date +%Y-%m-%d), $ALL threads."
+    echo
+} >"$section"
+
+# The race.
+have_anchor=
+if [ -f "$ANCHOR/embree_rt.c" ] && [ -f "$ANCHOR/gen_spheres.py" ] &&
+    command -v python3 >/dev/null 2>&1; then
+    cp "$ANCHOR/embree_rt.c" "$ANCHOR/gen_spheres.py" "$ANCHOR/Makefile" "$DIR/" 2>/dev/null
+    chmod u+w "$DIR"/* 2>/dev/null
+    if make -s -C "$DIR" embree_rt >"$DIR/build.log" 2>&1; then
+        have_anchor=yes
+    else
+        echo "anchor: cannot build embree_rt (libembree-dev?): $(tail -n 1 "$DIR/build.log")" >&2
+    fi
+else
+    echo "anchor: no anchor in $ANCHOR (or no python3): no race" >&2
+fi
+if [ -n "$have_anchor" ]; then
+    for f in course_3840 spheres_1k spheres_100k spheres_1m; do
+        [ -s "$DIR/$f.txt" ] || { python3 "$DIR/gen_spheres.py" all --dir "$DIR" 2>/dev/null; break; }
+    done
+    {
+        echo "The anchor: $ANCHOR (embree_rt: Embree 3 packets of 8, every hit"
+        echo "re-solved in double), built with its own Makefile (-O3 -march=native);"
+        echo "its scenes from its gen_spheres.py. Both on $ALL threads, run for run"
+        echo "alternately, $RUNS runs each; wall time of the whole command (reading,"
+        echo "building, rendering, writing), median (best); peak memory: the"
+        echo "process's maximum resident size. Ratios: raytrace over the anchor"
+        echo "(below 1: raytrace is faster or smaller). Pixels: where the two"
+        echo "pictures differ (ties the two break apart)."
+        echo
+        echo "| scene | anchor | raytrace | time ratio (median, best) | anchor memory | raytrace memory | memory ratio | pixels that differ |"
+        echo "|-------|--------|----------|---------------------------|---------------|-----------------|--------------|--------------------|"
+    } >>"$section"
+    for s in course_3840 spheres_1k spheres_100k spheres_1m; do
+        : >"$DIR/t-a"
+        : >"$DIR/t-r"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            timed "$DIR/t-a" "$DIR/embree_rt" "$DIR/$s.txt" "$DIR/a.ppm" --threads "$ALL"
+            timed "$DIR/t-r" "$RT" -q -j "$ALL" "$DIR/$s.txt" "$DIR/r.ppm"
+            i=$((i + 1))
+        done
+        a=$(cut -d' ' -f1 "$DIR/t-a" | median)
+        r=$(cut -d' ' -f1 "$DIR/t-r" | median)
+        ab=$(cut -d' ' -f1 "$DIR/t-a" | sort -n | head -1)
+        rb=$(cut -d' ' -f1 "$DIR/t-r" | sort -n | head -1)
+        am=$(cut -d' ' -f2 "$DIR/t-a" | sort -n | tail -1)
+        rm_=$(cut -d' ' -f2 "$DIR/t-r" | sort -n | tail -1)
+        "$DIFF" "$DIR/a.ppm" "$DIR/r.ppm" >"$DIR/diff.log" 2>&1
+        px=$(sed -n 's/^over tolerance 0: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
+        if [ "$am" -gt 0 ]; then
+            mem=$(printf '%.0f MB | %.0f MB | %.2f' "$(echo "$am / 1024" | bc -l)" \
+                "$(echo "$rm_ / 1024" | bc -l)" "$(echo "$rm_ / $am" | bc -l)")
+        else
+            mem="n/a | n/a | n/a"
+        fi
+        printf '| %s | %s s | %s s | %.2f (%.2f) | %s | %s |\n' "$s" "$(seconds "$a")" \
+            "$(seconds "$r")" "$(echo "$r / $a" | bc -l)" "$(echo "$rb / $ab" | bc -l)" \
+            "$mem" "${px:-0 of all}" >>"$section"
+        echo "anchor: $s: anchor $a ms, raytrace $r ms" >&2
+    done
+    echo >>"$section"
+else
+    echo "No anchor was found or built in this run (BENCH_ANCHOR, libembree-dev): no race." >>"$section"
+    echo >>"$section"
+fi
+
+# Scaling with the sphere count: the benchmark's field at 480 x 270.
+{
+    echo "### Time and memory against the sphere count"
+    echo
+    echo "The benchmark's field (tests/bench/scenegen.c) at 480 × 270, $ALL threads,"
+    echo "one run each: reading, building and rendering (from -v), peak memory and"
+    echo "the memory it takes a sphere ((peak − the 10-sphere run's) / n)."
+    echo
+    echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere |"
+    echo "|---------|------|-------|--------|-----------------|-------------|----------------|"
+} >>"$section"
+: >"$DIR/fit"
+base=
+n=10
+while [ "$n" -le "$SCALE_MAX" ]; do
+    "$GEN" spheres "$n" | resize /dev/stdin 480 >"$DIR/field.txt"
+    "$RT" -v -j "$ALL" "$DIR/field.txt" "$DIR/field.ppm" 2>"$DIR/log" >/dev/null ||
+        { cat "$DIR/log" >&2; exit 1; }
+    read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+    build_s=$(sed -n 's/.*built in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+    render_s=$(sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+    peak=$(sed -n 's/^raytrace: peak memory: \([0-9.]*\) MB$/\1/p' "$DIR/log")
+    [ -n "$base" ] || base=$peak
+    per=$(echo "($peak - $base) * 1000000 / $n" | bc -l)
+    lg=$(echo "l($n) / l(2)" | bc -l)
+    printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %.0f |\n' "$n" "$read_s" \
+        "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per" >>"$section"
+    echo "$lg $render_s" >>"$DIR/fit"
+    echo "anchor: scaling: $n spheres" >&2
+    n=$((n * 10))
+done
+rm -f "$DIR/field.txt"
+# The render time fitted as a + b log2 n (least squares, n >= 1000).
+awk 'NR >= 3 { x += $1; y += $2; xx += $1 * $1; xy += $1 * $2; yy += $2 * $2; k++ }
+    END { b = (k * xy - x * y) / (k * xx - x * x); a = (y - b * x) / k
+          r = (k * xy - x * y) / sqrt((k * xx - x * x) * (k * yy - y * y))
+          printf "\nRender time fitted from 1,000 spheres on: %.4f s + %.4f s × log2 n (correlation %.3f).\n\n", a, b, r }' \
+    "$DIR/fit" >>"$section"
+
+# The shapes' fields: the same positions as spheres, cubes and cylinders.
+{
+    echo "### Fields of each bounded and unbounded shape"
+    echo
+    echo "The field in the keyword format (\`scenegen field KIND N\`: the same"
+    echo "positions, eight Blinn-Phong materials, a floor plane, a distant light),"
+    echo "1920 × 1080, $ALL threads, median of $RUNS runs of the whole command."
+    echo "Cubes go into the hierarchy like spheres; infinite cylinders cannot"
+    echo "(they have no box), so every ray tests each of them: their field is"
+    echo "measured at sizes a renderer can finish."
+    echo
+    echo "| shape | count | wall time | over spheres of the same count |"
+    echo "|-------|-------|-----------|--------------------------------|"
+} >>"$section"
+for spec in "sphere 100000" "cube 100000" "sphere 10" "cylinder 10" "sphere 100" \
+    "cylinder 100"; do
+    set -- $spec
+    "$GEN" field "$1" "$2" >"$DIR/$1-$2.txt"
+    : >"$DIR/t-f"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        timed "$DIR/t-f" "$RT" -q -j "$ALL" "$DIR/$1-$2.txt" "$DIR/f.ppm"
+        i=$((i + 1))
+    done
+    ms=$(cut -d' ' -f1 "$DIR/t-f" | median)
+    [ "$1" = sphere ] && eval "sphere_$2=$ms"
+    eval "ref=\$sphere_$2"
+    printf '| %s | %s | %s s | %.2f× |\n' "$1" "$2" "$(seconds "$ms")" \
+        "$(echo "$ms / $ref" | bc -l)" >>"$section"
+    echo "anchor: field of $2 ${1}s: $ms ms" >&2
+done
+echo "<!-- anchor.sh: end -->" >>"$section"
+
+# Into OUT, in place of the last section it wrote, or at its end.
+if grep -q '^<!-- anchor.sh: begin -->$' "$OUT" 2>/dev/null; then
+    awk -v f="$section" '/^<!-- anchor.sh: begin -->$/ { while ((getline l < f) > 0) print l; skip = 1; next }
+        /^<!-- anchor.sh: end -->$/ { skip = 0; next } !skip' "$OUT" >"$DIR/out.md" &&
+        cat "$DIR/out.md" >"$OUT"
+else
+    { echo; cat "$section"; } >>"$OUT"
+fi
+echo "anchor: wrote $OUT" >&2
