@@ -19,6 +19,8 @@
 #                   each (default 60); tests/fuzz/fuzz.sh says more
 # make fuzz-long    the same, 30 minutes a parser, with totals
 # make memcheck     renders and comparisons under Valgrind's memcheck
+# make report       the course report, report/report.pdf from report/report.md
+#                   (needs pandoc, xelatex, rsvg-convert and Graphviz's dot)
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
 # The default -O3 is 8% faster than -O2 on the sphere field (same bytes).
@@ -95,7 +97,7 @@ SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
 
-.PHONY: all test check clean install uninstall gallery bench race trade fuzz fuzz-long memcheck
+.PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck
 
 all: raytrace raytrace-diff raytrace-merge
 
@@ -142,6 +144,7 @@ test: raytrace raytrace-diff raytrace-merge $(BUILD)/inject.so $(BUILD)/unit $(F
 	sh tests/jpeg.sh ./raytrace ./raytrace-diff
 	sh tests/tiles.sh ./raytrace ./raytrace-merge
 	sh tests/faults.sh ./raytrace $(BUILD)/inject.so
+	sh tests/report.sh
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
@@ -215,6 +218,23 @@ bench: raytrace raytrace-diff $(BUILD)/scenegen
 # section of docs/benchmarks.md that tests/bench/anchor.sh writes.
 race: raytrace raytrace-diff $(BUILD)/scenegen
 	sh tests/bench/anchor.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
+
+# The course report: its class diagram drawn again from the code
+# (report/classes.sh), both diagrams by Graphviz, the PDF by pandoc and
+# XeLaTeX (SVG figures through rsvg-convert). Without those tools it says
+# which are missing and fails.
+REPORT_TOOLS := pandoc:pandoc xelatex:texlive-xetex rsvg-convert:librsvg2-bin dot:graphviz
+report:
+	@missing=; for t in $(REPORT_TOOLS); do command -v $${t%%:*} >/dev/null 2>&1 || \
+		missing="$$missing $${t%%:*} (Debian: $${t#*:})"; done; \
+	if [ -n "$$missing" ]; then echo "make report: missing:$$missing" >&2; exit 1; fi
+	sh report/classes.sh >report/classes.dot
+	dot -Tsvg report/classes.dot -o report/classes.svg
+	dot -Tsvg report/activity.dot -o report/activity.svg
+	cd report && pandoc report.md --pdf-engine=xelatex -V geometry:margin=2cm \
+		-V fontsize=10pt -V mainfont="DejaVu Serif" -V sansfont="DejaVu Sans" \
+		-V monofont="DejaVu Sans Mono" -o report.pdf
+	@echo "make report: wrote report/report.pdf"
 
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
