@@ -10,7 +10,7 @@
 #     aside), and every picture it shows is under report/;
 #  4. every picture of report/figures is the renderer's own: the same bytes
 #     as docs/gallery/ (which tests/cli.sh renders again) or docs/trade-*.svg
-#     (which make trade draws).
+#     (which make trade draws) or docs/bench-*.svg (make bench, make race).
 #
 # Usage: sh tests/report.sh   (from the repository root)
 
@@ -81,7 +81,7 @@ bad=""
 for f in report/figures/*; do
     name=${f##*/}
     case $name in
-    trade-*.svg) ref=docs/$name ;;
+    trade-*.svg | bench-*.svg) ref=docs/$name ;;
     *.png) ref=docs/gallery/$name ;;
     *) bad="$bad $name (neither a render nor a trade plot)"; continue ;;
     esac

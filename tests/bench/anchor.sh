@@ -176,6 +176,8 @@ fi
     echo "|---------|------|-------|--------|-----------------|-------------|----------------|"
 } >>"$section"
 : >"$DIR/fit"
+: >"$DIR/plot-time"
+: >"$DIR/plot-memory"
 base=
 n=10
 while [ "$n" -le "$SCALE_MAX" ]; do
@@ -192,16 +194,31 @@ while [ "$n" -le "$SCALE_MAX" ]; do
     printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %.0f |\n' "$n" "$read_s" \
         "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per" >>"$section"
     echo "$lg $render_s" >>"$DIR/fit"
+    echo "render $n $render_s" >>"$DIR/plot-time"
+    echo "peak $n $peak" >>"$DIR/plot-memory"
     echo "anchor: scaling: $n spheres" >&2
     n=$((n * 10))
 done
 rm -f "$DIR/field.txt"
+# Drawn too (tests/bench/plot.awk), for the report.
+awk -v title="Render time against the sphere count (480 x 270, $ALL threads)" \
+    -v xlabel="spheres" -v ylabel="render time (s)" -v logx=1 \
+    -f tests/bench/plot.awk "$DIR/plot-time" >docs/bench-scaling.svg
+awk -v title="Peak memory against the sphere count" -v xlabel="spheres" \
+    -v ylabel="peak memory (MB)" -v logx=1 -v logy=1 \
+    -f tests/bench/plot.awk "$DIR/plot-memory" >docs/bench-memory.svg
 # The render time fitted as a + b log2 n (least squares, n >= 1000).
 awk 'NR >= 3 { x += $1; y += $2; xx += $1 * $1; xy += $1 * $2; yy += $2 * $2; k++ }
     END { b = (k * xy - x * y) / (k * xx - x * x); a = (y - b * x) / k
           r = (k * xy - x * y) / sqrt((k * xx - x * x) * (k * yy - y * y))
           printf "\nRender time fitted from 1,000 spheres on: %.4f s + %.4f s × log2 n (correlation %.3f).\n\n", a, b, r }' \
     "$DIR/fit" >>"$section"
+{
+    echo "![render time against the sphere count](bench-scaling.svg)"
+    echo
+    echo "![peak memory against the sphere count](bench-memory.svg)"
+    echo
+} >>"$section"
 
 # The shapes' fields: the same positions as spheres, cubes and cylinders.
 {
