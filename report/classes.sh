@@ -11,6 +11,9 @@
 # tests/report.sh fails when report/classes.dot is not what this writes.
 
 LAYERS="base math image geometry accel scene scenefile render cli"
+# One order on every machine, whatever its locale.
+LC_ALL=C
+export LC_ALL
 
 # Every module "LAYER/NAME", once.
 modules() {
