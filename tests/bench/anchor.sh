@@ -227,15 +227,15 @@ awk 'NR >= 3 { x += $1; y += $2; xx += $1 * $1; xy += $1 * $2; yy += $2 * $2; k+
     echo "The field in the keyword format (\`scenegen field KIND N\`: the same"
     echo "positions, eight Blinn-Phong materials, a floor plane, a distant light),"
     echo "1920 × 1080, $ALL threads, median of $RUNS runs of the whole command."
-    echo "Cubes go into the hierarchy like spheres; infinite cylinders cannot"
-    echo "(they have no box), so every ray tests each of them: their field is"
-    echo "measured at sizes a renderer can finish."
+    echo "Cubes and squares go into the hierarchy like spheres; infinite cylinders"
+    echo "and cones cannot (they have no box), so every ray tests each of them:"
+    echo "their fields are measured at sizes a renderer can finish."
     echo
     echo "| shape | count | wall time | over spheres of the same count |"
     echo "|-------|-------|-----------|--------------------------------|"
 } >>"$section"
-for spec in "sphere 100000" "cube 100000" "sphere 10" "cylinder 10" "sphere 100" \
-    "cylinder 100"; do
+for spec in "sphere 100000" "cube 100000" "square 100000" "sphere 10" "cylinder 10" \
+    "cone 10" "sphere 100" "cylinder 100" "cone 100"; do
     set -- $spec
     "$GEN" field "$1" "$2" >"$DIR/$1-$2.txt"
     : >"$DIR/t-f"

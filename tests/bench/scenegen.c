@@ -97,16 +97,20 @@ static void scenegen_spheres(long n, int pov)
 }
 
 /* The field of scenegen_spheres() in the keyword format, of n spheres,
- * cubes (of the spheres' volume: half-edge (pi / 6)^(1/3) r) or infinite
- * vertical cylinders of the spheres' radii, under eight Blinn-Phong
+ * cubes (of the spheres' volume: half-edge (pi / 6)^(1/3) r), squares (of
+ * their cross-section's area: half-edge sqrt(pi) / 2 r, tilted every
+ * way), infinite vertical cylinders of the spheres' radii or infinite
+ * cones (that radius, apex 2 r above), under eight Blinn-Phong
  * materials, on a floor plane, lit by one distant light. */
 static int scenegen_field(const char *kind, long n)
 {
     static const int rgb[8][3] = {{230, 80, 60}, {80, 200, 90}, {70, 110, 230}, {230, 200, 70},
                                   {200, 90, 210}, {70, 210, 210}, {235, 235, 235}, {150, 110, 80}};
-    double scale = strcmp(kind, "cube") == 0 ? cbrt(3.14159265358979323846 / 6) : 1;
+    const double pi = 3.14159265358979323846;
+    double scale = strcmp(kind, "cube") == 0 ? cbrt(pi / 6) : strcmp(kind, "square") == 0 ? sqrt(pi) / 2 : 1;
 
-    if (strcmp(kind, "sphere") != 0 && strcmp(kind, "cube") != 0 && strcmp(kind, "cylinder") != 0)
+    if (strcmp(kind, "sphere") != 0 && strcmp(kind, "cube") != 0 && strcmp(kind, "square") != 0 &&
+        strcmp(kind, "cylinder") != 0 && strcmp(kind, "cone") != 0)
         return 2;
     printf("# %ld random %ss in seed 002's keyword format (the benchmark's field)\n"
            "camera 0 35 -60 0 24.2 0 1.3495 %d %d\nbackground 20 24 36\nambient 30 30 30\n"
@@ -118,7 +122,14 @@ static int scenegen_field(const char *kind, long n)
     printf("plane 0 0 0 0 1 0 floor\n");
     for (long i = 0; i < n; i++) {
         Ball b = scenegen_ball(n, i);
-        printf("%s %.6f %.6f %.6f %.6f m%ld\n", kind, b.x, b.y, b.z, b.r * scale, i % 8);
+        if (strcmp(kind, "square") == 0)
+            printf("square %.6f %.6f %.6f %.3f %.3f %.3f %.6f m%ld\n", b.x, b.y, b.z,
+                   scenegen_random(3, 3 * (uint64_t)i) - 0.5, 0.5 + scenegen_random(3, 3 * (uint64_t)i + 1),
+                   scenegen_random(3, 3 * (uint64_t)i + 2) - 0.5, b.r * scale, i % 8);
+        else if (strcmp(kind, "cone") == 0)
+            printf("cone %.6f %.6f %.6f %.6f %.6f m%ld\n", b.x, b.y, b.z, b.r, 2 * b.r, i % 8);
+        else
+            printf("%s %.6f %.6f %.6f %.6f m%ld\n", kind, b.x, b.y, b.z, b.r * scale, i % 8);
     }
     return 0;
 }
@@ -181,6 +192,6 @@ int main(int argc, char **argv)
     if (argc == 4 && strcmp(argv[1], "field") == 0 && scenegen_field(argv[2], atol(argv[3])) == 0)
         return 0;
     fprintf(stderr, "usage: scenegen course WIDTH | spheres N [pov] | terrain N OBJ"
-                    " | field sphere|cube|cylinder N\n");
+                    " | field sphere|cube|square|cylinder|cone N\n");
     return 2;
 }
