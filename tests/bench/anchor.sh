@@ -189,9 +189,11 @@ while [ "$n" -le "$SCALE_MAX" ]; do
     render_s=$(sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log")
     peak=$(sed -n 's/^raytrace: peak memory: \([0-9.]*\) MB$/\1/p' "$DIR/log")
     [ -n "$base" ] || base=$peak
-    per=$(echo "($peak - $base) * 1000000 / $n" | bc -l)
+    # Below 10,000 spheres the scene is lost in the process's own memory.
+    per=—
+    [ "$n" -lt 10000 ] || per=$(printf '%.0f' "$(echo "($peak - $base) * 1000000 / $n" | bc -l)")
     lg=$(echo "l($n) / l(2)" | bc -l)
-    printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %.0f |\n' "$n" "$read_s" \
+    printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %s |\n' "$n" "$read_s" \
         "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per" >>"$section"
     echo "$lg $render_s" >>"$DIR/fit"
     echo "render $n $render_s" >>"$DIR/plot-time"
