@@ -10,7 +10,8 @@
 # Usage: sh report/classes.sh >report/classes.dot   (from the repository root)
 # tests/report.sh fails when report/classes.dot is not what this writes.
 
-LAYERS="base math image geometry accel scene scenefile render cli"
+# LAYERS and module_edges.
+. "$(dirname "$0")/../tests/lib.sh"
 # One order on every machine, whatever its locale.
 LC_ALL=C
 export LC_ALL
@@ -18,20 +19,6 @@ export LC_ALL
 # Every module "LAYER/NAME", once.
 modules() {
     find src include -name '*.[ch]' | sed 's|^[a-z]*/\([a-z]*\)/\([A-Za-z0-9_]*\)\.[ch]$|\1/\2|' | sort -u
-}
-
-# "FROM TO" for each quoted include between two modules.
-edges() {
-    find src include -name '*.[ch]' | sort | while read -r f; do
-        from=$(printf '%s\n' "$f" | awk -F/ '{ n = $3; sub(/\.[ch]$/, "", n); print $2 "/" n }')
-        sed -n 's/^#[ \t]*include[ \t]*"\([^"]*\)".*/\1/p' "$f" | while read -r inc; do
-            case $inc in
-            */*) to=${inc%.h} ;;
-            *) to=${from%/*}/${inc%.h} ;;
-            esac
-            [ "$from" != "$to" ] && echo "$from $to"
-        done
-    done | sort -u
 }
 
 # The structures a module's headers declare: "MODULE TYPE" lines, in the
@@ -48,7 +35,7 @@ T=${TMPDIR:-/tmp}/classes.$$
 mkdir -p "$T" || exit 2
 trap 'rm -rf "$T"' EXIT
 modules >"$T/modules"
-edges >"$T/edges"
+module_edges . >"$T/edges"
 types >"$T/types"
 
 echo "// The modules of raytrace, their structures and who uses whom: written by"

@@ -3,7 +3,7 @@
 #
 #  1. Each folder of src/ and include/ includes only headers of its own
 #     folder and of the folders below it, in the order of LAYERS (bottom
-#     first); every folder is one of them.
+#     first, in tests/lib.sh); every folder is one of them.
 #  2. No modules include each other in a circle (a module is a .c file and
 #     its header, src/F/NAME.c and include/F/NAME.h or src/F/NAME.h).
 #  3. The check itself fails on a tree with a backward include or a circle
@@ -11,27 +11,10 @@
 #
 # Usage: sh tests/layers.sh   (from the repository root)
 
-LAYERS="base math image geometry accel scene scenefile render cli"
-
 SUITE=layers
 . "$(dirname "$0")/check.sh"
+. "$(dirname "$0")/lib.sh"
 
-
-# edges ROOT: "FROM TO" for each quoted include of a file under ROOT's src/
-# and include/, as modules FOLDER/NAME (a bare "NAME.h" is a header beside
-# the file, in its own folder).
-edges() {
-    (cd "$1" && find src include -name '*.[ch]' | sort | while read -r f; do
-        from=$(printf '%s\n' "$f" | awk -F/ '{ n = $3; sub(/\.[ch]$/, "", n); print $2 "/" n }')
-        sed -n 's/^#[ \t]*include[ \t]*"\([^"]*\)".*/\1/p' "$f" | while read -r inc; do
-            case $inc in
-            */*) to=${inc%.h} ;;
-            *) to=${from%/*}/${inc%.h} ;;
-            esac
-            [ "$from" != "$to" ] && echo "$from $to"
-        done
-    done)
-}
 
 # rank FOLDER: its place in LAYERS from 0, or nothing when it is not one.
 rank() { echo "$LAYERS" | tr ' ' '\n' | awk -v f="$1" '$0 == f { print NR - 1 }'; }
@@ -39,7 +22,7 @@ rank() { echo "$LAYERS" | tr ' ' '\n' | awk -v f="$1" '$0 == f { print NR - 1 }'
 # check ROOT: prints each breach of rules 1 and 2 in the tree at ROOT;
 # prints nothing when it holds.
 check() {
-    edges "$1" >"$T/edges"
+    module_edges "$1" >"$T/edges"
     for d in "$1"/src/* "$1"/include/*; do
         [ -d "$d" ] && [ -z "$(rank "${d##*/}")" ] && echo "folder ${d#"$1"/} is not a layer of tests/layers.sh"
     done

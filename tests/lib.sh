@@ -1,6 +1,9 @@
 # lib.sh: shell helpers shared by the measurement and test scripts
-# (tests/bench/bench.sh, tests/bench/trade.sh, tests/memcheck.sh); sourced,
-# not run.
+# (tests/bench/*.sh, tests/memcheck.sh, tests/layers.sh) and the report's
+# class diagram (report/classes.sh); sourced, not run.
+
+# The layers of src/ and include/, bottom first (docs/design.md).
+LAYERS="base math image geometry accel scene scenefile render cli"
 
 # now: nanoseconds since the epoch.
 now() { date +%s%N; }
@@ -19,4 +22,24 @@ resize() {
         kw && $1 == "camera" { $10 = int($10 * w / $9); $9 = w }
         !kw && n == 5 { print w; next }
         { print }' "$1"
+}
+
+# seconds MS: MS milliseconds in seconds, two decimals.
+seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
+
+# module_edges ROOT: "FROM TO" once for each quoted include between two
+# modules of the tree at ROOT (a module is FOLDER/NAME: src/F/NAME.c with
+# include/F/NAME.h or src/F/NAME.h; a bare "NAME.h" is a header beside the
+# file, in its own folder), sorted.
+module_edges() {
+    (cd "$1" && find src include -name '*.[ch]' | sort | while read -r f; do
+        from=$(printf '%s\n' "$f" | awk -F/ '{ n = $3; sub(/\.[ch]$/, "", n); print $2 "/" n }')
+        sed -n 's/^#[ \t]*include[ \t]*"\([^"]*\)".*/\1/p' "$f" | while read -r inc; do
+            case $inc in
+            */*) to=${inc%.h} ;;
+            *) to=${from%/*}/${inc%.h} ;;
+            esac
+            [ "$from" != "$to" ] && echo "$from $to"
+        done
+    done | sort -u)
 }

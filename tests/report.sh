@@ -25,8 +25,9 @@ else
     fail "report/classes.dot does not match the code: run sh report/classes.sh >report/classes.dot and make report" \
         "$(diff report/classes.dot "$T/classes.dot" | head -20)"
 fi
-mkdir -p "$T/tree"
+mkdir -p "$T/tree/tests"
 cp -R src include report "$T/tree/"
+cp tests/lib.sh "$T/tree/tests/"
 echo '#include "render/trace.h"' >>"$T/tree/src/base/grow.c" 2>/dev/null ||
     echo '#include "render/trace.h"' >"$T/tree/src/base/grow.c"
 (cd "$T/tree" && sh report/classes.sh >"$T/planted.dot" 2>/dev/null)

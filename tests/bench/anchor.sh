@@ -31,8 +31,6 @@ mkdir -p "$DIR" || exit 2
 
 . tests/lib.sh
 
-# seconds MS: MS milliseconds in seconds, two decimals.
-seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
 
 # timed FILE CMD...: runs CMD, its output to /dev/null, and appends to FILE
 # its wall time (ms) and peak resident size (KB, 0 without GNU time).

@@ -27,8 +27,6 @@ mkdir -p "$DIR" || exit 2
 
 . tests/lib.sh
 
-# seconds MS: MS milliseconds in seconds, two decimals.
-seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
 
 # scene NAME: generates build/bench/NAME.txt once.
 scene() {
