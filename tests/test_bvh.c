@@ -33,10 +33,9 @@ static void random_scene(Scene *sc, int n, double s)
         }
         sp.centre = c;
         sp.radius = s * 0.05 * rng_log_scale(-1, 0);
-        sp.material = m;
-        CHECK_INT(0, scene_add_sphere(sc, &sp));
+        CHECK_INT(0, scene_add_sphere(sc, sp.centre, sp.radius, &m));
         if (i % 10 == 0) /* the same sphere again: exact ties */
-            CHECK_INT(0, scene_add_sphere(sc, &sp));
+            CHECK_INT(0, scene_add_sphere(sc, sp.centre, sp.radius, &m));
         if (triangle_make(&tri, c, vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s)),
                           vec3_add(c, vec3_scale(rng_unit_vector(), 0.1 * s))) == 0) {
             CHECK_INT(0, scene_add_triangle(sc, &tri, &m));
@@ -207,10 +206,9 @@ static void bvh_stays_shallow_on_degenerate_scenes(void)
     scene_init(&sc);
     CHECK_INT(0, scene_add_light(&sc, &light));
     for (int i = 0; i < 5000; i++) {
-        Sphere a = {{1, 2, 3}, 1, material_plain(colour(1, 1, 1), 0), 0};
-        Sphere b = {{pow(1.01, i), 0, 0}, 0.5, material_plain(colour(1, 1, 1), 0), 0};
-        CHECK_INT(0, scene_add_sphere(&sc, &a));
-        CHECK_INT(0, scene_add_sphere(&sc, &b));
+        Material m = material_plain(colour(1, 1, 1), 0);
+        CHECK_INT(0, scene_add_sphere(&sc, vec3(1, 2, 3), 1, &m));
+        CHECK_INT(0, scene_add_sphere(&sc, vec3(pow(1.01, i), 0, 0), 0.5, &m));
     }
     CHECK_INT(0, build_over(&bvh, &sc, 1));
     CHECK(bvh.depth <= 48 + 32);
@@ -253,8 +251,8 @@ static void bvh_frame_sits_at_the_median(void)
             scene_init(&sc);
             CHECK_INT(0, scene_add_light(&sc, &light));
             for (int k = 0; k < n; k++, v /= 3) {
-                Sphere s = {{v % 3, 0, 0}, 0.25, material_plain(colour(1, 1, 1), 0), 0};
-                CHECK_INT(0, scene_add_sphere(&sc, &s));
+                Material m = material_plain(colour(1, 1, 1), 0);
+                CHECK_INT(0, scene_add_sphere(&sc, vec3(v % 3, 0, 0), 0.25, &m));
                 count[v % 3]++;
             }
             median = n / 2 < count[0] ? 0 : n / 2 < count[0] + count[1] ? 1 : 2;
@@ -270,14 +268,13 @@ static void bvh_frame_sits_at_the_median(void)
     {
         Scene sc;
         Bvh bvh;
-        Sphere floor = {{0, -1e5, 0}, 1e5, material_plain(colour(1, 1, 1), 0), 0};
+        Material m = material_plain(colour(1, 1, 1), 0);
         scene_init(&sc);
         CHECK_INT(0, scene_add_light(&sc, &light));
-        CHECK_INT(0, scene_add_sphere(&sc, &floor));
+        CHECK_INT(0, scene_add_sphere(&sc, vec3(0, -1e5, 0), 1e5, &m));
         for (int i = 0; i < 1000; i++) {
-            Sphere s = {{rng_range(-10, 10), rng_range(0, 10), rng_range(0, 10)}, 0.1,
-                        material_plain(colour(1, 1, 1), 0), 0};
-            CHECK_INT(0, scene_add_sphere(&sc, &s));
+            Vec3 c = vec3(rng_range(-10, 10), rng_range(0, 10), rng_range(0, 10));
+            CHECK_INT(0, scene_add_sphere(&sc, c, 0.1, &m));
         }
         CHECK_INT(0, build_over(&bvh, &sc, 1));
         CHECK(fabs(bvh.centre[0]) < 2 && fabs(bvh.centre[1] - 5) < 2 &&
@@ -455,8 +452,7 @@ static void bvh_queries_see_thin_boxes_from_afar(void)
 
         sp.centre = i < 180 ? c : vec3_scale(rng_unit_vector(), 1);
         sp.radius = i < 180 ? 1e-9 : 0.1;
-        sp.material = m;
-        CHECK_INT(0, scene_add_sphere(&sc, &sp));
+        CHECK_INT(0, scene_add_sphere(&sc, sp.centre, sp.radius, &m));
         e[i % 3] = f[i % 3] = 0; /* in the plane through c along two axes */
         if (triangle_make(&tri, c, vec3_add(c, vec3(e[0], e[1], e[2])),
                           vec3_add(c, vec3(f[0], f[1], f[2]))) == 0)

@@ -45,9 +45,9 @@ static void keyword_reads_the_seed_scene(void)
     CHECK_NEAR(0.7, sc.named[0].ks, 0);
     CHECK_NEAR(10, sc.named[0].shininess, 0);
     CHECK_INT(1, (long long)sc.sphere_count);
-    CHECK_INT(0, sc.spheres[0].material.named);
-    CHECK_NEAR(255, sc.spheres[0].material.colour.r, 0);
-    CHECK_NEAR(0, sc.spheres[0].material.reflection, 0);
+    CHECK_INT(0, scene_material(&sc, SHAPE_SPHERE, 0).named);
+    CHECK_NEAR(255, scene_material(&sc, SHAPE_SPHERE, 0).colour.r, 0);
+    CHECK_NEAR(0, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
     CHECK_NEAR(0.4, sc.spheres[0].radius, 0);
     CHECK_INT(1, (long long)sc.light_count);
     CHECK_INT(1, sc.lights[0].distant);
@@ -92,8 +92,8 @@ static void keyword_reads_every_element_in_any_order(void)
     /* eta_r without tau: all the light not mirrored is transmitted. */
     CHECK_NEAR(0.9, scene_material_of(&sc, &sc.triangles[0])->transparency, 1e-16);
     CHECK_NEAR(1.5, scene_material_of(&sc, &sc.triangles[0])->ior, 0);
-    CHECK_NEAR(0.5, sc.spheres[1].material.transparency, 0);
-    CHECK_NEAR(0.2, sc.spheres[1].material.reflection, 0);
+    CHECK_NEAR(0.5, scene_material(&sc, SHAPE_SPHERE, 1).transparency, 0);
+    CHECK_NEAR(0.2, scene_material(&sc, SHAPE_SPHERE, 1).reflection, 0);
     CHECK(sc.has_transparency);
     scene_free(&sc);
 }
@@ -413,8 +413,8 @@ static void keyword_finds_many_materials_by_name(void)
                                 n - 1 - i);
     CHECK_INT(0, kw(text, &sc, &err));
     for (size_t i = 0; i < n && sc.sphere_count == n; i++)
-        ok &= sc.spheres[i].material.named == (int)(n - 1 - i) &&
-              sc.spheres[i].material.colour.r == (double)((n - 1 - i) % 256);
+        ok &= scene_material(&sc, SHAPE_SPHERE, i).named == (int)(n - 1 - i) &&
+              scene_material(&sc, SHAPE_SPHERE, i).colour.r == (double)((n - 1 - i) % 256);
     CHECK(ok);
     scene_free(&sc);
     free(text);
@@ -540,8 +540,9 @@ static int same_scene(const Scene *a, const Scene *b)
     }
     for (size_t i = 0; same && i < a->sphere_count; i++) {
         const Sphere *p = &a->spheres[i], *q = &b->spheres[i];
+        Material pm = scene_material(a, SHAPE_SPHERE, i), qm = scene_material(b, SHAPE_SPHERE, i);
         same = SAME(p->centre, q->centre) && SAME(p->radius, q->radius) &&
-               same_material(&p->material, &q->material) && p->order == q->order;
+               same_material(&pm, &qm) && p->order == q->order;
     }
     for (size_t i = 0; same && i < a->plane_count; i++) {
         const Plane *p = &a->planes[i], *q = &b->planes[i];

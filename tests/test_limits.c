@@ -70,7 +70,7 @@ static void limits_scene_stops_at_the_element_that_passes(void)
 }
 
 /* scene_add_spheres()'s fill: writes the spheres the context says, sphere
- * k at x = k and transparent when k == 7; returns the context's code. */
+ * k at x = k and a half mirror when k == 7; returns the context's code. */
 typedef struct {
     size_t n;
     int code;
@@ -83,19 +83,20 @@ static int limits_fill(Sphere *room, void *ctx)
     for (size_t k = 0; k < f->n; k++) {
         room[k].centre = vec3((double)k, 0, 3);
         room[k].radius = 1;
-        room[k].material = material_plain(colour(1, 2, 3), 0);
-        room[k].material.transparency = k == 7 ? 0.5 : 0;
+        room[k].colour = colour(1, 2, 3);
+        room[k].reflection = k == 7 ? 0.5 : 0;
     }
     return f->code;
 }
 
-/* Spheres added at once take the room, positions and flags that adding
+/* Spheres added at once take the room, positions and materials that adding
  * them one by one gives, or leave the scene as it was: when the fill
  * fails, and when the memory limit stops one of them. */
 static void limits_spheres_added_at_once_as_one_by_one(void)
 {
     Scene one, all;
-    Sphere s = {vec3(0, 0, 3), 1, material_plain(colour(1, 2, 3), 0), 0};
+    Vec3 c = vec3(0, 0, 3);
+    Material m = material_plain(colour(1, 2, 3), 0);
     Light light = light_point(vec3(0, 5, 0), colour(255, 255, 255));
     SpheresFill fill = {1000, 0};
     size_t cap;
@@ -105,19 +106,20 @@ static void limits_spheres_added_at_once_as_one_by_one(void)
     CHECK_INT(0, scene_add_light(&one, &light));
     CHECK_INT(0, scene_add_light(&all, &light));
     for (int k = 0; k < 3; k++) { /* three before: positions 0 to 2 */
-        CHECK_INT(0, scene_add_sphere(&one, &s));
-        CHECK_INT(0, scene_add_sphere(&all, &s));
+        CHECK_INT(0, scene_add_sphere(&one, c, 1, &m));
+        CHECK_INT(0, scene_add_sphere(&all, c, 1, &m));
     }
     for (size_t k = 0; k < fill.n; k++) {
-        s.centre.x = (double)k;
-        s.material.transparency = k == 7 ? 0.5 : 0;
-        CHECK_INT(0, scene_add_sphere(&one, &s));
+        c.x = (double)k;
+        m.reflection = k == 7 ? 0.5 : 0;
+        CHECK_INT(0, scene_add_sphere(&one, c, 1, &m));
     }
     CHECK_INT(0, scene_add_spheres(&all, fill.n, limits_fill, &fill));
     CHECK_INT((long long)one.sphere_count, (long long)all.sphere_count);
     CHECK_INT((long long)one.sphere_capacity, (long long)all.sphere_capacity);
     CHECK_INT(1024, (long long)all.sphere_capacity);
-    CHECK(all.has_transparency);
+    CHECK(memcmp(one.spheres, all.spheres, one.sphere_count * sizeof *one.spheres) == 0);
+    CHECK_NEAR(0.5, scene_material(&all, SHAPE_SPHERE, 3 + 7).reflection, 0);
     CHECK_INT(3 + 999, all.spheres[3 + 999].order);
     CHECK_NEAR(999, all.spheres[3 + 999].centre.x, 0);
     CHECK_INT(one.spheres[500].order, all.spheres[500].order);

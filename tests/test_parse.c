@@ -39,11 +39,11 @@ static void parse_accepts_the_example(void)
     CHECK_INT(2, (long long)sc.sphere_count);
     CHECK_NEAR(5, sc.spheres[0].centre.z, 0);
     CHECK_NEAR(1, sc.spheres[0].radius, 0);
-    CHECK_NEAR(100, sc.spheres[0].material.colour.g, 0);
-    CHECK_NEAR(0.25, sc.spheres[0].material.reflection, 0);
+    CHECK_NEAR(100, scene_material(&sc, SHAPE_SPHERE, 0).colour.g, 0);
+    CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
     CHECK_INT(0, sc.spheres[0].order);
     CHECK_INT(1, sc.spheres[1].order);
-    CHECK_NEAR(1, sc.spheres[1].material.reflection, 0);
+    CHECK_NEAR(1, scene_material(&sc, SHAPE_SPHERE, 1).reflection, 0);
     scene_free(&sc);
 }
 
@@ -57,7 +57,7 @@ static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
 
     CHECK_INT(0, parse(text, &sc, &err));
     CHECK_INT(1, (long long)sc.sphere_count);
-    CHECK_NEAR(0.25, sc.spheres[0].material.reflection, 0);
+    CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
     CHECK_INT(0, sc.spheres[0].order);
     scene_free(&sc);
 }
@@ -186,11 +186,11 @@ static int same_spheres(const Scene *a, const Scene *b)
         return 0;
     for (size_t i = 0; i < a->sphere_count; i++) {
         const Sphere *x = &a->spheres[i], *y = &b->spheres[i];
+        Material mx = scene_material(a, SHAPE_SPHERE, i), my = scene_material(b, SHAPE_SPHERE, i);
         if (memcmp(&x->centre, &y->centre, sizeof x->centre) != 0 || x->radius != y->radius ||
-            memcmp(&x->material.colour, &y->material.colour, sizeof x->material.colour) != 0 ||
-            x->material.reflection != y->material.reflection ||
-            x->material.transparency != y->material.transparency ||
-            x->material.ior != y->material.ior || x->order != y->order)
+            memcmp(&mx.colour, &my.colour, sizeof mx.colour) != 0 ||
+            mx.reflection != my.reflection || mx.transparency != my.transparency ||
+            mx.ior != my.ior || x->order != y->order)
             return 0;
     }
     return 1;

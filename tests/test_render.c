@@ -193,8 +193,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
         for (size_t oi = 0; oi < 3; oi++) {
             double s = scales[si], o = offsets[oi];
             Scene sc;
-            Sphere sp = {moved(base_centre, s, o), base_radius * s,
-                         material_plain(base_colour, base_refl), 0};
+            Material m = material_plain(base_colour, base_refl);
             RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0};
             Light light;
             Image img;
@@ -209,7 +208,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             sc.background = base_bg;
             light = light_point(moved(base_light, s, o), colour(255, 255, 255));
             CHECK_INT(0, scene_add_light(&sc, &light));
-            CHECK_INT(0, scene_add_sphere(&sc, &sp));
+            CHECK_INT(0, scene_add_sphere(&sc, moved(base_centre, s, o), base_radius * s, &m));
             CHECK_INT(0, image_init(&img, BASE_W, BASE_W));
             render(&sc, &opts, &img, NULL);
             for (int j = 0; j < BASE_W; j++) {

@@ -10,7 +10,7 @@
 
 static Sphere sphere_at(double x, double y, double z, double r)
 {
-    Sphere s = {{x, y, z}, r, material_plain(colour(255, 255, 255), 0), 0};
+    Sphere s = {{x, y, z}, r, {255, 255, 255}, 0, 0, -1};
     return s;
 }
 

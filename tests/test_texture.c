@@ -131,8 +131,8 @@ static void texture_records_attach_to_the_object_before(void)
         CHECK_INT(1, (long long)sc.shading_count); /* the first triangle's */
     }
     CHECK_INT(1, (long long)sc.texture_count); /* one file, read once */
-    CHECK_INT(0, sc.spheres[0].material.texture);
-    CHECK_INT(TEXTURE_BILINEAR, sc.spheres[0].material.filter);
+    CHECK_INT(0, scene_material(&sc, SHAPE_SPHERE, 0).texture);
+    CHECK_INT(TEXTURE_BILINEAR, scene_material(&sc, SHAPE_SPHERE, 0).filter);
     CHECK_INT(TEXTURE_NEAREST, sc.planes[0].material.filter);
     CHECK_NEAR(2.5, sc.planes[0].tile, 0);
     CHECK_NEAR(0.5, shading_of(&sc, 0).uv[2][0], 0);

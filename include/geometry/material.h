@@ -7,6 +7,8 @@
 #ifndef RAYTRACE_MATERIAL_H
 #define RAYTRACE_MATERIAL_H
 
+#include <math.h>
+
 #include "math/colour.h"
 
 /* How a texture is read between texel centres. */
@@ -61,6 +63,17 @@ static inline Material material_plain(Colour c, double r)
 {
     Material m = {c, r, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
     return m;
+}
+
+/* Returns 1 when m is material_plain(m->colour, m->reflection), bit for
+ * bit, else 0. */
+static inline int material_is_plain(const Material *m)
+{
+    Material p = material_plain(m->colour, m->reflection);
+
+    return m->transparency == 0 && !signbit(m->transparency) && m->ior == 1 &&
+           m->texture == p.texture && m->filter == p.filter && m->named == p.named &&
+           m->stripes == p.stripes;
 }
 
 #endif

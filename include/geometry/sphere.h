@@ -14,11 +14,18 @@
 #include "geometry/ray.h"
 #include "math/vec3.h"
 
+/* A sphere: 72 bytes, as a scene may hold millions. Most spheres' material
+ * is plain (material_is_plain()): its colour and mirror weight are held
+ * here; any other is in the scene's table of materials. */
 typedef struct {
     Vec3 centre;       /* scene units */
-    real radius;     /* scene units, > 0 */
-    Material material; /* what the surface looks like */
+    real radius;       /* scene units, > 0 */
+    Colour colour;     /* a plain material's colour Ci */
+    double reflection; /* a plain material's mirror weight R */
     unsigned order;    /* position among the scene's objects, for ties */
+    int material;      /* -1: the plain material of the two above; else
+                          the index of the sphere's in the scene's
+                          materials (scene.h: scene_material()) */
 } Sphere;
 
 /*

@@ -32,7 +32,7 @@
 /* What shading needs to know about the point a ray hit. */
 typedef struct {
     SurfacePoint sp;          /* the point, its outward normal and error */
-    const Material *material; /* the object's material */
+    Material material;        /* the object's material */
     Colour colour;            /* Ci: the material's colour or its texture's */
     double ambient;           /* the share of the ambient light that reaches
                                  it: 1, or less under ambient occlusion */

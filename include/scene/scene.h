@@ -173,12 +173,13 @@ void scene_init(Scene *scene);
 void scene_free(Scene *scene);
 
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
- * position among the scene's objects (and a triangle a material of its own,
+ * position among the scene's objects (a sphere the material *m, in the
+ * scene's table when it is not plain; a triangle a material of its own,
  * a copy of *m, and no shading: scene_shade_triangle() gives it some);
  * returns 0, or -1 when memory runs out or SCENE_OVER_LIMIT when it would
  * pass the memory limit, the scene unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
-int scene_add_sphere(Scene *scene, const Sphere *s);
+int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m);
 int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
 int scene_add_cube(Scene *scene, const Cube *c);
@@ -186,9 +187,11 @@ int scene_add_square(Scene *scene, const Square *s);
 int scene_add_cylinder(Scene *scene, const Cylinder *c);
 int scene_add_cone(Scene *scene, const Cone *c);
 
-/* Appends n >= 1 spheres at once, as n calls of scene_add_sphere() would (the
- * same room; their positions among the objects set here): fill(room, ctx)
- * writes them into room, on any threads, and returns 0. Returns 0, or
+/* Appends n >= 1 spheres of plain materials at once, as n calls of
+ * scene_add_sphere() would (the same room; their positions among the
+ * objects and their material -1 set here): fill(room, ctx) writes their
+ * centres, radii, colours and mirror weights into room, on any threads,
+ * and returns 0. Returns 0, or
  * what fill() returned (non-zero), -1 or SCENE_OVER_LIMIT, with the scene
  * as it was, when fill() or one of those calls would fail. */
 int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx);
@@ -223,9 +226,16 @@ void scene_walk_start(SceneWalk *w);
  * returns 1, or returns 0 when there are no more. */
 int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *index);
 
-/* Returns the material of the shape of kind and index in scene (writable:
- * the readers' texture records set it; a mesh's triangles share one). */
-Material *scene_material(const Scene *scene, ShapeKind kind, size_t index);
+/* Returns the material of the shape of kind and index in scene. */
+Material scene_material(const Scene *scene, ShapeKind kind, size_t index);
+
+/* Returns the material of the shape of kind and index in scene, to be
+ * changed (the readers' texture records set it; a mesh's triangles share
+ * one), valid until the next shape or material is added; a sphere's plain
+ * material moves to the scene's table first. Returns NULL, the scene
+ * unchanged, when that needs memory there is not (SCENE_OVER_LIMIT or -1
+ * in *rc). */
+Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t index, int *rc);
 
 /* Returns tri's shading, a triangle of scene, or NULL when it is plain. */
 static inline const TriangleShading *scene_shading_of(const Scene *scene, const Triangle *tri)

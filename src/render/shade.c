@@ -40,7 +40,7 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
-    want_uv = sh.material->texture >= 0 || sh.material->stripes;
+    want_uv = sh.material.texture >= 0 || sh.material.stripes;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         const Sphere *s = &scene->spheres[hit->index];
@@ -91,14 +91,14 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
         break;
     }
     }
-    if (sh.material->texture >= 0) {
-        sh.colour = texture_lookup(&scene->textures[sh.material->texture], uv[0], uv[1],
-                                   sh.material->filter, clamp_v);
-    } else if (sh.material->stripes) {
+    if (sh.material.texture >= 0) {
+        sh.colour = texture_lookup(&scene->textures[sh.material.texture], uv[0], uv[1],
+                                   sh.material.filter, clamp_v);
+    } else if (sh.material.stripes) {
         double x = shade_stripes(scene, hit, &sh, uv);
-        sh.colour = x - floor(x) < 0.5 ? sh.material->colour : colour(0, 0, 0);
+        sh.colour = x - floor(x) < 0.5 ? sh.material.colour : colour(0, 0, 0);
     } else {
-        sh.colour = sh.material->colour;
+        sh.colour = sh.material.colour;
     }
     return sh;
 }

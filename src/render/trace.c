@@ -225,8 +225,8 @@ static Colour trace_background(const Scene *scene, const Ray *ray)
 static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3 n, Vec3 ns,
                           int depth, Colour weight, TracePath path)
 {
-    const NamedMaterial *pm = &t->scene->named[sh->material->named];
-    const Material *m = sh->material;
+    const NamedMaterial *pm = &t->scene->named[sh->material.named];
+    const Material *m = &sh->material;
     Vec3 view = vec3_normalize(vec3_neg(ray->dir));
     int entering = vec3_dot(ray->dir, sh->sp.normal) < 0, deeper = depth + 1 <= t->max_depth;
     double eta = entering ? 1 / m->ior : m->ior, f;
@@ -315,7 +315,7 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     /* Ambient occlusion at the points the camera sees, where there is
      * ambient light to hide. */
     if (t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
-        scene->named[sh.material->named].ka > 0 && colour_max(scene->ambient) > 0)
+        scene->named[sh.material.named].ka > 0 && colour_max(scene->ambient) > 0)
         sh.ambient = trace_occlusion(t, &sh, n, ns);
     return trace_named(t, ray, &sh, n, ns, depth, weight, path);
 }
@@ -339,8 +339,8 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
      * behave. They are the same but on smooth triangles. */
     n = ray_facing_normal(sh.sp.normal, ray->dir);
     ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
-    r = sh.material->reflection;
-    tr = sh.material->transparency;
+    r = sh.material.reflection;
+    tr = sh.material.transparency;
     own = 1 - r - tr;
     own = own > 0 ? own : 0;
     if (own > 0 && t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
@@ -357,7 +357,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     if (tr > 0) {
         /* Entering through the outer side, or leaving from inside. */
         int entering = vec3_dot(ray->dir, sh.sp.normal) < 0;
-        double eta = entering ? 1 / sh.material->ior : sh.material->ior;
+        double eta = entering ? 1 / sh.material.ior : sh.material.ior;
         Vec3 bent;
 
         if (ray_refract(ray->dir, ns, eta, &bent)) {

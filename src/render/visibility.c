@@ -182,12 +182,12 @@ int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, ui
     return 0;
 }
 
-/* Multiplies *share by the transparency of material m once per crossing
+/* Multiplies *share by a material's transparency once per crossing
  * (crossings of them); returns 0 once nothing is left, else 1. */
-static int visibility_attenuate(double *share, const Material *m, int crossings)
+static int visibility_attenuate(double *share, double transparency, int crossings)
 {
     for (int i = 0; i < crossings; i++)
-        *share *= m->transparency;
+        *share *= transparency;
     return *share > 0;
 }
 
@@ -199,7 +199,7 @@ static int visibility_attenuate_by(const Scene *scene, ShapeKind kind, const Ray
     size_t n = scene_count_of(scene, kind);
 
     for (size_t k = 0; k < n; k++)
-        if (!visibility_attenuate(share, scene_material(scene, kind, k),
+        if (!visibility_attenuate(share, scene_material(scene, kind, k).transparency,
                                   visibility_crossings(scene, kind, k, ray, tmax)))
             return 0;
     return 1;
@@ -220,10 +220,10 @@ typedef struct {
     int n;
 } VisibilityCrossings;
 
-/* Returns the material of the hierarchy's primitive prim. */
-static const Material *visibility_material_of(const Scene *scene, uint32_t prim)
+/* Returns the transparency of the hierarchy's primitive prim. */
+static double visibility_transparency_of(const Scene *scene, uint32_t prim)
 {
-    return scene_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim));
+    return scene_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim)).transparency;
 }
 
 /* bvh_crossings()'s visit: keeps the crossing; returns -2 at an opaque
@@ -232,7 +232,7 @@ static int visibility_keep_crossing(void *ctx, uint32_t prim, int crossings)
 {
     VisibilityCrossings *tc = ctx;
 
-    if (!(visibility_material_of(tc->scene, prim)->transparency > 0))
+    if (!(visibility_transparency_of(tc->scene, prim) > 0))
         return -2;
     if (tc->n == VISIBILITY_CROSSINGS_MAX)
         return -1;
@@ -272,13 +272,13 @@ static double visibility_transmittance_accel(const Scene *scene, const Ray *ray,
         tc.c[k] = c;
     }
     for (; i < n && bvh_kind(tc.c[i].prim) == BVH_SPHERE; i++)
-        if (!visibility_attenuate(&share, visibility_material_of(scene, tc.c[i].prim),
+        if (!visibility_attenuate(&share, visibility_transparency_of(scene, tc.c[i].prim),
                                   tc.c[i].crossings))
             return 0;
     if (!visibility_attenuate_by(scene, SHAPE_PLANE, ray, tmax, &share))
         return 0;
     for (; i < n; i++)
-        if (!visibility_attenuate(&share, visibility_material_of(scene, tc.c[i].prim),
+        if (!visibility_attenuate(&share, visibility_transparency_of(scene, tc.c[i].prim),
                                   tc.c[i].crossings))
             return 0;
     return visibility_attenuate_by(scene, SHAPE_CYLINDER, ray, tmax, &share) &&
@@ -300,7 +300,8 @@ double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)
      * inline. */
     for (size_t k = 0; k < scene->sphere_count; k++) {
         const Sphere *s = &scene->spheres[k];
-        if (!visibility_attenuate(&share, &s->material, sphere_crossings(s, ray, 0, tmax)))
+        if (!visibility_attenuate(&share, scene_material(scene, SHAPE_SPHERE, k).transparency,
+                                  sphere_crossings(s, ray, 0, tmax)))
             return 0;
     }
     for (unsigned m = scene->kinds & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)

@@ -222,11 +222,10 @@ int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *i
     return found;
 }
 
-Material *scene_material(const Scene *scene, ShapeKind kind, size_t k)
+/* Returns where the material of shape k of kind, not a sphere, is held. */
+static Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
 {
     switch (kind) {
-    case SHAPE_SPHERE:
-        return &scene->spheres[k].material;
     case SHAPE_PLANE:
         return &scene->planes[k].material;
     case SHAPE_TRIANGLE:
@@ -240,6 +239,36 @@ Material *scene_material(const Scene *scene, ShapeKind kind, size_t k)
     default:
         return &scene->cones[k].material;
     }
+}
+
+Material scene_material(const Scene *scene, ShapeKind kind, size_t k)
+{
+    const Sphere *s;
+
+    if (kind != SHAPE_SPHERE)
+        return *scene_shape_material(scene, kind, k);
+    s = &scene->spheres[k];
+    return s->material < 0 ? material_plain(s->colour, s->reflection)
+                           : scene->materials[s->material];
+}
+
+Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
+{
+    Sphere *s;
+
+    if (kind != SHAPE_SPHERE)
+        return scene_shape_material(scene, kind, k);
+    s = &scene->spheres[k];
+    if (s->material < 0) {
+        Material m = material_plain(s->colour, s->reflection);
+        long at = scene_add_material(scene, &m);
+        if (at < 0) {
+            *rc = (int)at;
+            return NULL;
+        }
+        s->material = (int)at;
+    }
+    return &scene->materials[s->material];
 }
 
 size_t scene_bounded_count(const Scene *scene)
@@ -351,11 +380,20 @@ static int scene_push_shape(Scene *scene, ShapeKind kind, void **items, size_t *
     return 0;
 }
 
-int scene_add_sphere(Scene *scene, const Sphere *s)
+int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
-    return scene_push_shape(scene, SHAPE_SPHERE, (void **)&scene->spheres, &scene->sphere_capacity,
-                            &scene->sphere_count, s, sizeof *s, offsetof(Sphere, order),
-                            &s->material);
+    Sphere s = {centre, radius, m->colour, m->reflection, 0, -1};
+    long at = -1;
+    int rc;
+
+    if (!material_is_plain(m) && (at = scene_add_material(scene, m)) < 0)
+        return (int)at;
+    s.material = (int)at;
+    rc = scene_push_shape(scene, SHAPE_SPHERE, (void **)&scene->spheres, &scene->sphere_capacity,
+                          &scene->sphere_count, &s, sizeof s, offsetof(Sphere, order), m);
+    if (rc != 0 && at >= 0)
+        scene->material_count--;
+    return rc;
 }
 
 int scene_add_plane(Scene *scene, const Plane *p)
@@ -499,7 +537,7 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
     size_t entry = scene->sphere_capacity, first = scene->sphere_count;
     size_t others = scene_object_count(scene); /* listed before */
     int rc = scene_reserve_all(scene, (void **)&scene->spheres, &scene->sphere_capacity,
-                               first + n, sizeof *scene->spheres), transparent = 0;
+                               first + n, sizeof *scene->spheres);
     Sphere *room = rc == 0 ? scene->spheres + first : NULL;
 
     if (rc != 0 || (rc = fill(room, ctx)) != 0) {
@@ -508,15 +546,14 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
         return rc;
     }
 #ifdef _OPENMP
-#pragma omp parallel for schedule(static) reduction(| : transparent)
+#pragma omp parallel for schedule(static)
 #endif
     for (size_t k = 0; k < n; k++) {
         room[k].order = (unsigned)(others + k);
-        transparent |= room[k].material.transparency > 0;
+        room[k].material = -1;
     }
     scene->sphere_count += n;
     scene->kinds |= 1u << SHAPE_SPHERE;
-    scene->has_transparency |= transparent;
     return 0;
 }
 

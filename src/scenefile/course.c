@@ -197,12 +197,14 @@ static int course_header(CourseParser *P, Scene *scene)
 /* sphere -> 'sphere:' ... (course_sphere_fields()), appended to the scene */
 static int course_sphere_record(CourseParser *P, const Record *rec, Scene *scene)
 {
-    Sphere s;
+    Vec3 centre;
+    real radius;
+    Material m;
     int rc;
 
-    if (course_sphere_fields(P, rec, &s) != 0)
+    if (course_sphere_fields(P, rec, &centre, &radius, &m) != 0)
         return -1;
-    rc = scene_add_sphere(scene, &s);
+    rc = scene_add_sphere(scene, centre, radius, &m);
     if (rc != 0)
         return course_fail_memory(P, rec, scene, rc);
     course_note_object(P, SHAPE_SPHERE, scene->sphere_count - 1);

@@ -43,8 +43,9 @@ static void course_count_part(CoursePart *part)
     }
 }
 
-/* Reads part's records into room, each a sphere: record, with P's
- * rules; returns 0, or -1 at anything else (a fault, another record). */
+/* Reads part's records into room, each a sphere: record of a plain
+ * material, with P's rules; returns 0, or -1 at anything else (a fault,
+ * another record, another material: the serial reading takes those). */
 static int course_sphere_part(const CourseParser *P, const CoursePart *part, Sphere *room)
 {
     CourseParser Q = *P;
@@ -57,9 +58,13 @@ static int course_sphere_part(const CourseParser *P, const CoursePart *part, Sph
     Q.lex.end = part->end;
     Q.lex.err = &ignored;
     while ((rc = lex_next_record(&Q.lex, &rec)) == 1) {
+        Material m;
         if (k == part->spheres || !lex_token_is(&rec.tok[0], "sphere:") ||
-            course_sphere_fields(&Q, &rec, &room[k]) != 0)
+            course_sphere_fields(&Q, &rec, &room[k].centre, &room[k].radius, &m) != 0 ||
+            !material_is_plain(&m))
             return -1;
+        room[k].colour = m.colour;
+        room[k].reflection = m.reflection;
         k++;
     }
     return rc == 0 && k == part->spheres ? 0 : -1;

@@ -68,16 +68,17 @@ void course_note_object(CourseParser *P, int kind, size_t index)
 }
 
 /* sphere -> 'sphere:' cx cy cz radius r g b reflection [transparency index]:
- * reads rec, a sphere: record, into *s (its order aside). */
-int course_sphere_fields(CourseParser *P, const Record *rec, Sphere *s)
+ * reads rec, a sphere: record, into *centre, *radius and *m. */
+int course_sphere_fields(CourseParser *P, const Record *rec, Vec3 *centre, real *radius,
+                         Material *m)
 {
     double v[10];
     int n = lex_numbers(&P->lex, rec, 1, &course_sphere_spec, v);
 
-    if (n < 0 || course_material(P, rec, &course_sphere_spec, 1, 4, v, n, &s->material) != 0)
+    if (n < 0 || course_material(P, rec, &course_sphere_spec, 1, 4, v, n, m) != 0)
         return -1;
-    s->centre = vec3(v[0], v[1], v[2]);
-    s->radius = v[3];
+    *centre = vec3(v[0], v[1], v[2]);
+    *radius = v[3];
     return 0;
 }
 

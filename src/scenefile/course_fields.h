@@ -52,6 +52,7 @@ int course_material(CourseParser *P, const Record *rec, const RecordSpec *spec, 
 void course_note_object(CourseParser *P, int kind, size_t index);
 
 /* Reads rec, a sphere: record, into *s (its order aside). */
-int course_sphere_fields(CourseParser *P, const Record *rec, Sphere *s);
+int course_sphere_fields(CourseParser *P, const Record *rec, Vec3 *centre, real *radius,
+                         Material *m);
 
 #endif

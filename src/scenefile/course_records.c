@@ -109,12 +109,14 @@ static const RecordSpec course_cylinder_texture_spec = {"the cylinder's texture"
 static const RecordSpec course_cone_texture_spec = {"the cone's texture", "path [filter]", 0, 0, 0,
                                                     NULL, NULL};
 
-/* Returns the material of the last object read (there must be one). */
-static Material *course_last_material(CourseParser *P, Scene *scene)
+/* Returns the material of the last object read (there must be one), to be
+ * changed, or NULL with *rc set (scene_material_edit()). */
+static Material *course_last_material(CourseParser *P, Scene *scene, int *rc)
 {
     /* A mesh's triangles share their material. */
-    return scene_material(scene, P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : P->last_kind,
-                          P->last_index);
+    return scene_material_edit(
+        scene, P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind,
+        P->last_index, rc);
 }
 
 /* shape -> 'KIND:' geometry r g b reflection [transparency index]: reads
@@ -307,7 +309,7 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
         &course_cube_texture_spec,   &course_square_texture_spec,   &course_cylinder_texture_spec,
         &course_cone_texture_spec,   &course_mesh_texture_spec};
     const RecordSpec *spec;
-    int first = 2, n, index;
+    int first = 2, n, index, rc = 0;
     double v[6];
     TextureFilter filter = TEXTURE_BILINEAR;
     Material *m;
@@ -319,7 +321,9 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
         return -1;
     }
     spec = specs[P->last_kind];
-    m = course_last_material(P, scene);
+    m = course_last_material(P, scene, &rc);
+    if (!m)
+        return course_fail_memory(P, rec, scene, rc);
     if (m->texture >= 0) {
         course_fail(P, &rec->line, rec->tok[0].column,
                    "%s is already set: an object takes one texture: record", spec->what);
@@ -352,7 +356,9 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
     index = course_load_texture(P, rec, &rec->tok[1], scene);
     if (index < 0)
         return -1;
-    m = course_last_material(P, scene);
+    m = course_last_material(P, scene, &rc);
+    if (!m)
+        return course_fail_memory(P, rec, scene, rc);
     m->texture = index;
     m->filter = filter;
     if (P->last_kind == SHAPE_PLANE && n == 1)

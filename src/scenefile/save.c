@@ -75,10 +75,10 @@ static int save_path(FILE *fp, const char *written, const char *opened, const ch
     return 0;
 }
 
-/* Returns the name of material m's Blinn-Phong entry. */
-static const char *save_name(const Scene *scene, const Material *m)
+/* Returns the name of the named material of shape i of kind. */
+static const char *save_name(const Scene *scene, ShapeKind kind, size_t i)
 {
-    return scene->named[m->named].name;
+    return scene->named[scene_material(scene, kind, i).named].name;
 }
 
 /* Writes the materials, each with all the fields its values need. */
@@ -118,7 +118,7 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
             fputs("mesh ", fp);
             if (save_path(fp, m->path, m->opened, "mesh", scene_name, out_name, err) != 0)
                 return -1;
-            fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
+            fprintf(fp, " %s\n", save_name(scene, kind, i));
             /* The walk passes over the mesh's other triangles. */
             w.next[SHAPE_TRIANGLE] = i + m->count;
             continue;
@@ -126,7 +126,7 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
         n = shapes_numbers(scene, kind, i, v);
         fputs(shapes_word[kind], fp);
         save_numbers(fp, v, n);
-        fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
+        fprintf(fp, " %s\n", save_name(scene, kind, i));
     }
     return 0;
 }
@@ -269,7 +269,7 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
         int n = shapes_numbers(scene, kind, i, v);
         fprintf(fp, "p %s", words[kind]);
         save_numbers(fp, v, n);
-        fprintf(fp, " %s\n", save_name(scene, scene_material(scene, kind, i)));
+        fprintf(fp, " %s\n", save_name(scene, kind, i));
     }
     return 0;
 }

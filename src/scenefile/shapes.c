@@ -93,8 +93,7 @@ int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
 {
     switch (kind) {
     case SHAPE_SPHERE: {
-        Sphere s = {shapes_point(v, 0), v[3], *m, 0};
-        return scene_add_sphere(scene, &s);
+        return scene_add_sphere(scene, shapes_point(v, 0), v[3], m);
     }
     case SHAPE_PLANE: {
         Plane pl;
