@@ -12,10 +12,10 @@
 #include "scene/scene.h"
 #include "test.h"
 
-/* Adds n random spheres, triangles, cubes and squares (some transparent,
- * some exact duplicates, for ties) around the origin at scale s, a plane,
- * a cylinder and a cone. */
-static void random_scene(Scene *sc, int n, double s)
+/* Adds n random spheres, triangles, cubes and squares (some of
+ * transparency clear, some exact duplicates, for ties) around the origin
+ * at scale s, a plane, a cylinder and a cone. */
+static void random_scene_of(Scene *sc, int n, double s, double clear)
 {
     Light light = light_point(vec3(0, 10 * s, 0), colour(255, 255, 255));
 
@@ -27,8 +27,8 @@ static void random_scene(Scene *sc, int n, double s)
         Triangle tri;
         Vec3 c = vec3_scale(rng_unit_vector(), s * rng_uniform());
 
-        if (i % 3 == 0) {
-            m.transparency = 0.5;
+        if (i % 3 == 0 && clear > 0) {
+            m.transparency = clear;
             m.ior = 1.3;
         }
         sp.centre = c;
@@ -59,8 +59,8 @@ static void random_scene(Scene *sc, int n, double s)
         Cylinder cyl = {vec3(0.5 * s, 0, 0.5 * s), 0.05 * s, material_plain(colour(1, 2, 3), 0), 0};
         Cone cone;
         Material glass = material_plain(colour(1, 2, 3), 0);
-        glass.transparency = 0.7;
-        glass.ior = 1.5;
+        glass.transparency = clear > 0 ? 0.7 : 0;
+        glass.ior = clear > 0 ? 1.5 : 1;
         cyl.material = glass;
         CHECK_INT(0, scene_add_cylinder(sc, &cyl));
         cone_make(&cone, vec3(-0.5 * s, 0, -0.5 * s), 0.1 * s, 0.5 * s, glass);
@@ -72,6 +72,12 @@ static void random_scene(Scene *sc, int n, double s)
                                 material_plain(colour(1, 2, 3), 0)));
         CHECK_INT(0, scene_add_plane(sc, &pl));
     }
+}
+
+/* random_scene_of() with some of transparency 0.5. */
+static void random_scene(Scene *sc, int n, double s)
+{
+    random_scene_of(sc, n, s, 0.5);
 }
 
 /* Builds bvh over sc's spheres and triangles (reach 0: the structure
@@ -376,6 +382,54 @@ static void bvh_queries_equal_the_loops(void)
     CHECK_INT(0, differ);
 }
 
+/* A scene without transparency has its spheres moved into the hierarchy's
+ * order when it is built: each keeps its place among the objects, and the
+ * queries answer as the loops over the spheres in the file's order do, to
+ * the bit, exact ties included (the hit compared by its place among the
+ * objects: its index changed). */
+static void bvh_renumbered_spheres_answer_as_in_file_order(void)
+{
+    Scene sc, file;
+    uint64_t seed = rng_state;
+    int differ = 0, hits = 0, moved = 0;
+    unsigned char *seen;
+
+    random_scene_of(&sc, 3000, 1, 0);
+    rng_state = seed;
+    random_scene_of(&file, 3000, 1, 0); /* the same scene again */
+    CHECK(!sc.has_transparency);
+    CHECK_INT(0, scene_build_accel(&sc, 2));
+    CHECK(sc.accel != NULL);
+    seen = calloc(file.sphere_count, 1);
+    for (size_t i = 0; i < sc.sphere_count && seen; i++) {
+        const Sphere *s = &sc.spheres[i];
+        size_t k = 0; /* the file's sphere of the same place among the objects */
+        while (k < file.sphere_count && file.spheres[k].order != s->order)
+            k++;
+        moved += s->order != file.spheres[i].order;
+        if (k == file.sphere_count || seen[k]++ ||
+            memcmp(s, &file.spheres[k], sizeof *s) != 0)
+            differ++;
+    }
+    free(seen);
+    CHECK(moved > 1000);
+    for (int i = 0; i < 4000 && sc.accel; i++) {
+        Vec3 o = vec3_scale(rng_unit_vector(), i % 2 ? 3 : 0.5);
+        Ray ray = {o, vec3_sub(vec3_scale(rng_unit_vector(), rng_uniform()), o)};
+        Ray seg = {o, vec3_scale(ray.dir, rng_range(0.2, 2))};
+        Hit a, b;
+        int fa = visibility_nearest(&file, &ray, INFINITY, &a);
+        int fb = visibility_nearest(&sc, &ray, INFINITY, &b);
+        differ += fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.order != b.order)) ||
+                  visibility_occluded(&file, &seg, 1) != visibility_occluded(&sc, &seg, 1);
+        hits += fa;
+    }
+    CHECK(hits > 2000);
+    CHECK_INT(0, differ);
+    scene_free(&sc);
+    scene_free(&file);
+}
+
 /* The box tests run in floats in a frame of the scene's size: scenes at
  * the extremes of the numbers a scene may hold (a tiny one enlarged, as
  * the readers enlarge it), seen from 2^10 to 2^120 times their size (past
@@ -490,6 +544,7 @@ const TestCase bvh_tests[] = {
     {"bvh_is_the_same_built_by_one_thread_or_two", bvh_is_the_same_built_by_one_thread_or_two},
     {"bvh_queries_equal_the_loops", bvh_queries_equal_the_loops},
     {"bvh_queries_equal_the_loops_at_the_extremes", bvh_queries_equal_the_loops_at_the_extremes},
+    {"bvh_renumbered_spheres_answer_as_in_file_order", bvh_renumbered_spheres_answer_as_in_file_order},
     {"bvh_queries_see_thin_boxes_from_afar", bvh_queries_see_thin_boxes_from_afar},
     {NULL, NULL},
 };

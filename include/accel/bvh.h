@@ -120,9 +120,6 @@ typedef struct Bvh {
     BvhNode *nodes;      /* the root first */
     size_t node_count;
     uint32_t *prims;     /* primitive references, grouped by leaf */
-    real (*balls)[4];    /* balls[k]: when prims[k] is a sphere, its centre
-                            x y z and radius, copied so that queries read
-                            them in leaf order; NULL without spheres */
     size_t prim_count;
     int depth;           /* deepest node, the root at 0 */
     double centre[3];    /* the frame: a node's box coordinate is that of */
@@ -142,10 +139,19 @@ typedef struct Bvh {
  * or there are BVH_MAX_OF_KIND shapes of a kind, or 2^31 in all. */
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
 
+/* Moves spheres, the array *bvh was built over (its owner's, to be
+ * changed), into the order the hierarchy's leaves hold them in, and
+ * renumbers its references to match: queries then read neighbouring
+ * spheres from neighbouring memory, and answer as before (each sphere
+ * keeps its order, which settles ties). Returns 0, or -1 (nothing moved)
+ * when memory runs out. */
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres);
+
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);
 
-/* Returns the most bytes bvh_build() allocates at once for n primitives. */
+/* Returns the most bytes bvh_build(), then bvh_renumber_spheres(), allocate
+ * at once for n primitives. */
 size_t bvh_build_memory(size_t n);
 
 /* Returns the bytes *bvh holds. */

@@ -32,8 +32,8 @@ typedef struct {
  * Finds where the ray first crosses the surface of the sphere of centre and
  * radius with tmin < t < tmax (an open interval); returns 1 and stores that
  * t in *t, or returns 0. The ray's direction may have any non-zero length; a
- * tangent ray counts as crossing. Inline: the hierarchy calls it on its own
- * compact copy of the spheres.
+ * tangent ray counts as crossing. Inline: the loops over every sphere and
+ * the hierarchy's leaves call it.
  */
 static inline int sphere_hit(Vec3 centre, real radius, const Ray *ray, real tmin, real tmax,
                              real *t)

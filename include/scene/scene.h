@@ -92,7 +92,8 @@ typedef struct Scene {
     size_t light_count;     /* lights in use, >= 1 once a course scene is
                                parsed */
     size_t light_capacity;  /* lights allocated */
-    Sphere *spheres;        /* file order; NULL when there are none */
+    Sphere *spheres;        /* file order (but scene_build_accel());
+                               NULL when there are none */
     size_t sphere_count;    /* spheres in use */
     size_t sphere_capacity; /* spheres allocated */
     Plane *planes;          /* file order; NULL when there are none */
@@ -283,8 +284,10 @@ int scene_add_texture(Scene *scene, Texture *tex);
 size_t scene_bounded_count(const Scene *scene);
 
 /* Builds the acceleration structure (bvh.h) when the scene has enough
- * bounded shapes to gain from one, with up to threads threads;
- * returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
+ * bounded shapes to gain from one, with up to threads threads, and moves
+ * the spheres of a scene without transparency into its order (each keeps
+ * its position among the objects: walks and the file-order loops are for
+ * before); returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
  * would pass the memory limit, or -1 when memory runs out (the scene is
  * then left without one, and still renders). */
 int scene_build_accel(Scene *scene, int threads);

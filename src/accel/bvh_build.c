@@ -131,20 +131,42 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
         bvh_collapse(nodes, 0, 0, 0, pad, bvh, &all, &bvh->depth);
     }
     free(nodes);
-    /* The spheres' copies come last, once the binary tree is gone. */
-    if (shapes->sphere_count > 0 && !(bvh->balls = calloc(n, sizeof *bvh->balls))) {
-        bvh_free(bvh);
+    return 0;
+}
+
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
+{
+    size_t n = bvh->shapes.sphere_count, next = 0;
+    uint32_t *from = malloc(n * sizeof *from); /* from[j]: the sphere to move to j */
+    unsigned char *done = calloc(n / 8 + 1, 1);
+
+    if (!from || !done) {
+        free(from);
+        free(done);
         return -1;
     }
-    for (size_t i = 0; i < n && bvh->balls; i++) {
-        if (bvh_kind(bvh->prims[i]) == BVH_SPHERE) {
-            const Sphere *s = &shapes->spheres[bvh_index(bvh->prims[i])];
-            bvh->balls[i][0] = s->centre.x;
-            bvh->balls[i][1] = s->centre.y;
-            bvh->balls[i][2] = s->centre.z;
-            bvh->balls[i][3] = s->radius;
+    for (size_t k = 0; k < bvh->prim_count; k++)
+        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE) {
+            from[next] = (uint32_t)bvh_index(bvh->prims[k]);
+            bvh->prims[k] = bvh_ref(BVH_SPHERE, next++);
         }
+    /* Each cycle of the permutation, moved round in place. */
+    for (size_t j = 0; j < n; j++) {
+        Sphere first = spheres[j];
+        size_t k = j;
+        if (done[j / 8] >> j % 8 & 1)
+            continue;
+        while (from[k] != j) {
+            spheres[k] = spheres[from[k]];
+            done[k / 8] |= (unsigned char)(1u << k % 8);
+            k = from[k];
+        }
+        spheres[k] = first;
+        done[k / 8] |= (unsigned char)(1u << k % 8);
     }
+    free(from);
+    free(done);
+    bvh->shapes.spheres = spheres;
     return 0;
 }
 
@@ -158,13 +180,11 @@ size_t bvh_build_memory(size_t n)
      * first kind and S of the second holding M leaves in all, the tree's
      * L <= n leaves give L - 1 = (W - 1) F + M - S, M >= 2 S and M <= L, so
      * F + S = (L - 1 - M + W S) / (W - 1) <= (L - 1 + (W - 2) S) / (W - 1)
-     * <= W L / (2 (W - 1)). After: the nodes, the references and the
-     * spheres' copies, 4 reals a primitive in place of the binary tree's two
-     * nodes: the larger of the two is counted. */
+     * <= W L / (2 (W - 1)). After: the nodes, the references and, to
+     * renumber the spheres, 4 bytes and a bit a primitive, less than the
+     * binary tree's two nodes. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
-    size_t tree = 2 * sizeof(BuildNode) > 4 * sizeof(real) ? 2 * sizeof(BuildNode)
-                                                            : 4 * sizeof(real);
-    size_t collapse = tree + sizeof(uint32_t);
+    size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))
         return SIZE_MAX;
@@ -175,15 +195,13 @@ size_t bvh_build_memory(size_t n)
 
 size_t bvh_memory(const Bvh *bvh)
 {
-    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims +
-           (bvh->balls ? bvh->prim_count * sizeof *bvh->balls : 0);
+    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims;
 }
 
 void bvh_free(Bvh *bvh)
 {
     free(bvh->nodes);
     free(bvh->prims);
-    free(bvh->balls);
     memset(bvh, 0, sizeof *bvh);
 }
 

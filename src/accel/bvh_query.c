@@ -321,11 +321,10 @@ static inline int bvh_prim_hit(const Bvh *bvh, uint32_t k, const Ray *ray,
 {
     uint32_t ref = bvh->prims[k];
     unsigned kind = bvh_kind(ref);
-    const real *b;
 
     if (kind == BVH_SPHERE) {
-        b = bvh->balls[k]; /* there when there are spheres */
-        return sphere_hit(vec3(b[0], b[1], b[2]), b[3], ray, tmin, tmax, t);
+        const Sphere *s = &bvh->shapes.spheres[bvh_index(ref)];
+        return sphere_hit(s->centre, s->radius, ray, tmin, tmax, t);
     }
     if (kind == BVH_TRIANGLE)
         return triangle_intersect(&bvh->shapes.triangles[bvh_index(ref)], ray, tmin, tmax, t);
