@@ -47,6 +47,35 @@ static void parse_accepts_the_example(void)
     scene_free(&sc);
 }
 
+/* A sphere holds a material of whole colour channels itself; any other
+ * colour (a fraction, -0, a glass) is kept whole in the scene's table:
+ * every material reads back to the bit. */
+static void parse_sphere_materials_read_back_exactly(void)
+{
+    static const double want[5][3] = {
+        {200, 100, 50}, {200.5, 0.1, 255}, {-0.0, 0, 0}, {254.99999999999997, 1, 2}, {7, 8, 9}};
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, parse(HEADER "sphere: 0 0 5 1 200 100 50 0.25\n"
+                              "sphere: 0 0 6 1 200.5 0.1 255 0\n"
+                              "sphere: 0 0 7 1 -0 0 0 0\n"
+                              "sphere: 0 0 8 1 254.99999999999997 1 2 0.5\n"
+                              "sphere: 0 0 9 1 7 8 9 0.5 0.25 1.5\n",
+                       &sc, &err));
+    CHECK_INT(5, (long long)sc.sphere_count);
+    for (size_t i = 0; i < sc.sphere_count && i < 5; i++) {
+        Material m = scene_material(&sc, SHAPE_SPHERE, i);
+        CHECK(memcmp(&m.colour.r, &want[i][0], sizeof want[i][0]) == 0);
+        CHECK(memcmp(&m.colour.g, &want[i][1], sizeof want[i][1]) == 0);
+        CHECK(memcmp(&m.colour.b, &want[i][2], sizeof want[i][2]) == 0);
+        CHECK_INT(i == 0 ? -1 : (long long)i - 1, sc.spheres[i].material);
+    }
+    CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 4).transparency, 0);
+    CHECK_NEAR(1.5, scene_material(&sc, SHAPE_SPHERE, 4).ior, 0);
+    scene_free(&sc);
+}
+
 static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
 {
     const char *text = "\xEF\xBB\xBF# a scene\r\n\r\n  0\t0 0   # camera\r\n-1 1 1#tl\r\n"
@@ -758,6 +787,7 @@ static void parse_file_errors(void)
 
 const TestCase parse_tests[] = {
     {"parse_accepts_the_example", parse_accepts_the_example},
+    {"parse_sphere_materials_read_back_exactly", parse_sphere_materials_read_back_exactly},
     {"parse_accepts_comments_blanks_crlf_tabs_bom", parse_accepts_comments_blanks_crlf_tabs_bom},
     {"parse_accepts_number_forms", parse_accepts_number_forms},
     {"parse_numbers_round_as_strtod", parse_numbers_round_as_strtod},

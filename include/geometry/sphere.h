@@ -10,23 +10,55 @@
 #ifndef RAYTRACE_SPHERE_H
 #define RAYTRACE_SPHERE_H
 
+#include <math.h>
+#include <stdint.h>
+
 #include "geometry/material.h"
 #include "geometry/ray.h"
 #include "math/vec3.h"
 
-/* A sphere: 72 bytes, as a scene may hold millions. Most spheres' material
- * is plain (material_is_plain()): its colour and mirror weight are held
- * here; any other is in the scene's table of materials. */
+/* A sphere: 56 bytes, as a scene may hold millions. Most spheres' material
+ * is plain (sphere_plain()): its mirror weight and colour are held here;
+ * any other is in the scene's table of materials. */
 typedef struct {
     Vec3 centre;       /* scene units */
     real radius;       /* scene units, > 0 */
-    Colour colour;     /* a plain material's colour Ci */
     double reflection; /* a plain material's mirror weight R */
     unsigned order;    /* position among the scene's objects, for ties */
-    int material;      /* -1: the plain material of the two above; else
-                          the index of the sphere's in the scene's
+    int material;      /* -1: the plain material of reflection and rgb;
+                          else the index of the sphere's in the scene's
                           materials (scene.h: scene_material()) */
+    uint8_t rgb[3];    /* a plain material's colour Ci */
 } Sphere;
+
+/* Returns 1 when a sphere holds material m itself: m is plain
+ * (material_is_plain()) and its colour's channels are whole numbers from 0
+ * to 255, as the course's scenes write them; else 0. */
+static inline int sphere_plain(const Material *m)
+{
+    const double c[3] = {m->colour.r, m->colour.g, m->colour.b};
+
+    for (int k = 0; k < 3; k++)
+        if (!(c[k] >= 0 && c[k] <= 255 && c[k] == floor(c[k])) || signbit(c[k]))
+            return 0;
+    return material_is_plain(m);
+}
+
+/* Returns the plain material sphere s holds (sphere_plain()). */
+static inline Material sphere_material(const Sphere *s)
+{
+    return material_plain(colour(s->rgb[0], s->rgb[1], s->rgb[2]), s->reflection);
+}
+
+/* Gives sphere s the plain material m (sphere_plain(m)). */
+static inline void sphere_set_plain(Sphere *s, const Material *m)
+{
+    s->reflection = m->reflection;
+    s->material = -1;
+    s->rgb[0] = (uint8_t)m->colour.r;
+    s->rgb[1] = (uint8_t)m->colour.g;
+    s->rgb[2] = (uint8_t)m->colour.b;
+}
 
 /*
  * Finds where the ray first crosses the surface of the sphere of centre and

@@ -188,10 +188,10 @@ int scene_add_square(Scene *scene, const Square *s);
 int scene_add_cylinder(Scene *scene, const Cylinder *c);
 int scene_add_cone(Scene *scene, const Cone *c);
 
-/* Appends n >= 1 spheres of plain materials at once, as n calls of
- * scene_add_sphere() would (the same room; their positions among the
- * objects and their material -1 set here): fill(room, ctx) writes their
- * centres, radii, colours and mirror weights into room, on any threads,
+/* Appends n >= 1 spheres of plain materials (sphere_plain()) at once, as n
+ * calls of scene_add_sphere() would (the same room; their positions among
+ * the objects set here): fill(room, ctx) writes their centres and radii
+ * into room, and their materials with sphere_set_plain(), on any threads,
  * and returns 0. Returns 0, or
  * what fill() returned (non-zero), -1 or SCENE_OVER_LIMIT, with the scene
  * as it was, when fill() or one of those calls would fail. */

@@ -248,8 +248,7 @@ Material scene_material(const Scene *scene, ShapeKind kind, size_t k)
     if (kind != SHAPE_SPHERE)
         return *scene_shape_material(scene, kind, k);
     s = &scene->spheres[k];
-    return s->material < 0 ? material_plain(s->colour, s->reflection)
-                           : scene->materials[s->material];
+    return s->material < 0 ? sphere_material(s) : scene->materials[s->material];
 }
 
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
@@ -260,7 +259,7 @@ Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
         return scene_shape_material(scene, kind, k);
     s = &scene->spheres[k];
     if (s->material < 0) {
-        Material m = material_plain(s->colour, s->reflection);
+        Material m = sphere_material(s);
         long at = scene_add_material(scene, &m);
         if (at < 0) {
             *rc = (int)at;
@@ -388,13 +387,16 @@ static int scene_push_shape(Scene *scene, ShapeKind kind, void **items, size_t *
 
 int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
-    Sphere s = {centre, radius, m->colour, m->reflection, 0, -1};
+    Sphere s = {centre, radius, 0, 0, -1, {0, 0, 0}};
     long at = -1;
     int rc;
 
-    if (!material_is_plain(m) && (at = scene_add_material(scene, m)) < 0)
+    if (sphere_plain(m))
+        sphere_set_plain(&s, m);
+    else if ((at = scene_add_material(scene, m)) < 0)
         return (int)at;
-    s.material = (int)at;
+    else
+        s.material = (int)at;
     rc = scene_push_shape(scene, SHAPE_SPHERE, (void **)&scene->spheres, &scene->sphere_capacity,
                           &scene->sphere_count, &s, sizeof s, offsetof(Sphere, order), m);
     if (rc != 0 && at >= 0)
@@ -556,7 +558,6 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
 #endif
     for (size_t k = 0; k < n; k++) {
         room[k].order = (unsigned)(others + k);
-        room[k].material = -1;
     }
     scene->sphere_count += n;
     scene->kinds |= 1u << SHAPE_SPHERE;

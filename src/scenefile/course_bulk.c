@@ -61,10 +61,9 @@ static int course_sphere_part(const CourseParser *P, const CoursePart *part, Sph
         Material m;
         if (k == part->spheres || !lex_token_is(&rec.tok[0], "sphere:") ||
             course_sphere_fields(&Q, &rec, &room[k].centre, &room[k].radius, &m) != 0 ||
-            !material_is_plain(&m))
+            !sphere_plain(&m))
             return -1;
-        room[k].colour = m.colour;
-        room[k].reflection = m.reflection;
+        sphere_set_plain(&room[k], &m);
         k++;
     }
     return rc == 0 && k == part->spheres ? 0 : -1;
