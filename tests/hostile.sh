@@ -92,7 +92,7 @@ check "32768 x 32768 PPM under a 1G limit" 1 "raytrace: $T/huge.txt: error: a 32
 { echo "$H"; awk 'BEGIN { for (i = 0; i < 2000; i++) printf "sphere: %d 0 3 1 200 100 50 0\n", i }'; } >"$T/many.txt"
 check "memory limit while reading" 1 "raytrace: $T/many.txt:1032:1: error: the scene would pass the memory limit of 100 KiB here: raise it with --memory-limit" \
     "$T/o/out.ppm" --memory-limit 100K "$T/many.txt" "$T/o/out.ppm"
-check "memory limit before the hierarchy" 1 "raytrace: $T/many.txt: error: the bounding volume hierarchy of 2000 objects needs up to 344.7 KiB, more than the 286.2 KiB the memory limit leaves (--memory-limit; --no-accel renders without it, slowly)" \
+check "memory limit before the hierarchy" 1 "raytrace: $T/many.txt: error: the bounding volume hierarchy of 2000 objects needs up to 308.9 KiB, more than the 286.2 KiB the memory limit leaves (--memory-limit; --no-accel renders without it, slowly)" \
     "$T/o/out.ppm" --memory-limit 400K "$T/many.txt" "$T/o/out.ppm"
 check "--memory-limit 0 is no limit" 0 - "$T/o/out.ppm" --memory-limit 0 "$T/many.txt" "$T/o/out.ppm"
 check "a bad --memory-limit" 2 "raytrace: option '--memory-limit' takes a size in bytes such as 512M or 8G (0: no limit), found '1T'" \

@@ -118,15 +118,15 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
         (*bad)++;
     for (int k = 0; k < BVH_WIDTH; k++) {
         if (n->box[0][k] > n->box[3][k]) { /* unused */
-            if (n->count[k] != 0 || n->box[0][k] != INFINITY || n->box[3][k] != -INFINITY)
+            if (bvh_link_count(n->link[k]) != 0 || n->box[0][k] != INFINITY || n->box[3][k] != -INFINITY)
                 (*bad)++;
             continue;
         }
         if (k != used++)
             (*bad)++;
-        if (n->count[k] > BVH_LEAF_MAX)
+        if (bvh_link_count(n->link[k]) > BVH_LEAF_MAX)
             (*bad)++;
-        for (uint32_t i = n->child[k]; n->count[k] > 0 && i < n->child[k] + n->count[k]; i++) {
+        for (uint32_t i = bvh_link_index(n->link[k]); bvh_link_count(n->link[k]) > 0 && i < bvh_link_index(n->link[k]) + bvh_link_count(n->link[k]); i++) {
             uint32_t ref = bvh->prims[i];
             size_t base[4] = {0, sc->sphere_count, sc->sphere_count + sc->triangle_count,
                               sc->sphere_count + sc->triangle_count + sc->cube_count};
@@ -158,9 +158,9 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             if (!within_child(n, k, in_frame(bvh, lo), in_frame(bvh, hi)))
                 (*bad)++;
         }
-        if (n->count[k] == 0) {
-            const BvhNode *c = &bvh->nodes[n->child[k]];
-            if (n->child[k] <= id || n->child[k] >= bvh->node_count) {
+        if (bvh_link_count(n->link[k]) == 0) {
+            const BvhNode *c = &bvh->nodes[bvh_link_index(n->link[k])];
+            if (bvh_link_index(n->link[k]) <= id || bvh_link_index(n->link[k]) >= bvh->node_count) {
                 (*bad)++;
                 continue;
             }
@@ -169,7 +169,7 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
                     !within_child(n, k, vec3(c->box[0][j], c->box[1][j], c->box[2][j]),
                                   vec3(c->box[3][j], c->box[4][j], c->box[5][j])))
                     (*bad)++;
-            check_subtree(bvh, sc, n->child[k], depth + 1, seen, bad);
+            check_subtree(bvh, sc, bvh_link_index(n->link[k]), depth + 1, seen, bad);
         }
     }
     if (used < 2 && id != 0)

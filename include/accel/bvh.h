@@ -90,16 +90,36 @@ static inline size_t bvh_index(uint32_t ref)
  * primitive references), their boxes laid out by coordinate so that one
  * vector holds a coordinate of every child's box. The boxes are floats in
  * the hierarchy's frame (centre and scale below), rounded outwards, so
- * that they hold the scene's boxes; 256 bytes, four cache lines. An unused
- * child has the box lo = +inf, hi = -inf, which no ray meets. */
+ * that they hold the scene's boxes; 224 bytes, aligned so that no row of
+ * boxes straddles two cache lines. An unused child has the box lo = +inf,
+ * hi = -inf, which no ray meets. */
 typedef struct {
-    _Alignas(64) float box[6][BVH_WIDTH]; /* box[c][k]: child k's lo x y z
+    _Alignas(32) float box[6][BVH_WIDTH]; /* box[c][k]: child k's lo x y z
                                              (c < 3), then hi x y z */
-    uint32_t child[BVH_WIDTH];   /* a node's index, or a leaf's first
-                                    primitive reference */
-    uint8_t count[BVH_WIDTH];    /* a leaf's primitives; 0: a node (or an
-                                    unused child) */
+    uint32_t link[BVH_WIDTH];    /* child k: bvh_link() of its place */
 } BvhNode;
+
+/* A child's link: a node's index, or a leaf's first primitive reference
+ * and count (1 to BVH_LEAF_MAX), in one word; count 0 for a node. Indices
+ * are below BVH_MAX_LINK. */
+#define BVH_LINK_SHIFT 3
+#define BVH_MAX_LINK (UINT32_C(1) << (32 - BVH_LINK_SHIFT))
+static inline uint32_t bvh_link(uint32_t index, unsigned count)
+{
+    return index << BVH_LINK_SHIFT | count;
+}
+
+/* Returns the index (node) or first primitive reference (leaf) of link. */
+static inline uint32_t bvh_link_index(uint32_t link)
+{
+    return link >> BVH_LINK_SHIFT;
+}
+
+/* Returns the leaf's primitives of link, or 0 for a node. */
+static inline uint32_t bvh_link_count(uint32_t link)
+{
+    return link & ((1u << BVH_LINK_SHIFT) - 1);
+}
 
 /* The shapes a hierarchy is built over: arrays it reads but does not own,
  * which must stay where they are, unchanged, while it is in use. Each
@@ -136,7 +156,7 @@ typedef struct Bvh {
  * any coordinate, other than the shapes' own, that rays start from or
  * aim at (camera, screen, lights, unbounded shapes): the boxes' padding
  * grows with it. Returns 0, or -1 (nothing allocated) when memory runs out
- * or there are BVH_MAX_OF_KIND shapes of a kind, or 2^31 in all. */
+ * or there are BVH_MAX_OF_KIND shapes of a kind, or BVH_MAX_LINK / 2 in all. */
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
 
 /* Moves spheres, the array *bvh was built over (its owner's, to be

@@ -74,10 +74,11 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     memset(bvh, 0, sizeof *bvh);
     bvh->shapes = *shapes;
     bvh->avx2 = bvh_has_avx2();
-    /* Binary nodes are numbered below 2n in 32 bits. */
+    /* Binary nodes are numbered below 2n in 32 bits; wide nodes and
+     * primitives below BVH_MAX_LINK. */
     if (shapes->sphere_count >= BVH_MAX_OF_KIND || shapes->triangle_count >= BVH_MAX_OF_KIND ||
         shapes->cube_count >= BVH_MAX_OF_KIND || shapes->square_count >= BVH_MAX_OF_KIND ||
-        n == 0 || n > UINT32_MAX / 2)
+        n == 0 || n >= BVH_MAX_LINK / 2)
         return -1;
     prims = malloc(n * sizeof *prims);
     nodes = malloc((2 * n - 1) * sizeof *nodes);

@@ -71,18 +71,17 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
                 bvh_prim_box(&bvh->shapes, bvh->prims[i], pad, &p);
                 box_grow(&box[k], &p.box);
             }
-            w->child[k] = c->index;
-            w->count[k] = (uint8_t)c->count;
+            w->link[k] = bvh_link(c->index, c->count);
         } else if (c->size >= BVH_TASK_MIN) {
             size_t at = next;
             next += bvh_collapsed_count(nodes, members[k]);
-            w->child[k] = (uint32_t)at;
+            w->link[k] = bvh_link((uint32_t)at, 0);
 #ifdef _OPENMP
 #pragma omp task firstprivate(k, at) shared(box, deep)
 #endif
             bvh_collapse(nodes, members[k], at, depth + 1, pad, bvh, &box[k], &deep[k]);
         } else {
-            w->child[k] = (uint32_t)next;
+            w->link[k] = bvh_link((uint32_t)next, 0);
             next += bvh_collapse(nodes, members[k], next, depth + 1, pad, bvh, &box[k], &deep[k]);
         }
     }

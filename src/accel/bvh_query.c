@@ -349,10 +349,10 @@ static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
     }
 }
 
-/* A child still to visit: a node (count 0) or a leaf. */
+/* A child still to visit: a node or a leaf. */
 typedef struct {
-    uint32_t child, count; /* as in BvhNode */
-    float enter;           /* where the ray enters its box (t') */
+    uint32_t link; /* as in BvhNode */
+    float enter;   /* where the ray enters its box (t') */
 } BvhEntry;
 
 int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
@@ -376,13 +376,14 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
         int base = top;
 
         /* One node alone: straight in. */
-        if (bits != 0 && (bits & (bits - 1)) == 0 && node->count[__builtin_ctz(bits)] == 0) {
-            id = node->child[__builtin_ctz(bits)];
+        if (bits != 0 && (bits & (bits - 1)) == 0 &&
+            bvh_link_count(node->link[__builtin_ctz(bits)]) == 0) {
+            id = bvh_link_index(node->link[__builtin_ctz(bits)]);
             continue;
         }
         for (unsigned m = bits; m != 0; m &= m - 1) {
             int k = __builtin_ctz(m), j = top++;
-            BvhEntry e = {node->child[k], node->count[k], enter[k]};
+            BvhEntry e = {node->link[k], enter[k]};
             while (j > base && stack[j - 1].enter < e.enter) {
                 stack[j] = stack[j - 1];
                 j--;
@@ -393,6 +394,7 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
          * leaves are tested on the way, a node is visited. */
         for (;;) {
             BvhEntry e;
+            uint32_t first, count;
             if (top == 0) {
                 if (found)
                     hit->order = bvh_prim_order(bvh, hit->prim);
@@ -401,11 +403,13 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
             e = stack[--top];
             if (e.enter > cull)
                 continue;
-            if (e.count == 0) {
-                id = e.child;
+            first = bvh_link_index(e.link);
+            count = bvh_link_count(e.link);
+            if (count == 0) {
+                id = first;
                 break;
             }
-            for (uint32_t k = e.child; k < e.child + e.count; k++) {
+            for (uint32_t k = first; k < first + count; k++) {
                 uint32_t ref = bvh->prims[k];
                 real t;
                 if (!bvh_prim_hit(bvh, k, ray, 0, bound, &t))
@@ -432,16 +436,13 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
 /* A walk over the leaves whose boxes a ray meets, in no particular order:
  * the children still to visit. */
 typedef struct {
-    struct {
-        uint32_t child, count; /* as in BvhNode */
-    } stack[BVH_STACK];
+    uint32_t stack[BVH_STACK]; /* links, as in BvhNode */
     int top;
 } BvhWalk;
 
 static void bvh_walk_start(BvhWalk *w)
 {
-    w->stack[0].child = 0; /* the root */
-    w->stack[0].count = 0;
+    w->stack[0] = bvh_link(0, 0); /* the root */
     w->top = 1;
 }
 
@@ -457,21 +458,17 @@ static int bvh_next_leaf(const Bvh *bvh, const BvhRay *r, float limit, BvhWalk *
         const BvhNode *node;
         float enter[BVH_WIDTH];
         unsigned bits;
+        uint32_t link = w->stack[--w->top];
 
-        w->top--;
-        if (w->stack[w->top].count > 0) {
-            *first = w->stack[w->top].child;
-            *count = w->stack[w->top].count;
+        if (bvh_link_count(link) > 0) {
+            *first = bvh_link_index(link);
+            *count = bvh_link_count(link);
             return 1;
         }
-        node = &bvh->nodes[w->stack[w->top].child];
+        node = &bvh->nodes[bvh_link_index(link)];
         bits = bvh_children_enter(node, r, limits, enter);
-        for (; bits != 0; bits &= bits - 1) {
-            int k = __builtin_ctz(bits);
-            w->stack[w->top].child = node->child[k];
-            w->stack[w->top].count = node->count[k];
-            w->top++;
-        }
+        for (; bits != 0; bits &= bits - 1)
+            w->stack[w->top++] = node->link[__builtin_ctz(bits)];
     }
     return 0;
 }
