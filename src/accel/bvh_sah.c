@@ -41,38 +41,56 @@ static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axi
 }
 
 /* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
-static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale)
+static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale, int bins)
 {
     int b = (int)((bvh_centroid(p, axis) - lo) * scale);
 
-    return b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
+    return b < 0 ? 0 : b >= bins ? bins - 1 : b;
 }
 
-/* The surface area heuristic's best split of prims[start..end) into the
- * centroid bins of one axis: the cost (traversal 1, intersection 1 a
- * primitive, areas relative to the box of them all), and the first bin of
- * the right part (-1 when no split leaves both parts non-empty). */
-static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int axis, real lo,
-                         real scale, int *split)
+/* The primitives of prims[start..end) sorted into the centroid bins of
+ * each axis whose bit is set in axes, in one pass: how many in each bin,
+ * and the box of their boxes. */
+static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsigned axes,
+                         const real lo[3], const real scale[3], int bins,
+                         size_t count[3][BVH_BINS], Box bin[3][BVH_BINS])
 {
-    size_t count[BVH_BINS] = {0}, left_n[BVH_BINS], n = end - start;
-    Box bin[BVH_BINS], acc;
+    for (int a = 0; a < 3; a++) {
+        for (int b = 0; b < bins; b++) {
+            count[a][b] = 0;
+            box_empty(&bin[a][b]);
+        }
+    }
+    for (size_t i = start; i < end; i++) {
+        for (int a = 0; a < 3; a++) {
+            if (axes >> a & 1) {
+                int b = bvh_bin(&prims[i], a, lo[a], scale[a], bins);
+                count[a][b]++;
+                box_grow(&bin[a][b], &prims[i].box);
+            }
+        }
+    }
+}
+
+/* The surface area heuristic's best split of n primitives sorted into the
+ * centroid bins of one axis (count and bin, bvh_bin_axes()): the cost
+ * (traversal 1, intersection 1 a primitive, areas relative to the box of
+ * them all), and the first bin of the right part (-1 when no split leaves
+ * both parts non-empty). */
+static real bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], int bins,
+                         size_t n, int *split)
+{
+    size_t left_n[BVH_BINS];
+    Box acc;
     real left_area[BVH_BINS], best = INFINITY, per_area;
 
     *split = -1;
-    for (int b = 0; b < BVH_BINS; b++)
-        box_empty(&bin[b]);
-    for (size_t i = start; i < end; i++) {
-        int b = bvh_bin(&prims[i], axis, lo, scale);
-        count[b]++;
-        box_grow(&bin[b], &prims[i].box);
-    }
     /* An empty bin changes neither box nor count: it takes its left
      * neighbour's area, and a split at it costs exactly what the split at
      * the next full bin costs, which the sweep below meets first and keeps
      * on a tie; so it is passed over. */
     box_empty(&acc);
-    for (int b = 0, total = 0; b < BVH_BINS; b++) {
+    for (int b = 0, total = 0; b < bins; b++) {
         if (count[b] == 0) {
             left_area[b] = b > 0 ? left_area[b - 1] : 0;
         } else {
@@ -84,7 +102,7 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int a
     }
     per_area = 1 / box_half_area(&acc); /* acc holds every bin */
     box_empty(&acc);
-    for (int b = BVH_BINS - 1; b > 0; b--) {
+    for (int b = bins - 1; b > 0; b--) {
         real cost;
         if (count[b] == 0)
             continue;
@@ -107,13 +125,16 @@ static real bvh_sah_axis(const BuildPrim *prims, size_t start, size_t end, int a
  * of the right part, or start when it is better left a leaf. */
 static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *cb, int depth)
 {
-    size_t n = end - start, mid;
+    size_t n = end - start, mid, count[3][BVH_BINS];
     real extent[3], scale[3], best = INFINITY;
     int best_split = -1, axis;
+    unsigned axes = 0;
+    Box bin[3][BVH_BINS];
+    int bins = n < BVH_BINS ? (int)n : BVH_BINS;
 
     for (int a = 0; a < 3; a++) {
         extent[a] = cb->hi[a] - cb->lo[a];
-        scale[a] = BVH_BINS / extent[a];
+        scale[a] = bins / extent[a];
     }
     axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
     if (!(extent[axis] > 0)) {
@@ -130,12 +151,16 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
     /* Every axis with some extent: the cheapest split wins. Above
      * BVH_ALL_AXES primitives only the longest is binned: near the root,
      * where binning costs the most, it is nearly always the best. */
+    for (int a = 0; a < 3; a++)
+        if (extent[a] > 0 && (n <= BVH_ALL_AXES || a == axis))
+            axes |= 1u << a;
+    bvh_bin_axes(prims, start, end, axes, cb->lo, scale, bins, count, bin);
     for (int a = 0; a < 3; a++) {
         int split;
         real cost;
-        if (!(extent[a] > 0) || (n > BVH_ALL_AXES && a != axis))
+        if (!(axes >> a & 1))
             continue;
-        cost = bvh_sah_axis(prims, start, end, a, cb->lo[a], scale[a], &split);
+        cost = bvh_sah_axis(count[a], bin[a], bins, n, &split);
         if (split >= 0 && cost < best) {
             best = cost;
             best_split = split;
@@ -148,7 +173,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
     {
         size_t i = start, j = end;
         while (i < j) {
-            if (bvh_bin(&prims[i], axis, cb->lo[axis], scale[axis]) < best_split) {
+            if (bvh_bin(&prims[i], axis, cb->lo[axis], scale[axis], bins) < best_split) {
                 i++;
             } else {
                 BuildPrim tmp = prims[i];
