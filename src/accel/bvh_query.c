@@ -349,6 +349,19 @@ static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
     }
 }
 
+/* Asks for node's cache lines ahead of its visit: a large hierarchy's
+ * nodes are mostly not in the caches, and a nearest-hit query reaches a
+ * node it stacks only after sorting its siblings and testing the nearer
+ * leaves (10^6 spheres: 6% faster, 10^5: 3%; shadow rays' walks, which
+ * stop at their first hit, were slower for it). */
+static inline void bvh_prefetch(const BvhNode *node)
+{
+    const char *at = (const char *)node;
+
+    for (size_t line = 0; line < sizeof *node; line += 64)
+        __builtin_prefetch(at + line);
+}
+
 /* A child still to visit: a node or a leaf. */
 typedef struct {
     uint32_t link; /* as in BvhNode */
@@ -384,6 +397,8 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
         for (unsigned m = bits; m != 0; m &= m - 1) {
             int k = __builtin_ctz(m), j = top++;
             BvhEntry e = {node->link[k], enter[k]};
+            if (bvh_link_count(e.link) == 0)
+                bvh_prefetch(&bvh->nodes[bvh_link_index(e.link)]);
             while (j > base && stack[j - 1].enter < e.enter) {
                 stack[j] = stack[j - 1];
                 j--;
