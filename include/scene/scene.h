@@ -227,8 +227,21 @@ void scene_walk_start(SceneWalk *w);
  * returns 1, or returns 0 when there are no more. */
 int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *index);
 
-/* Returns the material of the shape of kind and index in scene. */
-Material scene_material(const Scene *scene, ShapeKind kind, size_t index);
+/* Returns where the material of shape index of kind, not a sphere, is
+ * held. */
+Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t index);
+
+/* Returns the material of the shape of kind and index in scene. Inline:
+ * every ray that hits something asks. */
+static inline Material scene_material(const Scene *scene, ShapeKind kind, size_t index)
+{
+    const Sphere *s;
+
+    if (kind != SHAPE_SPHERE)
+        return *scene_shape_material(scene, kind, index);
+    s = &scene->spheres[index];
+    return s->material < 0 ? sphere_material(s) : scene->materials[s->material];
+}
 
 /* Returns the material of the shape of kind and index in scene, to be
  * changed (the readers' texture records set it; a mesh's triangles share

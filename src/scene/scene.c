@@ -222,8 +222,7 @@ int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *i
     return found;
 }
 
-/* Returns where the material of shape k of kind, not a sphere, is held. */
-static Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
+Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
 {
     switch (kind) {
     case SHAPE_PLANE:
@@ -239,16 +238,6 @@ static Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t
     default:
         return &scene->cones[k].material;
     }
-}
-
-Material scene_material(const Scene *scene, ShapeKind kind, size_t k)
-{
-    const Sphere *s;
-
-    if (kind != SHAPE_SPHERE)
-        return *scene_shape_material(scene, kind, k);
-    s = &scene->spheres[k];
-    return s->material < 0 ? sphere_material(s) : scene->materials[s->material];
 }
 
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
