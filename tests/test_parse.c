@@ -76,6 +76,37 @@ static void parse_sphere_materials_read_back_exactly(void)
     scene_free(&sc);
 }
 
+/* Spheres in a row of the same material that is not plain share its entry
+ * in the scene's table (a field of one glass); an edit, such as a
+ * texture: record's, gives the sphere a copy of its own first. */
+static void parse_spheres_share_a_material_until_one_changes(void)
+{
+    Scene sc;
+    Error err;
+    Material *m;
+    int rc = 0;
+
+    CHECK_INT(0, parse(HEADER "sphere: 0 0 5 1 200 100 50 0.25 0.5 1.5\n"
+                              "sphere: 0 0 6 1 200 100 50 0.25 0.5 1.5\n"
+                              "sphere: 0 0 7 1 200 100 50 0.25 0.5 1.5\n"
+                              "sphere: 0 0 8 1 200 100 50 0.25 0.5 1.25\n",
+                       &sc, &err));
+    CHECK_INT(2, (long long)sc.material_count);
+    CHECK_INT(0, sc.spheres[0].material);
+    CHECK_INT(0, sc.spheres[2].material);
+    CHECK_INT(1, sc.spheres[3].material);
+    m = scene_material_edit(&sc, SHAPE_SPHERE, 1, &rc);
+    CHECK(m != NULL);
+    if (m)
+        m->texture = 0;
+    CHECK_INT(-1, scene_material(&sc, SHAPE_SPHERE, 0).texture);
+    CHECK_INT(0, scene_material(&sc, SHAPE_SPHERE, 1).texture);
+    CHECK_INT(-1, scene_material(&sc, SHAPE_SPHERE, 2).texture);
+    CHECK_NEAR(0.5, scene_material(&sc, SHAPE_SPHERE, 1).transparency, 0);
+    CHECK_NEAR(1.5, scene_material(&sc, SHAPE_SPHERE, 1).ior, 0);
+    scene_free(&sc);
+}
+
 static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
 {
     const char *text = "\xEF\xBB\xBF# a scene\r\n\r\n  0\t0 0   # camera\r\n-1 1 1#tl\r\n"
@@ -788,6 +819,8 @@ static void parse_file_errors(void)
 const TestCase parse_tests[] = {
     {"parse_accepts_the_example", parse_accepts_the_example},
     {"parse_sphere_materials_read_back_exactly", parse_sphere_materials_read_back_exactly},
+    {"parse_spheres_share_a_material_until_one_changes",
+     parse_spheres_share_a_material_until_one_changes},
     {"parse_accepts_comments_blanks_crlf_tabs_bom", parse_accepts_comments_blanks_crlf_tabs_bom},
     {"parse_accepts_number_forms", parse_accepts_number_forms},
     {"parse_numbers_round_as_strtod", parse_numbers_round_as_strtod},

@@ -175,7 +175,8 @@ void scene_free(Scene *scene);
 
 /* Each scene_add_*() appends a copy of its argument, giving a shape its
  * position among the scene's objects (a sphere the material *m, in the
- * scene's table when it is not plain; a triangle a material of its own,
+ * scene's table when it is not plain, shared with the sphere before when
+ * that one's is the same; a triangle a material of its own,
  * a copy of *m, and no shading: scene_shade_triangle() gives it some);
  * returns 0, or -1 when memory runs out or SCENE_OVER_LIMIT when it would
  * pass the memory limit, the scene unchanged. */
@@ -245,10 +246,10 @@ static inline Material scene_material(const Scene *scene, ShapeKind kind, size_t
 
 /* Returns the material of the shape of kind and index in scene, to be
  * changed (the readers' texture records set it; a mesh's triangles share
- * one), valid until the next shape or material is added; a sphere's plain
- * material moves to the scene's table first. Returns NULL, the scene
- * unchanged, when that needs memory there is not (SCENE_OVER_LIMIT or -1
- * in *rc). */
+ * one), valid until the next shape or material is added; a sphere is
+ * first given a copy of its own in the scene's table. Returns NULL, the
+ * scene unchanged, when that needs memory there is not (SCENE_OVER_LIMIT
+ * or -1 in *rc). */
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t index, int *rc);
 
 /* Returns tri's shading, a triangle of scene, or NULL when it is plain. */

@@ -243,20 +243,20 @@ Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
 {
     Sphere *s;
+    Material m;
+    long at;
 
     if (kind != SHAPE_SPHERE)
         return scene_shape_material(scene, kind, k);
+    /* A copy of its own: spheres in a row may share one (scene_add_sphere()). */
     s = &scene->spheres[k];
-    if (s->material < 0) {
-        Material m = sphere_material(s);
-        long at = scene_add_material(scene, &m);
-        if (at < 0) {
-            *rc = (int)at;
-            return NULL;
-        }
-        s->material = (int)at;
+    m = s->material < 0 ? sphere_material(s) : scene->materials[s->material];
+    if ((at = scene_add_material(scene, &m)) < 0) {
+        *rc = (int)at;
+        return NULL;
     }
-    return &scene->materials[s->material];
+    s->material = (int)at;
+    return &scene->materials[at];
 }
 
 size_t scene_bounded_count(const Scene *scene)
@@ -378,10 +378,12 @@ int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
     Sphere s = {centre, radius, 0, 0, -1, {0, 0, 0}};
     long at = -1;
-    int rc;
+    int rc, last = scene->sphere_count > 0 ? scene->spheres[scene->sphere_count - 1].material : -1;
 
     if (sphere_plain(m))
         sphere_set_plain(&s, m);
+    else if (last >= 0 && memcmp(&scene->materials[last], m, sizeof *m) == 0)
+        s.material = last; /* the previous sphere's: shared (an edit copies it first) */
     else if ((at = scene_add_material(scene, m)) < 0)
         return (int)at;
     else

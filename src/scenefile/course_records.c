@@ -109,14 +109,11 @@ static const RecordSpec course_cylinder_texture_spec = {"the cylinder's texture"
 static const RecordSpec course_cone_texture_spec = {"the cone's texture", "path [filter]", 0, 0, 0,
                                                     NULL, NULL};
 
-/* Returns the material of the last object read (there must be one), to be
- * changed, or NULL with *rc set (scene_material_edit()). */
-static Material *course_last_material(CourseParser *P, Scene *scene, int *rc)
+/* Returns the kind of the last object read (there must be one): a mesh's
+ * triangles share their material. */
+static ShapeKind course_last_kind(const CourseParser *P)
 {
-    /* A mesh's triangles share their material. */
-    return scene_material_edit(
-        scene, P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind,
-        P->last_index, rc);
+    return P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind;
 }
 
 /* shape -> 'KIND:' geometry r g b reflection [transparency index]: reads
@@ -321,10 +318,7 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
         return -1;
     }
     spec = specs[P->last_kind];
-    m = course_last_material(P, scene, &rc);
-    if (!m)
-        return course_fail_memory(P, rec, scene, rc);
-    if (m->texture >= 0) {
+    if (scene_material(scene, course_last_kind(P), P->last_index).texture >= 0) {
         course_fail(P, &rec->line, rec->tok[0].column,
                    "%s is already set: an object takes one texture: record", spec->what);
         return -1;
@@ -356,7 +350,7 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
     index = course_load_texture(P, rec, &rec->tok[1], scene);
     if (index < 0)
         return -1;
-    m = course_last_material(P, scene, &rc);
+    m = scene_material_edit(scene, course_last_kind(P), P->last_index, &rc);
     if (!m)
         return course_fail_memory(P, rec, scene, rc);
     m->texture = index;
