@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 enum {
-    BVH_BINS = 16,       /* centroid bins per split */
+    BVH_BINS = 16,       /* centroid bins per split (n for n < 16 primitives) */
     BVH_ALL_AXES = 4096  /* at most this many primitives: SAH on every axis */
 };
 

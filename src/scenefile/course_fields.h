@@ -51,7 +51,7 @@ int course_material(CourseParser *P, const Record *rec, const RecordSpec *spec, 
  * texture: record after it. */
 void course_note_object(CourseParser *P, int kind, size_t index);
 
-/* Reads rec, a sphere: record, into *s (its order aside). */
+/* Reads rec, a sphere: record, into *centre, *radius and *m. */
 int course_sphere_fields(CourseParser *P, const Record *rec, Vec3 *centre, real *radius,
                          Material *m);
 
