@@ -194,7 +194,7 @@ $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 
 # raytrace with Embree 3's traversal in place of ours (tests/bench/embree_bvh.c),
 # which the benchmark races against ours when libembree-dev is installed.
-EMBREE_OBJ := $(RAYTRACE_OBJ) $(filter-out $(BUILD)/accel/%,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
+EMBREE_OBJ := $(RAYTRACE_OBJ) $(filter-out $(BUILD)/accel/bvh%,$(LIB_OBJ)) $(BUILD)/embree/embree_bvh.o
 EMBREE_PROBE = printf '$(HASH)include <embree3/rtcore.h>\nint main(void){return !rtcNewDevice(0);}\n' \
 	| $(CC) -x c - -o /dev/null -lembree3 >/dev/null 2>&1
 

@@ -414,11 +414,12 @@ awk 'BEGIN {
 }' >"$T/slow.txt"
 printf 'old\n' >"$T/slow.ppm"
 
-# interrupt SIGNAL STATUS: starts the slow render, sends SIGNAL half a
+# interrupt SIGNAL STATUS: starts the slow render (16 samples a pixel, so
+# that no speed-up makes it end first), sends SIGNAL half a
 # second in (its output open: unnamed, or a temporary file where the system
 # cannot), and checks the exit status and that nothing changed.
 interrupt() {
-    "$RT" "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
+    "$RT" -s 16 "$T/slow.txt" "$T/slow.ppm" 2>"$T/err" &
     pid=$!
     sleep 0.5
     kill -0 $pid 2>/dev/null || fail "SIG$1: the render ended before the signal"

@@ -174,6 +174,11 @@ void bvh_free(Bvh *bvh);
  * at once for n primitives. */
 size_t bvh_build_memory(size_t n);
 
+/* Returns the bytes bvh_build() holds at its peak for n primitives beyond
+ * those the hierarchy keeps (the binary tree, while it is collapsed), which
+ * are free again once it returns. */
+size_t bvh_build_scratch(size_t n);
+
 /* Returns the bytes *bvh holds. */
 size_t bvh_memory(const Bvh *bvh);
 

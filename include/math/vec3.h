@@ -71,6 +71,13 @@ static inline Vec3 vec3_normalize(Vec3 a)
     return vec3_scale(a, (real)1 / vec3_length(a));
 }
 
+/* Returns 1 when a and b are the same point (coordinate by coordinate, so
+ * -0 equals 0), else 0. */
+static inline int vec3_equal(Vec3 a, Vec3 b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
 /* Returns the component-wise absolute value of a. */
 static inline Vec3 vec3_abs(Vec3 a)
 {

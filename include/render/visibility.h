@@ -39,6 +39,13 @@ int visibility_occluded(const Scene *scene, const Ray *ray, real tmax);
  * object, and then skip the walk. */
 int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, uint32_t *cache);
 
+/* visibility_occluded_cached() for a shadow ray towards point light
+ * number light of the scene, ending there (tmax = 1): asks the light's
+ * light buffer (light_buffer.h) when it has one, whose *cache then names a
+ * sphere. */
+int visibility_light_occluded(const Scene *scene, size_t light, const Ray *ray, real tmax,
+                              uint32_t *cache);
+
 /* Returns the share of light that passes along the ray from t = 0 to tmax:
  * the product of the transparency T of every surface crossing there, in
  * the order of ShapeKind, each kind by index (so the same bits with or

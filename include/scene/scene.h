@@ -141,6 +141,12 @@ typedef struct Scene {
     struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
                                triangles, cubes, squares), or NULL: every ray
                                then tests every object */
+    struct LightBuffer *eye_buffer; /* the primary rays' light buffer
+                               (light_buffer.h) around a pinhole eye, or
+                               NULL: they walk the hierarchy */
+    struct LightBuffer *light_buffers; /* light_count of them, each point
+                               light's shadow rays' (empty, first NULL, when
+                               it has none), or NULL: none */
     unsigned kinds;         /* bit k set: the scene holds shapes of ShapeKind
                                k (so the loops pass over absent kinds) */
     int has_transparency;   /* some object has T > 0 */

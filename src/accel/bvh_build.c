@@ -194,6 +194,11 @@ size_t bvh_build_memory(size_t n)
     return (build > collapse ? build : collapse) + 4096;
 }
 
+size_t bvh_build_scratch(size_t n)
+{
+    return n > SIZE_MAX / (2 * sizeof(BuildNode)) ? SIZE_MAX : n * 2 * sizeof(BuildNode);
+}
+
 size_t bvh_memory(const Bvh *bvh)
 {
     return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims;

@@ -128,7 +128,7 @@ double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Li
     if (t->scene->has_transparency)
         return visibility_transmittance(t->scene, shadow, tmax);
     if (k < TRACE_OCCLUDERS && t->occluders)
-        return visibility_occluded_cached(t->scene, shadow, tmax, &t->occluders[k]) ? 0 : 1;
+        return visibility_light_occluded(t->scene, k, shadow, tmax, &t->occluders[k]) ? 0 : 1;
     return visibility_occluded(t->scene, shadow, tmax) ? 0 : 1;
 }
 

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "accel/bvh.h"
+#include "accel/light_buffer.h"
 
 /* The hierarchy's kinds of shape, as ShapeKinds. */
 static const ShapeKind visibility_of_bvh[4] = {SHAPE_SPHERE, SHAPE_TRIANGLE, SHAPE_CUBE,
@@ -119,6 +120,18 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
     int found = 0;
     size_t best = 0;
 
+    /* A primary ray of a pinhole camera asks the eye's light buffer, a
+     * scene of spheres alone having one. */
+    if (scene->eye_buffer && vec3_equal(ray->origin, scene->eye_buffer->centre)) {
+        real t;
+        size_t k;
+        int rc = light_buffer_nearest(scene->eye_buffer, ray, tmax, &t, &k);
+        if (rc >= 0) {
+            if (rc)
+                visibility_set_hit(hit, t, SHAPE_SPHERE, k, scene->spheres[k].order);
+            return rc;
+        }
+    }
     if (scene->accel)
         return visibility_nearest_accel(scene, ray, tmax, hit);
     for (size_t k = 0; k < scene->sphere_count; k++) {
@@ -180,6 +193,21 @@ int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, ui
         if (visibility_occluded_by(scene, visibility_first(m), ray, tmax))
             return 1;
     return 0;
+}
+
+int visibility_light_occluded(const Scene *scene, size_t light, const Ray *ray, real tmax,
+                              uint32_t *cache)
+{
+    uint32_t none = BVH_NO_SLOT;
+
+    if (scene->light_buffers && scene->light_buffers[light].first) {
+        int rc = light_buffer_occluded(&scene->light_buffers[light], ray, tmax, cache);
+        if (rc >= 0)
+            return rc;
+        /* The cache names a sphere, not the hierarchy's slot. */
+        cache = &none;
+    }
+    return visibility_occluded_cached(scene, ray, tmax, cache);
 }
 
 /* Multiplies *share by a material's transparency once per crossing

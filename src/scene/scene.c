@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "accel/bvh.h"
+#include "accel/light_buffer.h"
 #include "base/grow.h"
 #include "base/hash.h"
 
@@ -24,8 +25,22 @@ void scene_init(Scene *scene)
     scene->accel = NULL;
 }
 
+/* Releases the scene's light buffers. */
+static void scene_free_buffers(Scene *scene)
+{
+    if (scene->eye_buffer)
+        light_buffer_free(scene->eye_buffer);
+    free(scene->eye_buffer);
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        light_buffer_free(&scene->light_buffers[i]);
+    free(scene->light_buffers);
+    scene->eye_buffer = NULL;
+    scene->light_buffers = NULL;
+}
+
 void scene_free(Scene *scene)
 {
+    scene_free_buffers(scene);
     if (scene->accel) {
         bvh_free(scene->accel);
         free(scene->accel);
@@ -83,6 +98,10 @@ size_t scene_memory(const Scene *scene)
         scene_sum(&m, texture_memory(&scene->textures[i]));
     if (scene->accel)
         scene_sum(&m, bvh_memory(scene->accel));
+    if (scene->eye_buffer)
+        scene_sum(&m, light_buffer_memory(scene->eye_buffer));
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        scene_sum(&m, light_buffer_memory(&scene->light_buffers[i]));
     return m;
 }
 
@@ -264,6 +283,56 @@ size_t scene_bounded_count(const Scene *scene)
     return scene->sphere_count + scene->triangle_count + scene->cube_count + scene->square_count;
 }
 
+enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
+
+/* Returns the bytes each of `buffers` light buffers may take: a share of
+ * what the hierarchy's build held and gave back (so that they do not raise
+ * the peak), or SCENE_BUFFER_FLOOR if more, within the memory limit. */
+static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
+{
+    size_t share = bvh_build_scratch(scene_bounded_count(scene)) / buffers;
+    size_t left = scene_memory_left(scene);
+
+    share = share > SCENE_BUFFER_FLOOR ? share : SCENE_BUFFER_FLOOR;
+    return share < left ? share : left;
+}
+
+/* Builds the light buffers of a scene of spheres alone (light_buffer.h):
+ * around a pinhole eye for the primary rays, and around each point light
+ * for the shadow rays of an opaque scene (a transparent one's shadow rays
+ * multiply transparencies, which the hierarchy lists). Where a buffer
+ * would not fit its budget or pay, the rays walk the hierarchy: the
+ * answers are the same. */
+static void scene_build_buffers(Scene *scene, int threads)
+{
+    size_t buffers = 0, budget;
+
+    if (scene->kinds != 1u << SHAPE_SPHERE)
+        return;
+    buffers += scene->camera.aperture == 0;
+    for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)
+        buffers += !scene->lights[i].distant;
+    if (buffers == 0)
+        return;
+    budget = scene_buffer_budget(scene, buffers);
+    if (scene->camera.aperture == 0) {
+        scene->eye_buffer = calloc(1, sizeof *scene->eye_buffer);
+        if (scene->eye_buffer &&
+            light_buffer_build(scene->eye_buffer, scene->camera.eye, scene->spheres,
+                               scene->sphere_count, budget, threads) != 0) {
+            free(scene->eye_buffer);
+            scene->eye_buffer = NULL;
+        }
+    }
+    if (scene->has_transparency)
+        return;
+    scene->light_buffers = calloc(scene->light_count, sizeof *scene->light_buffers);
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        if (!scene->lights[i].distant)
+            (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
+                                     scene->spheres, scene->sphere_count, budget, threads);
+}
+
 int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
@@ -288,6 +357,7 @@ int scene_build_accel(Scene *scene, int threads)
     if (!scene->has_transparency)
         (void)bvh_renumber_spheres(bvh, scene->spheres);
     scene->accel = bvh;
+    scene_build_buffers(scene, threads);
     return 0;
 }
 
