@@ -43,6 +43,7 @@
 enum {
     LB_FACES = 6,
     LB_RES_MAX = 1024,  /* cells along a face's edge, at most */
+    LB_CELLS_A_SPHERE = 64, /* cells, at most, for each sphere */
     LB_HOLDERS_MAX = 8, /* spheres listed in every cell, at most */
     LB_BUCKETS = 64,    /* of the spheres' apparent sizes, by power of 2 */
     LB_COARSEST = 4     /* a buffer coarser than the resolution that pays
@@ -215,9 +216,9 @@ static double lb_extent(Vec3 centre, const Sphere *spheres, size_t count, int th
 }
 
 /* Returns the cells along a face's edge that pay best (measured on fields
- * of 10^3 to 10^6 spheres): a cell about as wide as the cap of a sphere of
- * median apparent size (its radius over its distance), as a histogram by
- * powers of two finds it. */
+ * of 10^3 to 10^6 spheres): a cell about half as wide as the cap of a
+ * sphere of median apparent size (its radius over its distance), as a
+ * histogram by powers of two finds it. */
 static int lb_resolution(const LightBuffer *lb, size_t count, int threads)
 {
     size_t bucket[LB_BUCKETS] = {0}, seen = 0, half;
@@ -244,8 +245,10 @@ static int lb_resolution(const LightBuffer *lb, size_t count, int threads)
     for (half = 0; b < LB_BUCKETS && half + bucket[b] < (seen + 1) / 2; b++)
         half += bucket[b];
     /* Sizes in bucket b are in [2^-(b+1), 2^-b): a cap about 1.4 2^-b
-     * across; a cell near a face's centre spans about 2 / res radians. */
-    res = ldexp(1.0, b) * 1.5;
+     * across; a cell near a face's centre spans about 2 / res radians.
+     * Fewer spheres than cells pay for: at most LB_CELLS_A_SPHERE each. */
+    res = ldexp(1.0, b) * 3;
+    res = fmin(res, sqrt((double)LB_CELLS_A_SPHERE * (double)count / LB_FACES));
     return res < 1 ? 1 : res > LB_RES_MAX ? LB_RES_MAX : (int)res;
 }
 
