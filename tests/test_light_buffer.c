@@ -176,7 +176,8 @@ static void light_buffer_keeps_to_its_budget(void)
 
 /* A scene of spheres alone builds its buffers (the eye's, the point
  * lights'), and renders' queries through them answer as without any
- * structure; a transparent scene keeps the eye's only, a lens none. */
+ * structure; a transparent scene keeps the eye's only, a lens none, and an
+ * image of fewer pixels than spheres none. */
 static void scene_buffers_answer_as_without(void)
 {
     Scene sc, plain;
@@ -195,8 +196,9 @@ static void scene_buffers_answer_as_without(void)
             CHECK_INT(0, scene_add_light(s, &light));
             CHECK_INT(0, scene_add_light(s, &sun));
             s->camera.eye = vec3(0, 1, -8);
+            s->camera.width = s->camera.height = pass == 0 ? 20 : 100; /* 400, 10^4 pixels */
             s->camera.aperture = pass == 2 ? 0.1 : 0;
-            for (int i = 0; i < 300; i++) {
+            for (int i = 0; i < (pass == 0 ? 400 : 300); i++) {
                 Material m = material_plain(colour(100, 100, 100), 0.3);
                 m.transparency = pass == 1 && i % 5 == 0 ? 0.5 : 0;
                 CHECK_INT(0, scene_add_sphere(s, vec3_scale(rng_unit_vector(), 3 * rng_uniform()),
@@ -227,6 +229,19 @@ static void scene_buffers_answer_as_without(void)
     }
     CHECK(hits > 2000);
     CHECK_INT(0, differ);
+    /* Fewer pixels than spheres: no buffers. */
+    scene_init(&sc);
+    {
+        Light light = light_point(vec3(2, 6, -1), colour(255, 255, 255));
+        Material m = material_plain(colour(100, 100, 100), 0);
+        CHECK_INT(0, scene_add_light(&sc, &light));
+        sc.camera.width = sc.camera.height = 20;
+        for (int i = 0; i < 401; i++)
+            CHECK_INT(0, scene_add_sphere(&sc, rng_unit_vector(), 0.1, &m));
+        CHECK_INT(0, scene_build_accel(&sc, 1));
+        CHECK(sc.accel != NULL && sc.eye_buffer == NULL && sc.light_buffers == NULL);
+        scene_free(&sc);
+    }
 }
 
 const TestCase light_buffer_tests[] = {

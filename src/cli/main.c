@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "accel/bvh.h"
+#include "accel/light_buffer.h"
 #include "base/error.h"
 #include "base/file.h"
 #include "base/hash.h"
@@ -182,6 +183,24 @@ static double main_peak_memory(void)
     return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
 }
 
+
+/* Prints, for -v, the light buffers the scene was given (light_buffer.h). */
+static void main_buffers(const Scene *scene)
+{
+    char b[NUMBER_FORMAT_MAX];
+
+    if (scene->eye_buffer)
+        fprintf(stderr, "raytrace: light buffer of the eye: 6 x %d x %d cells, %zu entries, %s\n",
+                scene->eye_buffer->res, scene->eye_buffer->res, scene->eye_buffer->entry_count,
+                number_bytes(b, light_buffer_memory(scene->eye_buffer)));
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        if (scene->light_buffers[i].first)
+            fprintf(stderr,
+                    "raytrace: light buffer of light %zu: 6 x %d x %d cells, %zu entries, %s\n",
+                    i + 1, scene->light_buffers[i].res, scene->light_buffers[i].res,
+                    scene->light_buffers[i].entry_count,
+                    number_bytes(b, light_buffer_memory(&scene->light_buffers[i])));
+}
 /* Prints the -v summary: size, threads, rays by kind, time, speed, peak
  * memory. */
 static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
@@ -483,6 +502,7 @@ static int main_render(const Options *opts)
                             "%.3f s%s\n",
                     scene.accel->node_count, scene.accel->depth, accel_time,
                     scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
+        main_buffers(&scene);
         main_statistics(&img, &ropts, threads, &counts, render_time);
         fprintf(stderr, "raytrace: wrote the image in %.3f s\n", write_time);
     } else if (!opts->quiet && isatty(STDERR_FILENO)) {

@@ -300,14 +300,18 @@ static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
 /* Builds the light buffers of a scene of spheres alone (light_buffer.h):
  * around a pinhole eye for the primary rays, and around each point light
  * for the shadow rays of an opaque scene (a transparent one's shadow rays
- * multiply transparencies, which the hierarchy lists). Where a buffer
- * would not fit its budget or pay, the rays walk the hierarchy: the
- * answers are the same. */
+ * multiply transparencies, which the hierarchy lists), when the image
+ * has at least as many pixels as the scene spheres. Where a buffer would
+ * not fit its budget or pay, the rays walk the hierarchy: the answers are
+ * the same. */
 static void scene_build_buffers(Scene *scene, int threads)
 {
     size_t buffers = 0, budget;
 
-    if (scene->kinds != 1u << SHAPE_SPHERE)
+    /* A buffer's build reads every sphere three times; the rays it saves
+     * come from the pixels: fewer pixels than spheres do not pay for it. */
+    if (scene->kinds != 1u << SHAPE_SPHERE ||
+        (double)scene->camera.width * scene->camera.height < (double)scene->sphere_count)
         return;
     buffers += scene->camera.aperture == 0;
     for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)
