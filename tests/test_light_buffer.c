@@ -98,7 +98,7 @@ static void light_buffer_answers_as_the_loops(void)
                 : where == 2 ? vec3_add(spheres[5].centre, vec3_scale(rng_unit_vector(),
                                                                       spheres[5].radius * 0.5))
                              : rim_point(&spheres[7], vec3(0, 0, 0), 1);
-            if (light_buffer_build(&lb, c, spheres, N, SIZE_MAX, 2) != 0)
+            if (light_buffer_build(&lb, c, spheres, N, SIZE_MAX, SIZE_MAX, 2) != 0)
                 continue;
             built++;
             for (int i = 0; i < 3000; i++) {
@@ -163,9 +163,9 @@ static void light_buffer_keeps_to_its_budget(void)
     if (!spheres)
         return;
     random_spheres(spheres, N, 1);
-    CHECK_INT(1, light_buffer_build(&lb, vec3(0, 5, 0), spheres, N, 1000, 1));
+    CHECK_INT(1, light_buffer_build(&lb, vec3(0, 5, 0), spheres, N, SIZE_MAX, 1000, 1));
     CHECK(lb.first == NULL && light_buffer_memory(&lb) == 0);
-    CHECK_INT(0, light_buffer_build(&lb, vec3(0, 5, 0), spheres, N, 1 << 20, 1));
+    CHECK_INT(0, light_buffer_build(&lb, vec3(0, 5, 0), spheres, N, SIZE_MAX, 1 << 20, 1));
     CHECK(light_buffer_memory(&lb) <= 1 << 20);
     ray.origin = lb.centre;
     CHECK_INT(-1, light_buffer_nearest(&lb, &ray, INFINITY, &t, &k));
@@ -177,7 +177,7 @@ static void light_buffer_keeps_to_its_budget(void)
 /* A scene of spheres alone builds its buffers (the eye's, the point
  * lights'), and renders' queries through them answer as without any
  * structure; a transparent scene keeps the eye's only, a lens none, and an
- * image of fewer pixels than spheres none. */
+ * image of fewer than two pixels a sphere none. */
 static void scene_buffers_answer_as_without(void)
 {
     Scene sc, plain;
@@ -196,9 +196,9 @@ static void scene_buffers_answer_as_without(void)
             CHECK_INT(0, scene_add_light(s, &light));
             CHECK_INT(0, scene_add_light(s, &sun));
             s->camera.eye = vec3(0, 1, -8);
-            s->camera.width = s->camera.height = pass == 0 ? 20 : 100; /* 400, 10^4 pixels */
+            s->camera.width = s->camera.height = pass == 0 ? 40 : 100; /* 1600, 10^4 pixels */
             s->camera.aperture = pass == 2 ? 0.1 : 0;
-            for (int i = 0; i < (pass == 0 ? 400 : 300); i++) {
+            for (int i = 0; i < (pass == 0 ? 800 : 300); i++) {
                 Material m = material_plain(colour(100, 100, 100), 0.3);
                 m.transparency = pass == 1 && i % 5 == 0 ? 0.5 : 0;
                 CHECK_INT(0, scene_add_sphere(s, vec3_scale(rng_unit_vector(), 3 * rng_uniform()),
@@ -229,14 +229,14 @@ static void scene_buffers_answer_as_without(void)
     }
     CHECK(hits > 2000);
     CHECK_INT(0, differ);
-    /* Fewer pixels than spheres: no buffers. */
+    /* Fewer than two pixels a sphere: no buffers. */
     scene_init(&sc);
     {
         Light light = light_point(vec3(2, 6, -1), colour(255, 255, 255));
         Material m = material_plain(colour(100, 100, 100), 0);
         CHECK_INT(0, scene_add_light(&sc, &light));
         sc.camera.width = sc.camera.height = 20;
-        for (int i = 0; i < 401; i++)
+        for (int i = 0; i < 201; i++)
             CHECK_INT(0, scene_add_sphere(&sc, rng_unit_vector(), 0.1, &m));
         CHECK_INT(0, scene_build_accel(&sc, 1));
         CHECK(sc.accel != NULL && sc.eye_buffer == NULL && sc.light_buffers == NULL);

@@ -36,11 +36,12 @@ typedef struct LightBuffer {
 } LightBuffer;
 
 /* Builds into *lb the light buffer of the count spheres around centre,
- * with up to threads threads, unless it would take more than max_bytes:
- * returns 0, -1 when memory runs out, or 1 when the buffer would be too
- * large to pay (nothing allocated but for 0). */
+ * for about `rays` rays (no more cells than that), with up to threads
+ * threads, unless it would take more than max_bytes: returns 0, -1 when
+ * memory runs out, or 1 when the buffer would be too large to pay
+ * (nothing allocated but for 0). */
 int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size_t count,
-                       size_t max_bytes, int threads);
+                       size_t rays, size_t max_bytes, int threads);
 
 /* Releases what *lb owns. */
 void light_buffer_free(LightBuffer *lb);

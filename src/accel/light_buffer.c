@@ -219,7 +219,7 @@ static double lb_extent(Vec3 centre, const Sphere *spheres, size_t count, int th
  * of 10^3 to 10^6 spheres): a cell about half as wide as the cap of a
  * sphere of median apparent size (its radius over its distance), as a
  * histogram by powers of two finds it. */
-static int lb_resolution(const LightBuffer *lb, size_t count, int threads)
+static int lb_resolution(const LightBuffer *lb, size_t count, size_t rays, int threads)
 {
     size_t bucket[LB_BUCKETS] = {0}, seen = 0, half;
     int b = 0;
@@ -246,9 +246,10 @@ static int lb_resolution(const LightBuffer *lb, size_t count, int threads)
         half += bucket[b];
     /* Sizes in bucket b are in [2^-(b+1), 2^-b): a cap about 1.4 2^-b
      * across; a cell near a face's centre spans about 2 / res radians.
-     * Fewer spheres than cells pay for: at most LB_CELLS_A_SPHERE each. */
+     * Nor do more cells than LB_CELLS_A_SPHERE a sphere, or than rays. */
     res = ldexp(1.0, b) * 3;
     res = fmin(res, sqrt((double)LB_CELLS_A_SPHERE * (double)count / LB_FACES));
+    res = fmin(res, sqrt((double)rays / LB_FACES));
     return res < 1 ? 1 : res > LB_RES_MAX ? LB_RES_MAX : (int)res;
 }
 
@@ -378,7 +379,7 @@ static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, siz
 }
 
 int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size_t count,
-                       size_t max_bytes, int threads)
+                       size_t rays, size_t max_bytes, int threads)
 {
     size_t cells, total, holders = 0;
     uint32_t holder[LB_HOLDERS_MAX];
@@ -396,7 +397,7 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
     if (!(m <= 1e300))
         return 1;
     /* The finest resolution up to lb_resolution()'s that fits max_bytes. */
-    res = lb_resolution(lb, count, threads);
+    res = lb_resolution(lb, count, rays, threads);
     lb->res = lb_choose(lb, res, count, m, max_bytes, threads);
     if (lb->res == 0)
         return 1;
