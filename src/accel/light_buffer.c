@@ -46,9 +46,9 @@ enum {
     LB_CELLS_A_SPHERE = 64, /* cells, at most, for each sphere */
     LB_HOLDERS_MAX = 8, /* spheres listed in every cell, at most */
     LB_BUCKETS = 64,    /* of the spheres' apparent sizes, by power of 2 */
-    LB_COARSEST = 4     /* a buffer coarser than the resolution that pays
-                           best by this factor is not worth building (the
-                           build tries that one and two halvings) */
+    LB_STEPS = 8        /* a buffer coarser than the resolution that pays
+                           best by more than 2^(LB_STEPS / 4) = 4 is not
+                           worth building */
 };
 
 /* The axes of face f / 2: the face's own, then u's and v's. */
@@ -341,18 +341,24 @@ static size_t lb_bytes(int res, size_t entries)
     return ((size_t)LB_FACES * res * res + 1) * sizeof(uint32_t) + entries * sizeof(uint32_t);
 }
 
-/* Returns the finest resolution from res down to res / LB_COARSEST (by
- * halves) whose buffer takes at most max_bytes, or 0 when none does or
- * more than LB_HOLDERS_MAX spheres hold the centre. */
+/* Returns the finest resolution from res down to res / 4, in
+ * LB_STEPS steps of a fourth root of 2, whose buffer takes at most
+ * max_bytes, or 0 when none does or more than LB_HOLDERS_MAX spheres hold
+ * the centre. */
 static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, size_t max_bytes,
                      int threads)
 {
-    size_t e0 = 0, e1 = 0, e2 = 0, holders = 0;
-    int r1 = res / 2 > 0 ? res / 2 : 1, r2 = res / 4 > 0 ? res / 4 : 1;
+    size_t entries[LB_STEPS + 1] = {0}, holders = 0;
+    int r[LB_STEPS + 1];
 
+    for (int j = 0; j <= LB_STEPS; j++) {
+        r[j] = (int)(res * pow(2, -j / 4.0));
+        r[j] = r[j] > 0 ? r[j] : 1;
+    }
     (void)threads;
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static) reduction(+ : e0, e1, e2, holders)
+#pragma omp parallel for num_threads(threads) schedule(static) \
+    reduction(+ : entries[:LB_STEPS + 1], holders)
 #endif
     for (size_t k = 0; k < count; k++) {
         LbSight sight = lb_sight(lb, &lb->spheres[k], m);
@@ -363,18 +369,14 @@ static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, siz
             continue;
         }
         n = lb_spans(&sight, span);
-        e0 += lb_cells_at(res, span, n);
-        e1 += lb_cells_at(r1, span, n);
-        e2 += lb_cells_at(r2, span, n);
+        for (int j = 0; j <= LB_STEPS; j++)
+            entries[j] += lb_cells_at(r[j], span, n);
     }
     if (holders > LB_HOLDERS_MAX)
         return 0;
-    if (lb_bytes(res, e0 + holders * LB_FACES * res * res) <= max_bytes)
-        return res;
-    if (lb_bytes(r1, e1 + holders * LB_FACES * r1 * r1) <= max_bytes)
-        return r1;
-    if (lb_bytes(r2, e2 + holders * LB_FACES * r2 * r2) <= max_bytes)
-        return r2;
+    for (int j = 0; j <= LB_STEPS; j++)
+        if (lb_bytes(r[j], entries[j] + holders * LB_FACES * r[j] * r[j]) <= max_bytes)
+            return r[j];
     return 0;
 }
 
@@ -396,7 +398,6 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
     m = lb_extent(centre, spheres, count, threads);
     if (!(m <= 1e300))
         return 1;
-    /* The finest resolution up to lb_resolution()'s that fits max_bytes. */
     res = lb_resolution(lb, count, rays, threads);
     lb->res = lb_choose(lb, res, count, m, max_bytes, threads);
     if (lb->res == 0)
