@@ -54,12 +54,6 @@ enum {
 /* The axes of face f / 2: the face's own, then u's and v's. */
 static const int lb_axes[3][3] = {{0, 1, 2}, {1, 0, 2}, {2, 0, 1}};
 
-/* Returns v's coordinate i (0: x, 1: y, 2: z). */
-static inline double lb_coord(Vec3 v, int i)
-{
-    return i == 0 ? v.x : i == 1 ? v.y : v.z;
-}
-
 /* Returns the index of a cell's row or column from u in [-1, 1], at res
  * cells along an edge. */
 static inline int lb_step(int res, double u)
@@ -396,7 +390,8 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
     if (count == 0 || count >= UINT32_MAX)
         return 1;
     m = lb_extent(centre, spheres, count, threads);
-    if (!(m <= 1e300))
+    /* Squared distances must not overflow (lb_beyond()). */
+    if (!(m <= 0x1p500))
         return 1;
     res = lb_resolution(lb, count, rays, threads);
     lb->res = lb_choose(lb, res, count, m, max_bytes, threads);
