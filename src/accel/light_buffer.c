@@ -1,16 +1,11 @@
 /* light_buffer.c: a light buffer around a point (see light_buffer.h). */
 #include "accel/light_buffer.h"
 
-#include "math/angle.h"
-#include "math/real.h"
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include "math/real.h"
 
 /*
  * Why the lists hold every sphere a ray can cross. A cell is the set of
@@ -32,9 +27,10 @@
  *    within 2 u 4 M / e of the ray's direction. A sphere whose nearest
  *    point is nearer than LB_NEAR M, where that angle could pass LB_PAD,
  *    is listed in every cell (it holds the centre or nearly).
- * A list is sorted by each sphere's nearest distance, rounded down by
- * LB_PAD of it and LB_SLACK M more, so that a query stops at the first
- * sphere beyond anything it could still meet.
+ * A list is sorted by each sphere's nearest distance (D - r, rounded down
+ * to a float), so that a query may stop at the first sphere wholly beyond
+ * what it could still meet, by a margin of 2^-20 (lb_beyond()): the
+ * spheres after it are no nearer, but for the float's rounding (2^-24).
  */
 #define LB_PAD 0x1p-20
 #define LB_SLACK 0x1p-30
@@ -80,7 +76,7 @@ static inline long lb_cell(const LightBuffer *lb, Vec3 d)
         face = 4 + (d.z < 0);
         m = az, u = d.x, v = d.y;
     }
-    if (!(m > 0 && m <= 1.7976931348623157e308))
+    if (!(m > 0) || !isfinite(m))
         return -1;
     return ((long)face * lb->res + lb_step(lb->res, v / m)) * lb->res + lb_step(lb->res, u / m);
 }
@@ -390,8 +386,10 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
     if (count == 0 || count >= UINT32_MAX)
         return 1;
     m = lb_extent(centre, spheres, count, threads);
-    /* Squared distances must not overflow (lb_beyond()). */
-    if (!(m <= 0x1p500))
+    /* The lists' order keeps distances as floats, to 2^-24 of themselves
+     * or of the slack (LB_SLACK m): the scene must lie well within floats'
+     * range (the readers bring tiny scenes near 1: scale.h). */
+    if (!(m >= 0x1p-60 && m <= 0x1p100))
         return 1;
     res = lb_resolution(lb, count, rays, threads);
     lb->res = lb_choose(lb, res, count, m, max_bytes, threads);
