@@ -39,10 +39,10 @@ int visibility_occluded(const Scene *scene, const Ray *ray, real tmax);
  * object, and then skip the walk. */
 int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, uint32_t *cache);
 
-/* visibility_occluded_cached() for a shadow ray towards point light
- * number light of the scene, ending there (tmax = 1): asks the light's
- * light buffer (light_buffer.h) when it has one, whose *cache then names a
- * sphere. */
+/* visibility_occluded_cached() for a shadow ray towards light number
+ * light of the scene (a point light's ending there, tmax = 1): asks the
+ * light's light buffer (light_buffer.h) when it has one, whose *cache then
+ * names a sphere; cache may be NULL (none). */
 int visibility_light_occluded(const Scene *scene, size_t light, const Ray *ray, real tmax,
                               uint32_t *cache);
 

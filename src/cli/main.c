@@ -184,23 +184,29 @@ static double main_peak_memory(void)
 }
 
 
-/* Prints, for -v, the light buffers the scene was given (light_buffer.h). */
-static void main_buffers(const Scene *scene)
+/* Prints, for -v, light buffer lb (light_buffer.h), around `what`. */
+static void main_buffer(const char *what, const LightBuffer *lb)
 {
     char b[NUMBER_FORMAT_MAX];
 
-    if (scene->eye_buffer)
-        fprintf(stderr, "raytrace: light buffer of the eye: 6 x %d x %d cells, %zu entries, %s\n",
-                scene->eye_buffer->res, scene->eye_buffer->res, scene->eye_buffer->entry_count,
-                number_bytes(b, light_buffer_memory(scene->eye_buffer)));
-    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
-        if (scene->light_buffers[i].first)
-            fprintf(stderr,
-                    "raytrace: light buffer of light %zu: 6 x %d x %d cells, %zu entries, %s\n",
-                    i + 1, scene->light_buffers[i].res, scene->light_buffers[i].res,
-                    scene->light_buffers[i].entry_count,
-                    number_bytes(b, light_buffer_memory(&scene->light_buffers[i])));
+    fprintf(stderr, "raytrace: light buffer of %s: 6 x %d x %d cells, %zu entries, %s\n", what,
+            lb->res, lb->res, lb->entry_count, number_bytes(b, light_buffer_memory(lb)));
 }
+
+/* Prints, for -v, the light buffers the scene was given. */
+static void main_buffers(const Scene *scene)
+{
+    char what[32];
+
+    if (scene->eye_buffer)
+        main_buffer("the eye", scene->eye_buffer);
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        if (scene->light_buffers[i].first) {
+            snprintf(what, sizeof what, "light %zu", i + 1);
+            main_buffer(what, &scene->light_buffers[i]);
+        }
+}
+
 /* Prints the -v summary: size, threads, rays by kind, time, speed, peak
  * memory. */
 static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,

@@ -122,13 +122,19 @@ static inline Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, 
 
 double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Light *light)
 {
-    size_t k = light ? (size_t)(light - t->scene->lights) : TRACE_OCCLUDERS;
+    size_t k = light ? (size_t)(light - t->scene->lights) : 0;
 
     t->counts->shadow++;
     if (t->scene->has_transparency)
         return visibility_transmittance(t->scene, shadow, tmax);
-    if (k < TRACE_OCCLUDERS && t->occluders)
-        return visibility_light_occluded(t->scene, k, shadow, tmax, &t->occluders[k]) ? 0 : 1;
+    /* Towards a light of the scene: its light buffer, if any, and the
+     * thread's shadow cache for the first TRACE_OCCLUDERS lights. */
+    if (light)
+        return visibility_light_occluded(t->scene, k, shadow, tmax,
+                                         k < TRACE_OCCLUDERS && t->occluders ? &t->occluders[k]
+                                                                             : NULL)
+                   ? 0
+                   : 1;
     return visibility_occluded(t->scene, shadow, tmax) ? 0 : 1;
 }
 

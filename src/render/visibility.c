@@ -200,6 +200,8 @@ int visibility_light_occluded(const Scene *scene, size_t light, const Ray *ray, 
 {
     uint32_t none = BVH_NO_SLOT;
 
+    if (!cache)
+        cache = &none;
     if (scene->light_buffers && scene->light_buffers[light].first) {
         int rc = light_buffer_occluded(&scene->light_buffers[light], ray, tmax, cache);
         if (rc >= 0)

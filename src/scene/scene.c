@@ -306,10 +306,10 @@ static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
  * the same. */
 static void scene_build_buffers(Scene *scene, int threads)
 {
-    size_t buffers = 0, budget;
+    size_t buffers = 0;
     size_t pixels = (size_t)scene->camera.width * (size_t)scene->camera.height;
 
-    /* A buffer's build reads every sphere three times; the rays it saves
+    /* A buffer's build reads every sphere five times; the rays it saves
      * come from the pixels: on fields of 10^5 spheres it loses 9% of the
      * time at 1.3 pixels a sphere, breaks even at 2.3 and gains from there
      * (docs/log.md). */
@@ -320,12 +320,14 @@ static void scene_build_buffers(Scene *scene, int threads)
         buffers += !scene->lights[i].distant;
     if (buffers == 0)
         return;
-    budget = scene_buffer_budget(scene, buffers);
+    /* Each budget is taken when its buffer is built: the memory left
+     * shrinks with every buffer. */
     if (scene->camera.aperture == 0) {
         scene->eye_buffer = calloc(1, sizeof *scene->eye_buffer);
         if (scene->eye_buffer &&
             light_buffer_build(scene->eye_buffer, scene->camera.eye, scene->spheres,
-                               scene->sphere_count, pixels, budget, threads) != 0) {
+                               scene->sphere_count, pixels, scene_buffer_budget(scene, buffers),
+                               threads) != 0) {
             free(scene->eye_buffer);
             scene->eye_buffer = NULL;
         }
@@ -336,8 +338,8 @@ static void scene_build_buffers(Scene *scene, int threads)
     for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
         if (!scene->lights[i].distant)
             (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
-                                     scene->spheres, scene->sphere_count, pixels, budget,
-                                     threads);
+                                     scene->spheres, scene->sphere_count, pixels,
+                                     scene_buffer_budget(scene, buffers), threads);
 }
 
 int scene_build_accel(Scene *scene, int threads)
