@@ -13,6 +13,8 @@
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
 # make race         only its race against the exact Embree renderer, scaling
 #                   and shapes' fields (tests/bench/anchor.sh)
+# make seed001 SEED001=DIR  render seed 001's four scenes (DIR: a checkout of
+#                   its program's repository) and compare them with its renders
 # make trade        measure error against time for every speed/accuracy knob;
 #                   writes docs/trade.md and docs/trade-*.svg
 # make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
@@ -95,9 +97,10 @@ PROGRAMS := raytrace raytrace-diff raytrace-merge
 MANPAGES := docs/raytrace.1 docs/raytrace-diff.1 docs/raytrace-merge.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
-	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png
+	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png \
+	docs/gallery/seed001-modelphysical.png
 
-.PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck
+.PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck seed001
 
 all: raytrace raytrace-diff raytrace-merge
 
@@ -171,6 +174,9 @@ docs/gallery/indirect-gi16.png: scenes/indirect.txt raytrace
 	./raytrace -q --gi 16 $< $@
 docs/gallery/indirect-gi256.png: scenes/indirect.txt raytrace
 	./raytrace -q --gi 256 $< $@
+# Seed 001's example by our physical model, beside its program's.
+docs/gallery/seed001-modelphysical.png: scenes/seed001.txt raytrace
+	./raytrace -q --model physical $< $@
 
 # The single-precision build beside the double one, for `make trade`.
 FLOAT_OBJ := $(RAYTRACE_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o) $(LIB_OBJ:$(BUILD)/%.o=$(BUILD)/float/%.o)
@@ -239,6 +245,12 @@ report:
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 	sh tests/bench/trade.sh ./raytrace ./raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
+
+# Seed 001's scenes against its program's renders (docs/seed001.md): give
+# the path of a checkout of its repository, SEED001=DIR.
+seed001: raytrace raytrace-diff
+	@test -n "$(SEED001)" || { echo "make seed001 SEED001=DIR: DIR a checkout of seed 001's repository (docs/seed001.md)" >&2; exit 2; }
+	sh tests/bench/seed001.sh '$(SEED001)'
 
 # Fuzzing: each parser's target (tests/fuzz/fuzz_*.c), built with clang's
 # libFuzzer and sanitizers in $(BUILD)/fuzz; the same targets replay their

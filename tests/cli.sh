@@ -230,6 +230,62 @@ head -c 1000 "$T/course.png" >"$T/cut.png"
 expect_exit "truncated png" 2 "$DIFF" "$T/course.ppm" "$T/cut.png"
 expect_grep "truncated png message" "cut.png: error: chunk 'IDAT' at byte 33 is longer than the file" "$T/err"
 
+# --- raytrace-diff --box: how close two pictures look ---
+# A checkerboard of 0 and 254 against a flat 127: every pixel 127 apart,
+# every 2 x 2 box equal.
+awk 'BEGIN { print "P3\n4 4\n255"; for (y = 0; y < 4; y++) for (x = 0; x < 4; x++) { v = (x + y) % 2 ? 254 : 0; print v, v, v } }' >"$T/checker.ppm"
+awk 'BEGIN { print "P3\n4 4\n255"; for (k = 0; k < 16; k++) print 127, 127, 127 }' >"$T/flat.ppm"
+expect_exit "pixels apart" 1 "$DIFF" -t 1 "$T/flat.ppm" "$T/checker.ppm"
+expect_exit "boxes alike" 0 "$DIFF" --box 2x2 "$T/flat.ppm" "$T/checker.ppm"
+expect_grep "--box says so" "compared:  2 x 2 boxes, each the mean of the pixels it covers" "$T/out"
+expect_grep "--box mean" "mean error: 0," "$T/out"
+expect_exit "--box larger than the image" 2 "$DIFF" --box 5x5 "$T/flat.ppm" "$T/checker.ppm"
+expect_exit "--box bad" 2 "$DIFF" --box 2 "$T/flat.ppm" "$T/checker.ppm"
+expect_grep "--box bad message" "--box takes WxH, the boxes across and down (as 100x100), found '2'" "$T/err"
+
+# --- --size, --no-shadows, --model, and options that change nothing ---
+for args in "--model pbr $scene x.ppm" "--size 0x5 $scene x.ppm" "--size 5 $scene x.ppm" \
+    "--size 5x $scene x.ppm" "--size x5 $scene x.ppm" "--size 40000x10 $scene x.ppm"; do
+    # shellcheck disable=SC2086
+    expect_exit "usage '$args'" 2 "$RT" $args
+done
+expect_grep "--size message" "option '--size' takes WxH, the image's width and height in pixels, each from 1 to 32768 (as 500x500), found '40000x10'" "$T/err"
+expect_exit "--size" 0 "$RT" --size 40x30 "$scene" "$T/size.ppm"
+[ "$(head -c 11 "$T/size.ppm")" = "$(printf 'P6\n40 30\n25')" ] && pass || fail "--size 40x30 gives $(head -c 11 "$T/size.ppm")"
+"$RT" --size 400x400 "$scene" "$T/size400.ppm" && cmp -s "$T/size400.ppm" "$T/course.ppm" && pass ||
+    fail "--size at the scene's own size changes bytes"
+expect_exit "--no-shadows" 0 "$RT" -v --no-shadows "$scene" "$T/noshadow.ppm"
+expect_grep "--no-shadows casts none" " 0 shadow," "$T/err"
+cmp -s "$T/noshadow.ppm" "$T/course.ppm" && fail "--no-shadows changes nothing on the course scene" || pass
+expect_exit "--model on a course scene" 0 "$RT" --model physical "$scene" "$T/model.ppm"
+expect_grep "--model note" "raytrace: note: --model changes nothing here: it chooses how MPL scenes are lit; the course and keyword formats have one model" "$T/err"
+cmp -s "$T/model.ppm" "$T/course.ppm" && pass || fail "--model changed a course render"
+expect_exit "--ao without ambient" 0 "$RT" --ao 4 "$scene" "$T/ao.ppm"
+expect_grep "--ao note" "raytrace: note: --ao changes nothing here" "$T/err"
+[ "$(grep -c note "$T/err")" = 1 ] && pass || fail "the note is not said once" "$(cat "$T/err")"
+expect_exit "-q silences notes" 0 "$RT" -q --ao 4 "$scene" "$T/ao.ppm"
+[ ! -s "$T/err" ] && pass || fail "-q printed a note" "$(cat "$T/err")"
+# Seed 001's model: 500 x 500 and 4 samples without a camera or c Samples;
+# a matte plane lit head on, without occlusion or gathering, is 255 / pi
+# encoded with gamma 2.2 (152); by the physical model, linear (255).
+printf 'c Background 0 0 0\nm w MATTE 1 1 1 0 0 0 N\np Plane 0 0 2 0 0 -1 w\nl DirectionLight 0 0 1 1 1 1 1\n' >"$T/flat-mpl.txt"
+expect_exit "seed 001's defaults" 0 "$RT" -v --ao 0 --gi 0 "$T/flat-mpl.txt" "$T/flat-mpl.ppm"
+expect_grep "seed 001's size and samples" "raytrace: 500 x 500 pixels, 4 samples per pixel" "$T/err"
+"$RT" --ao 0 --gi 0 --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "gamma-encoded" 1 "152 152 152" "$T/px"
+"$RT" --model physical --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "physical: linear" 1 "255 255 255" "$T/px"
+"$RT" --gi 0 --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "occlusion open to the sky changes nothing" 1 "152 152 152" "$T/px"
+expect_exit "--gi-bounces by seed 001's model" 0 "$RT" --gi-bounces 2 --size 2x2 "$T/flat-mpl.txt" "$T/b.ppm"
+expect_grep "--gi-bounces note" "raytrace: note: --gi-bounces changes nothing here: seed 001's model gathers the colours its rays meet" "$T/err"
+# Seed 001's files: textures beside the scene's folder (its repository's
+# Scene/ and Textures/), BMP textures, and the layout of raytrace 0.1.
+mkdir -p "$T/repo/Scene" "$T/repo/Textures"
+cp tests/fuzz/corpus/picture/rgb24.bmp "$T/repo/Textures/t.jpg"
+printf 'm t MATTE 1 1 1 0 0 0 t.jpg\np Square 0 0 2 0 0 -1 1 t\nl DirectionLight 0 0 1 1 1 1 1\n' >"$T/repo/Scene/s.txt"
+expect_exit "a BMP texture in ../Textures" 0 "$RT" --check "$T/repo/Scene/s.txt"
+printf 'm a PLASTIC 1 1 1 0 0.4 40 N 1.5\n' >"$T/old.txt"
+expect_exit "raytrace 0.1's layout" 1 "$RT" --check "$T/old.txt"
+expect_grep "raytrace 0.1's layout message" "old.txt:1:30: error: the material has an 11th field, '1.5'" "$T/err"
+
 # --- --check and -v ---
 expect_exit "--check" 0 "$RT" --check scenes/glass.txt
 expect_line "--check report" 1 "scenes/glass.txt: OK: 480 x 320 pixels, 7 objects, 2 lights" "$T/out"
@@ -298,7 +354,7 @@ expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.p
     fail "a keyword scene reads the same from standard input"
 # --save: the saved scene renders the same bytes, and saves to the same text.
 mkdir "$T/elsewhere"
-for s in seed002 keyword; do
+for s in seed002 keyword materials; do
     expect_exit "--save $s" 0 "$RT" --save "$T/elsewhere/$s.txt" "scenes/$s.txt"
     expect_exit "--save $s again" 0 "$RT" --save "$T/elsewhere/$s-2.txt" "$T/elsewhere/$s.txt"
     cmp -s "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt" && pass || fail "--save $s is not stable" "$(diff "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt")"

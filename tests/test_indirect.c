@@ -104,11 +104,12 @@ static void indirect_gathering_from_a_uniformly_lit_ball(void)
 static void indirect_render(const char *text, Indirect in, int spp, int threads, Image *img,
                             RayCounts *counts)
 {
-    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0};
+    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0};
     Scene sc;
 
     img->rgb = NULL;
     img->linear = NULL;
+    img->encode = NULL;
     if (indirect_scene(text, &sc) != 0)
         return;
     CHECK_INT(0, image_init(img, sc.camera.width, sc.camera.height));

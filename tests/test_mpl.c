@@ -45,18 +45,29 @@ static void mpl_reads_the_seed_example_verbatim(void)
     CHECK_NEAR(50, sc.squares[1].half, 0);
     CHECK_INT(MODEL_METALLIC, sc.named[4].model);
     CHECK_INT(MODEL_MATTE, sc.named[0].model);
-    CHECK_NEAR(0, sc.named[3].ks, 0); /* matte: diffuse only */
+    /* "m marble MATTE 1.f 1.f 1.f 0 1.f 50.f marble.jpg": the index 7th,
+     * the glossiness 8th, as the seed's reader takes them; a glossy matte
+     * surface has highlights. */
+    CHECK_NEAR(1, sc.named[3].index, 0);
+    CHECK_NEAR(50, sc.named[3].shininess, 0);
+    CHECK_NEAR(1, sc.named[3].ks, 0);
+    CHECK_NEAR(0, sc.named[0].ks, 0);
     CHECK_NEAR(127.5, sc.named[4].base.colour.r, 0);
     /* The cone stands on its circle at y = -1.5, its apex 2.5 above. */
     CHECK_NEAR(1, sc.cones[0].apex.y, 0);
     CHECK_NEAR(0.2 * 0.2, sc.cones[0].k, 1e-16);
+    CHECK_INT(1, sc.cones[0].finite); /* it ends at its circle */
     CHECK_INT(1, sc.lights[0].distant);
     CHECK_NEAR(sqrt(0.5), sc.lights[0].to_light.y, 1e-15);
     CHECK_NEAR(-sqrt(0.5), sc.lights[0].to_light.z, 1e-15);
-    /* No camera line: the seed's, 800 x 800 at the origin looking along +z
-     * with 90 degrees of view. */
-    CHECK_INT(800, sc.camera.width);
-    CHECK_INT(800, sc.camera.height);
+    /* No camera line: the seed's, 500 x 500 at the origin looking along +z
+     * with 90 degrees of view, 4 samples a pixel, its program's model. */
+    CHECK_INT(500, sc.camera.width);
+    CHECK_INT(500, sc.camera.height);
+    CHECK_INT(4, sc.samples);
+    CHECK_INT(SCENE_MODEL_SEED001, sc.model);
+    CHECK_INT(SCENE_MAPPING_SEED001, sc.mapping);
+    CHECK_INT(-1, sc.ao_samples); /* not said: the model's default */
     CHECK_NEAR(0, sc.camera.eye.z, 0);
     CHECK_NEAR(-1, sc.camera.top_left.x, 1e-15);
     CHECK_NEAR(1, sc.camera.top_left.y, 1e-15);
@@ -71,7 +82,7 @@ static void mpl_reads_c_literals_commas_and_any_case(void)
     Error err;
 
     CHECK_INT(0, mpl("m A matte 1.F .5f 0.25 1 0.f 1e1f N\n"
-                     "m b Dielectric 1 1 1 0 2 3 n 1.33F\n"
+                     "m b Dielectric 1 1 1 0 1.33F 3 n\n"
                      "p SPHERE 1.f , 2.f ,3.f, 0.5f A\n"
                      "p tri 4 0 0 5 b\n"
                      "p triangle 0 0 1 1 0 1 0 1 1 A\n"
@@ -114,12 +125,25 @@ static const BadMpl mpl_bad[] = {
     {"m a CHALK 1 1 1 0 0 0 N\n", 1, 5,
      "unknown material kind 'CHALK' (expected MATTE, PLASTIC, METALLIC or DIELECTRIC)"},
     {"m a MATTE 1 1 1.5 0 0 0 N\n", 1, 15, "the material's blue must be in [0, 1], found '1.5'"},
-    {"m a MATTE 1 1 1 2 0 0 N\n", 1, 17, "the material's stripes must be in [0, 1], found '2'"},
+    {"m a MATTE 1 1 1 2 0 0 N\n", 1, 17,
+     "the material's stripes must be 0 (a plain colour) or 1 (stripes), found '2'"},
+    {"m a MATTE 1 1 1 -1 0 0 N\n", 1, 17,
+     "the material's stripes must be 0 (a plain colour) or 1 (stripes), found '-1'"},
+    {"m a DIELECTRIC 1 1 1 0 0 10 N\n", 1, 24,
+     "the DIELECTRIC material's index must be positive (glass: about 1.5), found '0'"},
+    {"m a PLASTIC 1 1 1 0 0.5 20 N 1.5\n", 1, 30,
+     "the material has an 11th field, '1.5': seed 001's layout ends with the texture (m name "
+     "kind r g b stripes index glossiness texture); raytrace 0.1's --save wrote a highlight "
+     "weight 7th and the index last: move the index to the 7th field and drop this one"},
+    {"m a MATTE 1 1 1 0 0 0 N x\n", 1, 25,
+     "expected the end of the line after the material's texture, found 'x'"},
+    {"c Model pbr\n", 1, 9,
+     "unknown model 'pbr' (expected seed001, seed 001's program's rules, or physical)"},
     {"m a MATTE 1 1 1 0.5 0 0 N\n", 1, 17,
      "the material's stripes must be 0 (a plain colour) or 1 (stripes), found '0.5'"},
     {"m a MATTE 1 1 1 0 0 0\n", 1, 22,
      "expected the material's texture, a file or N for none (m name kind r g b stripes "
-     "specular glossiness texture [index]), found the end of the line"},
+     "index glossiness texture), found the end of the line"},
     {"m a MATTE 1 1 1 0 0 0 nothere.jpg\n", 1, 23,
      "cannot use the texture 'nothere.jpg': cannot open: No such file or directory"},
     {MAT MAT, 2, 3, "the material 'a' is already defined, on line 1"},
@@ -154,10 +178,11 @@ static const BadMpl mpl_bad[] = {
     {"c Camera 0 0 0 0 0 1 90 8 8\nc Camera 0 0 0 0 0 1 90 8 8\n", 2, 1,
      "the camera is already set, on line 1"},
     {"c Fog 1\n", 1, 3,
-     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO or GI)"},
+     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO, GI or "
+     "Model)"},
     {"c Sky 1 1 1\n", 1, 12, "expected 6 numbers for the sky (r g b r g b), found 3"},
-    {"c AO 0\n", 1, 6,
-     "the number of ambient occlusion rays must be between 1 and 4096 rays, found '0'"},
+    {"c AO 4097\n", 1, 6,
+     "the number of ambient occlusion rays must be between 0 and 4096 rays, found '4097'"},
     {"c AO 4 -1\n", 1, 8, "the ambient occlusion's distance must be greater than 0, found '-1'"},
     {"c GI 2 0\n", 1, 8, "the number of bounces must be between 1 and 64 bounces, found '0'"},
     {"c AO 4 1 2\n", 1, 10, "expected the end of the line after the distance, found '2'"},
@@ -181,13 +206,15 @@ static void mpl_rejects_bad_scenes_with_position(void)
     }
 }
 
-/* The colour seen along the ray from o towards d in sc, to depth 10. */
-static Colour seen(const Scene *sc, Vec3 o, Vec3 d)
+/* The colour seen along the ray from o towards d in sc, to depth 10, by
+ * the physical model. */
+static Colour seen(Scene *sc, Vec3 o, Vec3 d)
 {
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
     Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = &counts};
 
+    sc->model = SCENE_MODEL_PHYSICAL;
     return trace_ray(&t, &r);
 }
 
@@ -204,27 +231,27 @@ static void mpl_material_kinds_shade_as_documented(void)
         Error err;
         Colour c;
         snprintf(text, sizeof text,
-                 "c Background 0 0 0\nm s %s 0.8 0.4 0.2 0 0.5 10 N 1.5\np Sphere 0 0 0 1 s\n"
+                 "c Background 0 0 0\nm s %s 0.8 0.4 0.2 0 1.5 10 N\np Sphere 0 0 0 1 s\n"
                  "l DirectionLight 0 0 1 1 1 1 0.8\n",
                  kinds[k]);
         CHECK_INT(0, mpl(text, &sc, &err));
         c = seen(&sc, eye, vec3(0, 0, 1));
         switch (k) {
-        case 0: /* kd cos i C Cs / 255: 0.8 x 204 */
-            CHECK_NEAR(0.8 * 204, c.r, 1e-9);
-            CHECK_NEAR(0.8 * 102, c.g, 1e-9);
+        case 0: /* kd cos i C Cs / 255: 0.8 x 204, and the highlight (ks 1) */
+            CHECK_NEAR(0.8 * 204 + 0.8 * 255, c.r, 1e-9);
+            CHECK_NEAR(0.8 * 102 + 0.8 * 255, c.g, 1e-9);
             break;
         case 1: { /* (1 - F)(diffuse + specular) + F x background; F = 0.04 head on */
             double f = 0.04;
-            CHECK_NEAR((1 - f) * (0.8 * 204 + 0.8 * 0.5 * 255), c.r, 1e-9);
+            CHECK_NEAR((1 - f) * (0.8 * 204 + 0.8 * 255), c.r, 1e-9);
             break;
         }
         case 2: /* the highlight, the mirror sees black */
-            CHECK_NEAR(0.8 * 0.5 * 255, c.r, 1e-9);
-            CHECK_NEAR(0.8 * 0.5 * 255, c.b, 1e-9);
+            CHECK_NEAR(0.8 * 255, c.r, 1e-9);
+            CHECK_NEAR(0.8 * 255, c.b, 1e-9);
             break;
         default: /* the highlight; through the glass (no highlight inside), black */
-            CHECK_NEAR(0.8 * 0.5 * 255, c.r, 1e-9);
+            CHECK_NEAR(0.8 * 255, c.r, 1e-9);
             break;
         }
         scene_free(&sc);
@@ -253,7 +280,7 @@ static void mpl_metal_tints_and_glass_splits_by_fresnel(void)
     CHECK_NEAR(127.5 * sqrt(0.5) * 0.25, c.b, 1e-9);
     scene_free(&sc);
     CHECK_INT(0, mpl("c Background 0 0 0\nm w MATTE 1 1 1 0 0 0 N\n"
-                     "m glass DIELECTRIC 1 1 1 0 0 0 N 1.5\n"
+                     "m glass DIELECTRIC 1 1 1 0 1.5 0 N\n"
                      "p Square 0 0 10 0 0 -1 100 w\np Cube 0 0 0 1 glass\n"
                      "l DirectionLight 0 0 1 1 1 1 0.5\n",
                      &sc, &err));
@@ -327,7 +354,8 @@ static void mpl_saved_scene_reads_back_the_same(void)
     static const char *const texts[] = {
         ("c Camera 0.1 0.2 -3 0 0 0.30000000000000004 45 64 48\nc Sky 0.3 0.6 0.9 0.1 0.2 0.7\n"
          "c Ambient 0.1 0.1 0.13\nc Samples 3\n"
-         "m a PLASTIC 0.13 0.7 0.33333333333333331 1 0.5 20 N 1.45\n"
+         "c Model physical\nc AO 3 0.5\nc GI 2\n"
+         "m a PLASTIC 0.13 0.7 0.33333333333333331 1 1.45 20 N\n"
          "m b DIELECTRIC 0.9 0.9 1 0 1 100 N\nm c METALLIC 0.01 0.99 0.5 0 1 1e3 N\n"
          "p Sphere 1 2 3 0.7 a\np Plane 0 -1 0 0.1 1 0 b\np Cube -1 0 2 0.25 c\n"
          "p Square 0 0 5 0 0 -1 2 a\np Cylinder 3 0 4 0.5 b\np Cone -3 -1 4 0.5 1.5 c\n"
@@ -391,6 +419,39 @@ static void mpl_is_told_from_the_other_formats(void)
     CHECK_INT(SCENE_COURSE, load_detect(course_text, strlen(course_text)));
 }
 
+static void mpl_cone_ends_at_its_circle(void)
+{
+    /* A cone of circle y = 0 (radius 1) and apex y = 2: a ray through
+     * where its nappe would go on below the circle misses it; one through
+     * its side hits it. */
+    Scene sc;
+    Error err;
+    Ray below = {vec3(0, -1, -5), vec3(0, 0, 1)}, side = {vec3(0, 1, -5), vec3(0, 0, 1)};
+    real t = 0;
+
+    CHECK_INT(0, mpl("m a MATTE 1 1 1 0 0 0 N\np Cone 0 0 0 1 2 a\n", &sc, &err));
+    CHECK_INT(0, cone_intersect(&sc.cones[0], &below, 0, INFINITY, &t));
+    CHECK_INT(1, cone_intersect(&sc.cones[0], &side, 0, INFINITY, &t));
+    CHECK_NEAR(4.5, t, 1e-12);
+    sc.cones[0].finite = 0; /* the keyword format's infinite cone */
+    CHECK_INT(1, cone_intersect(&sc.cones[0], &below, 0, INFINITY, &t));
+    scene_free(&sc);
+}
+
+static void mpl_model_line_chooses_the_rules(void)
+{
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, mpl("c Model physical\n", &sc, &err));
+    CHECK_INT(SCENE_MODEL_PHYSICAL, sc.model);
+    CHECK_INT(SCENE_MAPPING_SEED001, sc.mapping); /* textures stay where the file put them */
+    scene_free(&sc);
+    CHECK_INT(0, mpl("c model SEED001\n", &sc, &err));
+    CHECK_INT(SCENE_MODEL_SEED001, sc.model);
+    scene_free(&sc);
+}
+
 const TestCase mpl_tests[] = {
     {"mpl_reads_the_seed_example_verbatim", mpl_reads_the_seed_example_verbatim},
     {"mpl_reads_c_literals_commas_and_any_case", mpl_reads_c_literals_commas_and_any_case},
@@ -401,5 +462,7 @@ const TestCase mpl_tests[] = {
      mpl_point_light_falls_off_and_ends_at_its_range},
     {"mpl_saved_scene_reads_back_the_same", mpl_saved_scene_reads_back_the_same},
     {"mpl_is_told_from_the_other_formats", mpl_is_told_from_the_other_formats},
+    {"mpl_cone_ends_at_its_circle", mpl_cone_ends_at_its_circle},
+    {"mpl_model_line_chooses_the_rules", mpl_model_line_chooses_the_rules},
     {NULL, NULL},
 };

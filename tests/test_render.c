@@ -63,7 +63,7 @@ static void render_eye_on_the_screen_sees_background(void)
  * summed left to right, its direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
     RayCounts counts = {0};
     Scene sc;
     Error err;
@@ -117,8 +117,8 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0}, two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0},
-                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0}, two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0},
+                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -194,7 +194,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             double s = scales[si], o = offsets[oi];
             Scene sc;
             Material m = material_plain(base_colour, base_refl);
-            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -262,7 +262,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
     Scene sc;
     Error err;
     int e;
@@ -310,12 +310,13 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
     Scene sc;
     Error err;
 
     img->rgb = NULL;
     img->linear = NULL;
+    img->encode = NULL;
     if (course_parse_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
@@ -571,7 +572,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Scene sc;
     Error err;
     Image img;
-    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));

@@ -12,7 +12,8 @@
 typedef struct {
     const char *scene_path;  /* scene file, "-" for standard input */
     const char *output_path; /* image file, "-" for standard output */
-    int max_depth;           /* deepest reflected ray traced */
+    int max_depth;           /* deepest reflected ray traced; -1: the
+                                model's default (main.c) */
     int threads;             /* render threads, >= 1 */
     int samples;             /* samples per pixel from --spp, 0 when not given */
     int quiet;               /* 1: no progress or summary even on a terminal */
@@ -39,6 +40,11 @@ typedef struct {
     const char *tile;        /* --tile K/N as given, or NULL */
     int tile_k, tile_n;      /* its K and N, 1 <= K <= N <= TILE_MAX */
     int tile_layout;         /* --tile-layout: a TileLayout (tile.h) */
+    int model;               /* --model: a SceneModel; -1: the scene's */
+    const char *size;        /* --size WxH as given, or NULL */
+    int width, height;       /* its W and H, 1..CAMERA_MAX_SIZE; 0: the
+                                scene's */
+    int no_shadows;          /* --no-shadows: no shadow rays */
 } Options;
 
 /* What options_parse() found the command line asks for. */

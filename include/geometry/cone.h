@@ -11,7 +11,9 @@
  * horizontal parts of origin - apex and of the direction, k = tan^2 theta),
  * the form that does not subtract the squares of large numbers; roots on
  * the other nappe are left out. Closed: its inside is within the nappe.
- * Unbounded: it stays out of the bounding volume hierarchy.
+ * Unbounded: it stays out of the bounding volume hierarchy. A finite cone
+ * (seed 001's program's, which MPL scenes mean) is the part of the nappe
+ * between the circle and the apex, open at the circle.
  */
 #ifndef RAYTRACE_CONE_H
 #define RAYTRACE_CONE_H
@@ -28,12 +30,14 @@ typedef struct {
     real k;            /* tan^2 of the half-angle: (radius / height)^2 */
     real sine, cosine; /* of the half-angle */
     real side;         /* +1: the nappe runs up from the apex; -1: down */
+    int finite;        /* 1: only from the apex to the circle, within
+                          |height| of the apex along y; 0: infinite */
     Material material; /* what the surface looks like */
     unsigned order;    /* position among the scene's objects, for ties */
 } Cone;
 
-/* Makes *c the cone of circle centre base, radius (> 0) and height (not 0)
- * with material m. */
+/* Makes *c the infinite cone of circle centre base, radius (> 0) and
+ * height (not 0) with material m (finite: set c->finite after). */
 void cone_make(Cone *c, Vec3 base, real radius, real height, Material m);
 
 /* Finds where the ray first crosses the cone with tmin < t < tmax; returns

@@ -45,14 +45,16 @@ typedef enum {
 /* A named material of the keyword format (a Material: its colour, rho_r as
  * the mirror weight, tau as the transparency, eta_r as the index, shaded
  * by Blinn-Phong with the weights below) or of the MPL format (its kind,
- * colour, stripes, specular weight as ks, glossiness as alpha, texture and
- * index). */
+ * colour, stripes, index, glossiness as alpha and texture; ks 1 when the
+ * glossiness is above 0). */
 typedef struct {
     char *name;          /* as written; owned by the scene */
     Material base;       /* what the shapes that use it copy */
     ShadingModel model;  /* how it is shaded */
     double ka, kd, ks;   /* ambient, diffuse and specular weights, >= 0 */
     double shininess;    /* the Blinn-Phong exponent alpha, >= 0 */
+    double index;        /* MPL: the index as written, >= 0 (base.ior is
+                            it for PLASTIC and DIELECTRIC, 1 otherwise) */
     int line;            /* line of its definition, for messages */
     char *texture;       /* MPL: its texture as the file names it, or NULL;
                             owned by the scene */

@@ -1,7 +1,8 @@
 /*
  * compare.h: two renders side by side: what differs, where, and by how much.
  *
- * Images of any format raytrace reads (PPM P3/P6 of any maxval, PFM, PNG)
+ * Images of any format raytrace reads (PPM P3/P6 of any maxval, PFM, PNG,
+ * JPEG, BMP)
  * are loaded as Pictures: linear RGB on the scale 0..255 of an 8-bit image
  * (PPM samples times 255 / maxval, PFM values times 255), so that a
  * tolerance is in 8-bit levels whatever the formats.
@@ -26,6 +27,13 @@ int picture_load(const char *path, Picture *pic, Error *err);
 
 /* picture_load() on the len bytes at data, errors naming name. */
 int picture_parse(const char *name, const char *data, size_t len, Picture *pic, Error *err);
+
+/* Replaces pic by its box-filtered width x height copy (1 <= width <=
+ * pic's width, likewise height): box (i, j) is the mean of the pixels
+ * whose columns run from floor(i W / width) to floor((i + 1) W / width)
+ * and rows likewise (W x H pic's size); returns 0, or -1 with *err set
+ * when memory runs out (pic unchanged). */
+int picture_box(Picture *pic, int width, int height, Error *err);
 
 /* Releases pic's pixels. */
 void picture_free(Picture *pic);

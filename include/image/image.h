@@ -4,7 +4,8 @@
  * Layout contract: rows top to bottom, pixels left to right within a row,
  * three interleaved bytes per pixel (red, green, blue); pixel (x, y) starts at
  * byte 3 * (y * width + x). Colours enter through image_set(), which
- * quantises with colour_quantise(). An image may also keep the colours
+ * quantises with colour_quantise(), or, for an image gamma-encoded by
+ * image_encode_gamma(), with colour_encode(). An image may also keep the colours
  * before quantising (image_keep_linear()), for formats that store them:
  * three floats per pixel, the same layout, on the scale 1.0 = 255.
  */
@@ -21,6 +22,8 @@ typedef struct {
     unsigned char *rgb; /* 3 * width * height bytes, owned */
     float *linear;      /* 3 * width * height unclamped colours / 255, owned;
                            NULL unless image_keep_linear() was called */
+    double *encode;     /* COLOUR_LEVELS - 1 thresholds of its encoding
+                           (colour_encode()), owned; NULL: linear bytes */
 } Image;
 
 /* Allocates a black width x height image; returns 0, or -1 when memory runs
@@ -30,6 +33,12 @@ int image_init(Image *img, int width, int height);
 /* Makes img also keep its colours before quantising; returns 0, or -1 when
  * memory runs out (the image is unchanged). */
 int image_keep_linear(Image *img);
+
+/* Makes img's bytes encode its colours with gamma: byte b stands for the
+ * linear colour 255 (b / 255)^gamma, and a colour takes the nearest byte in
+ * the encoded scale; returns 0, or -1 when memory runs out (the image is
+ * unchanged). */
+int image_encode_gamma(Image *img, double gamma);
 
 /* Releases the pixels and leaves the image empty. */
 void image_free(Image *img);
@@ -41,9 +50,15 @@ size_t image_size(int width, int height);
 static inline void image_set(Image *img, int x, int y, Colour c)
 {
     unsigned char *p = img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
-    p[0] = colour_quantise(c.r);
-    p[1] = colour_quantise(c.g);
-    p[2] = colour_quantise(c.b);
+    if (img->encode) {
+        p[0] = colour_encode(img->encode, c.r);
+        p[1] = colour_encode(img->encode, c.g);
+        p[2] = colour_encode(img->encode, c.b);
+    } else {
+        p[0] = colour_quantise(c.r);
+        p[1] = colour_quantise(c.g);
+        p[2] = colour_quantise(c.b);
+    }
     if (img->linear) {
         float *f = img->linear + (p - img->rgb);
         f[0] = (float)(c.r / 255);

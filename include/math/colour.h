@@ -60,4 +60,26 @@ static inline unsigned char colour_quantise(double x)
     return (unsigned char)(x + 0.5);
 }
 
+enum { COLOUR_LEVELS = 256 }; /* the values of a byte */
+
+/* Returns the byte of the encoded scale whose thresholds (COLOUR_LEVELS -
+ * 1 of them, ascending: thresholds[b - 1] the least colour of byte b) hold
+ * x: how many of them are at most x; NaN maps to 0. The gamma-encoded
+ * image's counterpart of colour_quantise() (image.h). */
+static inline unsigned char colour_encode(const double *thresholds, double x)
+{
+    int lo = 0, hi = COLOUR_LEVELS - 1; /* the answer is in [lo, hi] */
+
+    if (!(x > 0))
+        return 0;
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (thresholds[mid - 1] <= x)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return (unsigned char)lo;
+}
+
 #endif

@@ -35,10 +35,14 @@ typedef struct {
     int row_first, row_step; /* the image's row y is the picture's row
                                 row_first + y row_step (a tile, tile.h);
                                 row_step 0: the whole picture */
+    int no_shadows;          /* 1: cast no shadow rays (every light reaches
+                                every point facing it) */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's
- * camera width and height; cannot fail. Adds the rays cast to *counts (may
+ * camera width and height (and gamma-encoded for a scene of seed 001's
+ * model: seed001.h); cannot fail. The cut-off applies to linear images
+ * only. Adds the rays cast to *counts (may
  * be NULL). Returns the number of threads used. */
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts);
 

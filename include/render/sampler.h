@@ -52,6 +52,12 @@ uint64_t sampler_branch(uint64_t key, unsigned branch);
 void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
                         double dir[3]);
 
+/* Stores in xy point k (0 <= k < g->n) of pixel (px, py)'s multi-jittered
+ * pattern for the rays of path `key`, as sampler_hemisphere() draws its
+ * own: a point of [0, 1)^2, random for one point. */
+void sampler_square(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
+                    double xy[2]);
+
 /* Maps the point xy of the unit square to the unit disk, preserving area
  * and keeping neighbours together (Shirley and Chiu's concentric map); the
  * square's centre goes to the disk's. */

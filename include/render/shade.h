@@ -41,6 +41,13 @@ typedef struct {
 /* Returns the shading record of hit, crossed by ray, in scene. */
 Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit);
 
+/* Returns the colour Ci of material m of scene at texture coordinates uv
+ * (its texture's, v clamped when clamp_v is set) or stripe coordinate
+ * stripe (seed 001's stripes: its colour where the fraction is below one
+ * half, black above), else its colour. */
+Colour shade_texel(const Scene *scene, const Material *m, const double uv[2], double stripe,
+                   int clamp_v);
+
 /* Returns the course's local term at sh, with n its surface normal and ns
  * its shading normal, both facing the viewer; its shadow rays' light
  * reaches the pixel with weight (for the cut-off; the course's weights are
@@ -57,7 +64,13 @@ Colour shade_phong(const Tracer *t, const Shade *sh, const NamedMaterial *pm, Ve
 /* Casts the shadow ray `shadow` up to tmax towards light (one of the
  * scene's, whose shadow cache it uses: tracer.h; NULL: none) and returns
  * the share E of the light that passes: 1 or 0 in opaque scenes, the
- * product of the transparencies crossed in others. */
+ * product of the transparencies crossed in others; 1, casting nothing,
+ * when the tracer has shadows off. */
 double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Light *light);
+
+/* Returns the share E of light's light that reaches the point of sh (n its
+ * surface normal facing the viewer), casting its shadow ray: towards a
+ * point light, the segment to it; towards a distant one, unbounded. */
+double shade_light_reach(const Tracer *t, const Shade *sh, Vec3 n, const Light *light);
 
 #endif

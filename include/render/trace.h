@@ -15,7 +15,8 @@
  * mirror or refracted ray of depth k is traced only when k <= max_depth,
  * otherwise it contributes 0. A material with a Blinn-Phong entry (the
  * keyword format) is shaded instead by Whitted's sum C = local + R Cr + T
- * Ct with the Blinn-Phong local term (shade.h). Functions here only read
+ * Ct with the Blinn-Phong local term (shade.h): the physical model
+ * (scene.h); seed001.h traces seed 001's. Functions here only read
  * the scene and write the tracer's cut-off and counters: safe to call from
  * many threads at once, each with its own tracer.
  */
@@ -32,6 +33,10 @@
  * t->cut allows (adding what they could have brought to its skipped);
  * counts the shadow, mirror and refracted rays it casts. */
 Colour trace_ray(const Tracer *t, const Ray *ray);
+
+/* Returns the colour of the sky the ray sees: the scene's background, or
+ * the blend of its sky and background by the direction's height. */
+Colour trace_background(const Scene *scene, const Ray *ray);
 
 /* Traces the ray d that a cut-off left out, leaving out in turn what t's
  * cut-off allows (and keeping it there, which may move its deferred

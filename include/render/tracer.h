@@ -67,6 +67,8 @@ typedef struct {
                             first TRACE_OCCLUDERS lights, the hierarchy's
                             slot that last stopped a ray towards it
                             (visibility.h); NULL: none */
+    int no_shadows;      /* 1: every light reaches every point facing it
+                            (no shadow rays); 0: shadows */
 } Tracer;
 
 #endif

@@ -27,6 +27,12 @@ typedef struct {
  * earliest-listed on an exact tie; returns 1 and fills *hit, or returns 0. */
 int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
 
+/* visibility_nearest() over the bounded shapes (spheres, triangles, cubes,
+ * squares) and those unbounded ones whose kinds are in the mask kinds
+ * (bit k for ShapeKind k), the others left out. */
+int visibility_nearest_among(const Scene *scene, const Ray *ray, real tmax, unsigned kinds,
+                             Hit *hit);
+
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +
  * ray->dir (ends excluded), tmax = INFINITY the whole ray. */

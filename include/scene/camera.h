@@ -71,6 +71,13 @@ typedef enum {
 CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,
                                int height);
 
+/* Makes the camera's image width x height pixels (each 1..CAMERA_MAX_SIZE)
+ * of the same view: the screen keeps its centre and its height (v), and
+ * its width (u) becomes height's times width / height, so pixels stay as
+ * square as they were; with the image's proportions unchanged, only the
+ * pixel counts change. */
+void camera_resize(Camera *cam, int width, int height);
+
 /* Gives the camera a thin lens of diameter aperture (> 0) that focuses on
  * the plane parallel to the screen at distance focus (> 0) from the eye;
  * returns -1, changing nothing, when the eye lies in the screen's plane (no

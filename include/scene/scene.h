@@ -66,6 +66,23 @@ enum { SCENE_MAX_INDIRECT = 4096, SCENE_MAX_BOUNCES = 64 };
  * them apart by content. */
 typedef enum { SCENE_AUTO = -1, SCENE_COURSE, SCENE_KEYWORD, SCENE_MPL } SceneFormat;
 
+/* How a scene's picture is made from it: which rules light its surfaces
+ * and how its colours become bytes. */
+typedef enum {
+    SCENE_MODEL_PHYSICAL, /* the course's rule and Blinn-Phong (trace.h,
+                             shade.h), ambient occlusion of the ambient light
+                             and gathered light (trace.h); linear bytes */
+    SCENE_MODEL_SEED001   /* seed 001's program's rules (seed001.h): its
+                             lighting, occlusion and gathering; bytes
+                             encoded with gamma 2.2 */
+} SceneModel;
+
+/* Where a texture and stripes fall on each shape (texture coordinates). */
+typedef enum {
+    SCENE_MAPPING_OURS,   /* each shape's own (the geometry headers) */
+    SCENE_MAPPING_SEED001 /* seed 001's program's conventions (mapping.h) */
+} SceneMapping;
+
 /* A keyword-format mesh line, kept so that the scene can be saved. */
 typedef struct {
     char *path;   /* the OBJ path as written in the scene file */
@@ -132,6 +149,11 @@ typedef struct Scene {
     size_t mesh_count;
     size_t mesh_capacity;
     SceneFormat format;     /* the format it was read from */
+    SceneModel model;       /* the rules its picture is made by: the MPL
+                               format's default is SCENE_MODEL_SEED001, the
+                               others' SCENE_MODEL_PHYSICAL */
+    SceneMapping mapping;   /* its texture coordinates: the MPL format's
+                               are seed 001's */
     int camera_line;        /* MPL: a camera line was given (else the
                                default camera) */
     Vec3 look_from;         /* keyword, MPL: the camera line as written (MPL:
@@ -153,10 +175,12 @@ typedef struct Scene {
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
     int ao_samples;         /* ambient occlusion rays the scene asks for
-                               (seed 001's c AO), 0: none */
+                               (seed 001's c AO), 0: none; -1 when it does
+                               not say */
     double ao_distance;     /* their distance, in the file's units; 0: not
                                said */
-    int gi_samples;         /* global illumination rays it asks for (c GI) */
+    int gi_samples;         /* global illumination rays it asks for (c GI);
+                               -1 when it does not say */
     int gi_bounces;         /* their bounces; 0: not said */
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()

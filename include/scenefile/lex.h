@@ -116,6 +116,10 @@ int lex_numbers(Lexer *L, const Record *rec, int first, const RecordSpec *spec,
 int lex_whole_number(Lexer *L, const Record *rec, int k, const char *what, const char *unit,
                      long max, int *out);
 
+/* lex_whole_number() between min and max. */
+int lex_whole_number_in(Lexer *L, const Record *rec, int k, const char *what, const char *unit,
+                        long min, long max, int *out);
+
 /* Checks that rec's keyword, `what`, which may appear once, has not
  * appeared before (on line *seen, 0 if not), then notes its line; returns
  * 0, or -1 with the fault recorded. */

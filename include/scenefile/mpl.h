@@ -17,12 +17,11 @@
 #include "base/error.h"
 #include "scene/scene.h"
 
-/* The defaults of a scene without a camera line: seed 001's camera. */
+/* The defaults of a scene without a camera line: seed 001's camera and
+ * image size, and of one without c Samples: its program's samples. */
 #define MPL_DEFAULT_FOV 90.0 /* vertical field of view, degrees */
-enum { MPL_DEFAULT_SIZE = 800 }; /* width and height, pixels */
-
-/* The default index of a dielectric or plastic material. */
-#define MPL_DEFAULT_IOR 1.5
+enum { MPL_DEFAULT_SIZE = 500 };  /* width and height, pixels */
+enum { MPL_DEFAULT_SAMPLES = 4 }; /* samples per pixel */
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative texture paths, into *scene, which this call initialises

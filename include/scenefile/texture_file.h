@@ -1,8 +1,8 @@
 /*
  * texture_file.h: reading a texture (scene/texture.h) from an image file.
  *
- * Read, told apart by their first bytes: JPEG (jpeg.h), PNG (png.h) and
- * PPM (P6 or P3, any maxval).
+ * Read, told apart by their first bytes: JPEG (jpeg.h), PNG (png.h), BMP
+ * (bmp.h) and PPM (P6 or P3, any maxval).
  */
 #ifndef RAYTRACE_TEXTURE_FILE_H
 #define RAYTRACE_TEXTURE_FILE_H

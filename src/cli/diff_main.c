@@ -17,18 +17,22 @@
 #include "image/compare.h"
 #include "image/writer.h"
 
-#define DIFF_VERSION "0.1.0"
+#define DIFF_VERSION "0.2.0"
 
 static const char diff_help[] =
     "Usage: raytrace-diff [OPTIONS] REFERENCE IMAGE\n"
     "Compare IMAGE with REFERENCE, channel by channel, on the 0..255 scale of an\n"
-    "8-bit image. Both may be PPM (P3 or P6, any maxval), PFM, PNG or JPEG.\n"
+    "8-bit image. Both may be PPM (P3 or P6, any maxval), PFM, PNG, JPEG or BMP.\n"
     "\n"
     "Options:\n"
     "  -t, --tolerance N   a channel may differ by up to N levels (default 0)\n"
     "  -m, --max-pixels N  up to N pixels may exceed the tolerance (default 0)\n"
     "  -d, --diff FILE     write FILE: REFERENCE darkened, with the pixels over\n"
     "                      the tolerance in red (PPM, or PNG by extension)\n"
+    "  -b, --box WxH       compare W x H boxes, each the mean of the pixels it\n"
+    "                      covers in both images (a box filter, 1 <= W <= the\n"
+    "                      width, 1 <= H <= the height): noise and edges averaged\n"
+    "                      out, the pictures' look compared\n"
     "  -q, --quiet         print nothing; the exit status says it all\n"
     "  -h, --help          print this help and exit\n"
     "  -V, --version       print the version and exit\n"
@@ -112,7 +116,8 @@ static int diff_write_image(const char *path, const Picture *a, const Picture *b
 int main(int argc, char **argv)
 {
     static const char *const channel[3] = {"red", "green", "blue"};
-    const char *paths[2], *diff_path = NULL;
+    const char *paths[2], *diff_path = NULL, *box = NULL;
+    int box_w = 0, box_h = 0;
     double tolerance = 0, max_pixels = 0;
     int npaths = 0, quiet = 0, status;
     Picture a, b;
@@ -146,6 +151,15 @@ int main(int argc, char **argv)
                                          "'%.40s'",
                                   argv[i]);
             }
+        } else if (strcmp(arg, "-b") == 0 || strcmp(arg, "--box") == 0) {
+            char tail;
+            if (i + 1 >= argc)
+                return diff_usage("option '%s' needs a value", arg);
+            box = argv[++i];
+            if (sscanf(box, "%dx%d%c", &box_w, &box_h, &tail) != 2 || box_w < 1 || box_h < 1)
+                return diff_usage("--box takes WxH, the boxes across and down (as 100x100), "
+                                  "found '%.40s'",
+                                  box);
         } else if (arg[0] == '-' && arg[1] != '\0') {
             return diff_usage("unknown option '%.40s'", arg);
         } else if (npaths == 2) {
@@ -172,6 +186,20 @@ int main(int argc, char **argv)
         picture_free(&b);
         return 2;
     }
+    if (box && (box_w > a.width || box_h > a.height)) {
+        fprintf(stderr, "raytrace-diff: error: --box %s: the images are %d x %d, fewer pixels "
+                        "than boxes\n",
+                box, a.width, a.height);
+        picture_free(&a);
+        picture_free(&b);
+        return 2;
+    }
+    if (box && (picture_box(&a, box_w, box_h, &err) != 0 || picture_box(&b, box_w, box_h, &err) != 0)) {
+        diff_report(&err);
+        picture_free(&a);
+        picture_free(&b);
+        return 2;
+    }
     c = compare_pictures(&a, &b, tolerance);
     status = (double)c.over <= max_pixels ? 0 : 1;
     if (!quiet) {
@@ -179,6 +207,9 @@ int main(int argc, char **argv)
         const double *q = b.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
         printf("reference: %s: %d x %d, %s\n", paths[0], a.width, a.height, a.format);
         printf("image:     %s: %d x %d, %s\n", paths[1], b.width, b.height, b.format);
+        if (box)
+            printf("compared:  %d x %d boxes, each the mean of the pixels it covers\n", box_w,
+                   box_h);
         if (c.max_error > 0)
             printf("max error: %g at pixel (%d, %d), %s: reference (%g, %g, %g), image (%g, "
                    "%g, %g)\n",

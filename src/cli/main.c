@@ -28,11 +28,12 @@
 #include "image/writer.h"
 #include "math/number.h"
 #include "render/render.h"
+#include "render/seed001.h"
 #include "scene/scene.h"
 #include "scenefile/load.h"
 #include "scenefile/save.h"
 
-#define RAYTRACE_VERSION "0.1.0"
+#define RAYTRACE_VERSION "0.2.0"
 
 /* The temporary output file, for the signal handler to remove. */
 static const char *volatile main_temp_path;
@@ -391,19 +392,79 @@ static int main_trace(const Options *opts, RenderOptions *ropts, const Scene *sc
     return threads;
 }
 
-/* Sets *in from the command line, else from the scene: the rays, the
- * occlusion distance (the scene file's units, as the scene may have been
- * enlarged; by default a tenth of the scene's size) and the bounces. */
+/* Sets *in from the command line, else from the scene, else from its
+ * model's defaults: the rays, the occlusion distance (the scene file's
+ * units, as the scene may have been enlarged; by default a tenth of the
+ * scene's size, seed 001's 2) and the bounces. */
 static void main_indirect(const Options *opts, const Scene *scene, Indirect *in)
 {
+    int seed = scene->model == SCENE_MODEL_SEED001;
     double d = opts->ao_distance > 0 ? opts->ao_distance : scene->ao_distance;
 
-    in->ao_samples = opts->ao >= 0 ? opts->ao : scene->ao_samples;
+    if (!(d > 0) && seed)
+        d = SEED001_AO_DISTANCE;
+    in->ao_samples = opts->ao >= 0               ? opts->ao
+                     : scene->ao_samples >= 0 ? scene->ao_samples
+                     : seed                   ? SEED001_AO_RAYS
+                                              : 0;
     in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
-    in->gi_samples = opts->gi >= 0 ? opts->gi : scene->gi_samples;
+    in->gi_samples = opts->gi >= 0               ? opts->gi
+                     : scene->gi_samples >= 0 ? scene->gi_samples
+                     : seed                   ? SEED001_GI_RAYS
+                                              : 0;
     in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
                      : scene->gi_bounces > 0 ? scene->gi_bounces
                                              : 1;
+}
+
+/* Says whether the physical model gives scene any ambient light for
+ * ambient occlusion to darken. */
+static int main_has_ambient(const Scene *scene)
+{
+    return colour_max(scene->ambient) > 0 && (scene->has_ambient || scene->format != SCENE_COURSE);
+}
+
+/* Prints "raytrace: note: WHAT" on standard error, the one place that
+ * says an option changes nothing here. */
+static void main_note(const Options *opts, const char *what)
+{
+    if (!opts->quiet)
+        fprintf(stderr, "raytrace: note: %s\n", what);
+}
+
+/* Applies the command line's choices about the picture to scene (its
+ * model and size) and sets ropts' depth, samples and indirect light from
+ * them; says once, on standard error, of each option given that can
+ * change nothing in this scene. */
+static void main_adjust(const Options *opts, Scene *scene, RenderOptions *ropts)
+{
+    int mpl = scene->format == SCENE_MPL, seed;
+
+    if (opts->model >= 0 && !mpl)
+        main_note(opts, "--model changes nothing here: it chooses how MPL scenes are lit; the "
+                        "course and keyword formats have one model");
+    else if (opts->model >= 0)
+        scene->model = (SceneModel)opts->model;
+    seed = scene->model == SCENE_MODEL_SEED001;
+    if (opts->width > 0)
+        camera_resize(&scene->camera, opts->width, opts->height);
+    ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
+    ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
+    ropts->no_shadows = opts->no_shadows;
+    main_indirect(opts, scene, &ropts->indirect);
+    if (opts->ao > 0 && !seed && !main_has_ambient(scene))
+        main_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
+                        "light, and this scene has none (add one: the course's ambient:, the "
+                        "MPL format's c Ambient)");
+    if (opts->ao_distance > 0 && ropts->indirect.ao_samples == 0)
+        main_note(opts, "--ao-distance changes nothing here: no ambient occlusion rays are cast "
+                        "(--ao N)");
+    if (opts->gi_bounces > 0 && seed && ropts->indirect.gi_samples > 0)
+        main_note(opts, "--gi-bounces changes nothing here: seed 001's model gathers the colours "
+                        "its rays meet, one bounce (--model physical gathers light)");
+    else if (opts->gi_bounces > 0 && ropts->indirect.gi_samples == 0)
+        main_note(opts, "--gi-bounces changes nothing here: no global illumination rays are "
+                        "cast (--gi N)");
 }
 
 /* Returns the fingerprint of a render of scene with ropts: what it was read
@@ -421,6 +482,9 @@ static uint64_t main_fingerprint(const Scene *scene, const RenderOptions *ropts)
     h = hash_u64(h, ropts->indirect.ao_samples ? distance : 0);
     h = hash_u64(h, (uint64_t)ropts->indirect.gi_samples);
     h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
+    h = hash_u64(h, (uint64_t)scene->model);
+    h = hash_u64(h, (uint64_t)ropts->no_shadows);
+    h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
     return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
 }
 
@@ -445,8 +509,8 @@ static int main_render(const Options *opts)
                            opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED, opts->jpeg_quality,
                            opts->jpeg_444, NULL};
     /* The linear colours of PFM would show what the cut-off leaves out. */
-    RenderOptions ropts = {opts->max_depth, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0};
+    RenderOptions ropts = {0, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
+                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
     RayCounts counts = {0};
     Tile tile;
     char record[TILE_RECORD_MAX];
@@ -461,6 +525,7 @@ static int main_render(const Options *opts)
     if (main_load(opts, &scene) != 0)
         return 1;
     read_time = main_now() - start;
+    main_adjust(opts, &scene, &ropts);
     if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
         goto fail_scene;
@@ -469,9 +534,7 @@ static int main_render(const Options *opts)
         main_prepare(opts, &wopts, &scene, &err) != 0)
         goto fail_scene;
     accel_time = main_now() - start - read_time;
-    ropts.samples = opts->samples ? opts->samples : scene.samples ? scene.samples : 1;
     rows = scene.camera.height;
-    main_indirect(opts, &scene, &ropts.indirect);
     /* Gathered light has no bound the cut-off could use. */
     if (ropts.indirect.gi_samples > 0)
         ropts.cutoff = 0;
@@ -486,6 +549,10 @@ static int main_render(const Options *opts)
     }
     if (main_image(opts, &wopts, &scene, rows, &img, &err) != 0)
         goto fail_scene;
+    if (scene.model == SCENE_MODEL_SEED001 && image_encode_gamma(&img, SEED001_GAMMA) != 0) {
+        error_set(&err, opts->scene_path, "out of memory");
+        goto fail_image_only;
+    }
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
     threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
@@ -527,6 +594,7 @@ static int main_render(const Options *opts)
 
 fail_image:
     main_temp_path = NULL;
+fail_image_only:
     image_free(&img);
 fail_scene:
     main_report(&err);

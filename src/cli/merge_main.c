@@ -25,7 +25,7 @@
 #include "image/tile.h"
 #include "image/writer.h"
 
-#define MERGE_VERSION "0.1.0"
+#define MERGE_VERSION "0.2.0"
 
 static const char merge_help[] =
     "Usage: raytrace-merge [OPTIONS] OUT TILE...\n"

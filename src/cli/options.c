@@ -25,17 +25,28 @@ const char *const *options_help(void)
         "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
         "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
         "PNG, PFM or JPEG image, chosen by OUTPUT's extension (.ppm, .png, .pfm,\n"
-        ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG\n"
-        "or JPEG files. SCENE may be '-' for standard input, OUTPUT '-' for\n"
+        ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG,\n"
+        "JPEG or BMP files. SCENE may be '-' for standard input, OUTPUT '-' for\n"
         "standard output. OUTPUT is replaced only when the whole image has been\n"
         "written.\n"
         "\n"
         "Options:\n",
         "  -d, --max-depth N  trace mirror and refracted rays down to depth N,\n"
-        "                     0 to 1000 (default 10; 0 traces none)\n"
+        "                     0 to 1000 (default 10, seed 001's model 99; 0 traces\n"
+        "                     none)\n"
         "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
         "                     (anti-aliasing; a lens: record blurs with them);\n"
-        "                     default: the scene's samples: record, else 1\n"
+        "                     default: the scene's samples: record, else 1 (MPL\n"
+        "                     scenes: 4)\n"
+        "  --size WxH         render W x H pixels (1 to 32768 each) of the scene's\n"
+        "                     view, its height kept (default: the scene's size)\n"
+        "  --model M          light an MPL scene by M: seed001 (the default: seed\n"
+        "                     001's program's rules, its occlusion and gathering,\n"
+        "                     gamma 2.2) or physical (the keyword format's\n"
+        "                     Blinn-Phong, physically based occlusion and\n"
+        "                     gathered light, linear bytes)\n"
+        "  --no-shadows       cast no shadow rays: every light reaches every point\n"
+        "                     that faces it\n"
         "  --cutoff L         leave out mirror, refracted and shadow rays that could\n"
         "                     add less than L levels (0 to 255, default 0.1) to a\n"
         "                     pixel; in pixels near a rounding boundary they are\n"
@@ -43,12 +54,16 @@ const char *const *options_help(void)
         "                     full, so the bytes never change (0: off)\n"
         "  --ao N             ambient occlusion: N rays per point the camera sees\n"
         "                     (0 to 4096) darken its ambient light by the share\n"
-        "                     they find hidden (default: the scene's, else 0)\n"
+        "                     they find hidden (default: the scene's, else 0;\n"
+        "                     seed 001's model: 10 rays at every point, darkening\n"
+        "                     all its light)\n"
         "  --ao-distance D    what is nearer than D hides (default: the scene's,\n"
-        "                     else a tenth of the diagonal of its objects' box)\n"
+        "                     else a tenth of the diagonal of its objects' box;\n"
+        "                     seed 001's model: 2)\n"
         "  --gi N             global illumination: N rays per point the camera\n"
         "                     sees (0 to 4096) gather the light other surfaces\n"
-        "                     reflect onto its diffuse part (default: 0)\n"
+        "                     reflect onto its diffuse part (default: 0; seed\n"
+        "                     001's model: 10 rays gathering the colours they meet)\n"
         "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
         "  --tile K/N         render only the K-th of N tiles (1 <= K <= N <= 65536)\n"
         "                     to OUTPUT, a PPM, PNG or PFM that records where it\n"
@@ -177,6 +192,9 @@ static const OptionWord options_formats[] = {{"ppm", FORMAT_PPM},   {"png", FORM
 static const OptionWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
 static const OptionWord options_layouts[] = {{"rows", TILE_ROWS}, {"bands", TILE_BANDS}, {NULL, 0}};
 static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
+static const OptionWord options_models[] = {{"seed001", SCENE_MODEL_SEED001},
+                                           {"physical", SCENE_MODEL_PHYSICAL},
+                                           {NULL, 0}};
 static const OptionWord options_scene_formats[] = {{"course", SCENE_COURSE},
                                                     {"keyword", SCENE_KEYWORD},
                                                     {"mpl", SCENE_MPL},
@@ -192,6 +210,9 @@ static const OptionSpec options_table[] = {
     {"--check", OPT(NULL, OPTION_FLAG, check), 0, 0, NULL, 0},
     {"--ascii", OPT(NULL, OPTION_FLAG, ascii), 0, 0, NULL, 0},
     {"--no-accel", OPT(NULL, OPTION_FLAG, no_accel), 0, 0, NULL, 0},
+    {"--no-shadows", OPT(NULL, OPTION_FLAG, no_shadows), 0, 0, NULL, 0},
+    {"--model", OPT(NULL, OPTION_WORD, model), 0, 0, options_models, 0},
+    {"--size", OPT(NULL, OPTION_TEXT, size), 0, 0, NULL, 0},
     {"--max-depth", OPT("-d", OPTION_INT, max_depth), 0, TRACE_MAX_DEPTH_LIMIT, NULL, 0},
     {"--threads", OPT("-j", OPTION_INT, threads), 1, OPTIONS_MAX_THREADS, NULL, 0},
     {"--spp", OPT("-s", OPTION_INT, samples), 1, SAMPLER_MAX, NULL, 0},
@@ -367,6 +388,28 @@ static int options_tile(Options *opts, char *msg, size_t msg_size)
     return 0;
 }
 
+/* Reads --size WxH into opts (each 1..CAMERA_MAX_SIZE); returns 0, or -1
+ * with msg set. */
+static int options_image_size(Options *opts, char *msg, size_t msg_size)
+{
+    const char *x = strchr(opts->size, 'x');
+    char w[16];
+    size_t n = x ? (size_t)(x - opts->size) : 0;
+
+    if (x && n > 0 && n < sizeof w) {
+        memcpy(w, opts->size, n);
+        w[n] = '\0';
+        if (options_int(w, 1, CAMERA_MAX_SIZE, &opts->width) == 0 &&
+            options_int(x + 1, 1, CAMERA_MAX_SIZE, &opts->height) == 0)
+            return 0;
+    }
+    snprintf(msg, msg_size,
+             "option '--size' takes WxH, the image's width and height in pixels, each from 1 "
+             "to %d (as 500x500), found '%.40s'",
+             CAMERA_MAX_SIZE, opts->size);
+    return -1;
+}
+
 OptionsAction options_parse(Options *opts, int argc, char **argv, int default_threads, char *msg,
                             size_t msg_size)
 {
@@ -374,7 +417,8 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     int npos = 0, only_positional = 0;
 
     memset(opts, 0, sizeof *opts);
-    opts->max_depth = 10;
+    opts->max_depth = -1;
+    opts->model = -1;
     opts->threads = default_threads;
     opts->format = -1;
     opts->scene_format = SCENE_AUTO;
@@ -432,6 +476,8 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         return OPTIONS_USAGE;
     }
     if (opts->tile && options_tile(opts, msg, msg_size) != 0)
+        return OPTIONS_USAGE;
+    if (opts->size && options_image_size(opts, msg, msg_size) != 0)
         return OPTIONS_USAGE;
     return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;
 }

@@ -21,6 +21,7 @@ void cone_make(Cone *c, Vec3 base, real radius, real height, Material m)
     c->sine = radius / l;
     c->cosine = fabs(height) / l;
     c->side = height > 0 ? -1 : 1;
+    c->finite = 0;
     c->material = m;
     c->order = 0;
 }
@@ -54,8 +55,11 @@ static int cone_roots(const Cone *c, const Ray *ray, real t[2])
         r[1] = tmp;
     }
     for (int i = 0; i < 2; i++) {
-        /* On this nappe: on the apex's `side`, or at the apex. */
-        if (isfinite(r[i]) && (fy + r[i] * dy) * c->side >= 0 && (n == 0 || r[i] != t[0]))
+        /* On this nappe: on the apex's `side`, or at the apex; a finite
+         * cone's, no further from the apex than the circle. */
+        real along = (fy + r[i] * dy) * c->side;
+        if (isfinite(r[i]) && along >= 0 && (!c->finite || along <= fabs(c->height)) &&
+            (n == 0 || r[i] != t[0]))
             t[n++] = r[i];
     }
     return n;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "image/bmp.h"
 #include "image/jpeg.h"
 #include "image/pfm.h"
 #include "image/png.h"
@@ -102,12 +103,53 @@ int picture_parse(const char *name, const char *data, size_t len, Picture *pic, 
                      jpg.channels == 1 ? "" : "s");
         }
         jpeg_free(&jpg);
+    } else if (bmp_is(head, len)) {
+        BmpImage bmp;
+        if (bmp_parse(name, head, len, &bmp, err) != 0)
+            return -1;
+        if (picture_alloc(pic, bmp.width, bmp.height, name, err) == 0) {
+            size_t count = 3 * (size_t)bmp.width * (size_t)bmp.height;
+            for (size_t k = 0; k < count; k++)
+                pic->rgb[k] = bmp.rgb[k];
+            snprintf(pic->format, sizeof pic->format, "BMP, %d bits a pixel", bmp.bits);
+        }
+        bmp_free(&bmp);
     } else {
         error_set(err, name,
-                  "not an image raytrace reads: expected PPM (P3, P6), PFM, PNG or JPEG");
+                  "not an image raytrace reads: expected PPM (P3, P6), PFM, PNG, JPEG or BMP");
         return -1;
     }
     return pic->rgb ? 0 : -1;
+}
+
+int picture_box(Picture *pic, int width, int height, Error *err)
+{
+    double *out = malloc(3 * (size_t)width * (size_t)height * sizeof *out);
+
+    if (!out) {
+        error_set(err, "", "out of memory for a %d x %d box filter", width, height);
+        return -1;
+    }
+    for (int j = 0; j < height; j++) {
+        int y0 = (int)((long long)j * pic->height / height);
+        int y1 = (int)((long long)(j + 1) * pic->height / height);
+        for (int i = 0; i < width; i++) {
+            int x0 = (int)((long long)i * pic->width / width);
+            int x1 = (int)((long long)(i + 1) * pic->width / width);
+            double sum[3] = {0, 0, 0}, n = (double)(x1 - x0) * (y1 - y0);
+            for (int y = y0; y < y1; y++)
+                for (int x = x0; x < x1; x++)
+                    for (int c = 0; c < 3; c++)
+                        sum[c] += pic->rgb[3 * ((size_t)y * (size_t)pic->width + (size_t)x) + c];
+            for (int c = 0; c < 3; c++)
+                out[3 * ((size_t)j * (size_t)width + (size_t)i) + c] = sum[c] / n;
+        }
+    }
+    free(pic->rgb);
+    pic->rgb = out;
+    pic->width = width;
+    pic->height = height;
+    return 0;
 }
 
 Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance)

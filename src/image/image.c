@@ -3,6 +3,8 @@
 
 #include <stdlib.h>
 
+#include "math/power.h"
+
 size_t image_size(int width, int height)
 {
     return 3 * (size_t)width * (size_t)height;
@@ -13,6 +15,7 @@ int image_init(Image *img, int width, int height)
     img->width = width;
     img->height = height;
     img->linear = NULL;
+    img->encode = NULL;
     img->rgb = calloc(image_size(width, height), 1);
     if (!img->rgb) {
         img->width = img->height = 0;
@@ -31,11 +34,28 @@ int image_keep_linear(Image *img)
     return img->linear ? 0 : -1;
 }
 
+int image_encode_gamma(Image *img, double gamma)
+{
+    double *t = malloc((COLOUR_LEVELS - 1) * sizeof *t);
+
+    if (!t)
+        return -1;
+    /* Byte b from the midpoint between b - 1 and b on the encoded scale:
+     * power() gives the same thresholds on every machine. */
+    for (int b = 1; b < COLOUR_LEVELS; b++)
+        t[b - 1] = 255 * power((b - 0.5) / 255, gamma);
+    free(img->encode);
+    img->encode = t;
+    return 0;
+}
+
 void image_free(Image *img)
 {
     free(img->rgb);
     free(img->linear);
+    free(img->encode);
     img->rgb = NULL;
     img->linear = NULL;
+    img->encode = NULL;
     img->width = img->height = 0;
 }

@@ -6,6 +6,7 @@
 #include "accel/bvh.h"
 #include "render/cut.h"
 #include "render/sampler.h"
+#include "render/seed001.h"
 #include "render/trace.h"
 #include "scene/camera.h"
 
@@ -28,6 +29,14 @@ typedef struct {
     CameraStep row;
 } RenderRow;
 
+/* Returns the colour seen along the primary ray `ray` by the rules of the
+ * scene's model: the physical model's (trace.h) or seed 001's (seed001.h),
+ * chosen here alone. */
+RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray)
+{
+    return t->scene->model == SCENE_MODEL_SEED001 ? seed001_trace(t, ray) : trace_ray(t, ray);
+}
+
 /* Returns the mean colour of the grid's samples of pixel (x, y) of row,
  * traced by t (leaving out what its cut-off allows). One sample is the
  * pixel's centre through the lens's centre. */
@@ -44,7 +53,7 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
     if (g->n == 1) {
         Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
                                : camera_ray(cam, x + 0.5, y + 0.5);
-        return trace_ray(t, &ray);
+        return render_trace(t, &ray);
     }
     for (unsigned k = 0; k < g->n; k++) {
         double p[2], l[2], disk[2] = {0, 0};
@@ -57,7 +66,7 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
         }
         ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
         t->sample->k = k;
-        sum = colour_add(sum, trace_ray(t, &ray));
+        sum = colour_add(sum, render_trace(t, &ray));
     }
     return colour(sum.r / g->n, sum.g / g->n, sum.b / g->n);
 }
@@ -188,8 +197,10 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
     Cut proto = {0};
     /* Under global illumination a ray's colour has no bound the cut-off
-     * could use: it is off. */
-    int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0;
+     * could use, nor under seed 001's rules: it is off; its proof of the
+     * bytes is for linear ones. */
+    int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0 &&
+                  !img->encode && scene->model == SCENE_MODEL_PHYSICAL;
     SamplerGrid g = sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
@@ -211,7 +222,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
                     sampler_grid(g.n * (unsigned)(opts->indirect.ao_samples ? opts->indirect.ao_samples : 1)),
                     sampler_grid(g.n * (unsigned)(opts->indirect.gi_samples ? opts->indirect.gi_samples : 1)),
-                    g, occluders};
+                    g, occluders, opts->no_shadows};
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;

@@ -109,13 +109,19 @@ uint64_t sampler_branch(uint64_t key, unsigned branch)
     return sampler_mix(key * 0x9e3779b97f4a7c15u + branch + 1);
 }
 
+void sampler_square(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
+                    double xy[2])
+{
+    /* Past the pixel and lens dimensions, whatever the key. */
+    sampler_jitter(g, px, py, k, key | 0x8000000000000000u, xy);
+}
+
 void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
                         double dir[3])
 {
     double xy[2], disk[2], r2;
 
-    /* Past the pixel and lens dimensions, whatever the key. */
-    sampler_jitter(g, px, py, k, key | 0x8000000000000000u, xy);
+    sampler_square(g, px, py, k, key, xy);
     sampler_disk(xy, disk);
     r2 = disk[0] * disk[0] + disk[1] * disk[1];
     dir[0] = disk[0];

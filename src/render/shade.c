@@ -5,42 +5,40 @@
 
 #include "math/power.h"
 #include "render/cut.h"
+#include "scene/mapping.h"
 #include "scene/texture.h"
 
-/* Returns the coordinate seed 001's stripes alternate along at sh, the
- * point of hit with texture coordinates uv: a stripe of the colour where
- * its fraction is below one half, a black one above. By its program's
- * rule: 10 stripes around most shapes (30 r around a sphere of radius
- * r < 1, 10 r around a larger one) and across each face of a cube; one a
- * unit of x, in the world, on planes and triangles; half / 10 a unit
- * across a square. */
-static double shade_stripes(const Scene *scene, const Hit *hit, const Shade *sh,
-                            const double uv[2])
+/* The steps of a shadow ray, inline in every caller: the hot paths of
+ * the course and keyword scenes run through them. */
+#if defined(__GNUC__)
+#define SHADE_INLINE static inline __attribute__((always_inline))
+#else
+#define SHADE_INLINE static inline
+#endif
+
+/* shade_texel(), inline: every hit asks (a texture's lookup inline too). */
+static inline Colour shade_colour(const Scene *scene, const Material *m, const double uv[2],
+                                  double stripe, int clamp_v)
 {
-    switch (hit->kind) {
-    case SHAPE_SPHERE: {
-        double r = scene->spheres[hit->index].radius;
-        return uv[0] * (r < 1 ? 30 * r : 10 * r);
-    }
-    case SHAPE_PLANE:
-    case SHAPE_TRIANGLE:
-        return sh->sp.point.x;
-    case SHAPE_SQUARE:
-        return uv[0] * (scene->squares[hit->index].half / 10);
-    default:
-        return uv[0] * 10;
-    }
+    if (m->texture >= 0)
+        return texture_lookup(&scene->textures[m->texture], uv[0], uv[1], m->filter, clamp_v);
+    if (m->stripes)
+        return stripe - floor(stripe) < 0.5 ? m->colour : colour(0, 0, 0);
+    return m->colour;
 }
 
 Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
 {
     Shade sh;
-    double uv[2] = {0, 0};
-    int clamp_v = 0, want_uv;
+    double uv[2] = {0, 0}, stripe = 0;
+    int clamp_v = 0, want_uv, seed;
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
+    /* Stripes are seed 001's, laid as its program laid them. */
     want_uv = sh.material.texture >= 0 || sh.material.stripes;
+    seed = want_uv && (sh.material.stripes || scene->mapping == SCENE_MAPPING_SEED001);
+    want_uv = want_uv && !seed;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         const Sphere *s = &scene->spheres[hit->index];
@@ -91,23 +89,23 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
         break;
     }
     }
-    if (sh.material.texture >= 0) {
-        sh.colour = texture_lookup(&scene->textures[sh.material.texture], uv[0], uv[1],
-                                   sh.material.filter, clamp_v);
-    } else if (sh.material.stripes) {
-        double x = shade_stripes(scene, hit, &sh, uv);
-        sh.colour = x - floor(x) < 0.5 ? sh.material.colour : colour(0, 0, 0);
-    } else {
-        sh.colour = sh.material.colour;
-    }
+    if (seed)
+        mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
+    sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
     return sh;
+}
+
+Colour shade_texel(const Scene *scene, const Material *m, const double uv[2], double stripe,
+                   int clamp_v)
+{
+    return shade_colour(scene, m, uv, stripe, clamp_v);
 }
 
 /* Returns the shadow ray from the shaded point sh (whose surface normal n
  * faces the viewer) to the light in direction to_light (towards a point
  * light: the vector to it; a distant light: its unit to_light), and in
  * *tmax where it ends. */
-static inline Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, Vec3 to_light,
+SHADE_INLINE Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, Vec3 to_light,
                                    real *tmax)
 {
     Ray shadow;
@@ -124,6 +122,8 @@ double shade_light_share(const Tracer *t, const Ray *shadow, real tmax, const Li
 {
     size_t k = light ? (size_t)(light - t->scene->lights) : 0;
 
+    if (t->no_shadows)
+        return 1;
     t->counts->shadow++;
     if (t->scene->has_transparency)
         return visibility_transmittance(t->scene, shadow, tmax);
@@ -160,13 +160,20 @@ static inline int shade_cut_shadow(Cut *cut, double most, Colour weight, Colour 
 
 /* Returns the share E of the light that reaches the shaded point sh from
  * light (see shade_shadow_ray()), casting one shadow ray. */
-static inline double shade_visibility(const Tracer *t, const Shade *sh, Vec3 n,
+SHADE_INLINE double shade_visibility(const Tracer *t, const Shade *sh, Vec3 n,
                                       const Light *light, Vec3 to_light)
 {
     real tmax;
     Ray shadow = shade_shadow_ray(sh, n, light, to_light, &tmax);
 
     return shade_light_share(t, &shadow, tmax, light);
+}
+
+double shade_light_reach(const Tracer *t, const Shade *sh, Vec3 n, const Light *light)
+{
+    Vec3 to_light = light->distant ? light->to_light : vec3_sub(light->position, sh->sp.point);
+
+    return shade_visibility(t, sh, n, light, to_light);
 }
 
 /* Returns the light's direct contribution, E cos_a (Ci * Cs) / 255, at the

@@ -206,9 +206,7 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
                   kd * (sh->colour.b * g.b / 255));
 }
 
-/* Returns the colour of the sky the ray sees: the background, or the
- * blend of the scene's sky and background by the direction's height. */
-static Colour trace_background(const Scene *scene, const Ray *ray)
+Colour trace_background(const Scene *scene, const Ray *ray)
 {
     double up;
 

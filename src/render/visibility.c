@@ -101,8 +101,10 @@ static inline ShapeKind visibility_first(unsigned mask)
     return (ShapeKind)__builtin_ctz(mask);
 }
 
-/* visibility_nearest() through the hierarchy, the unbounded shapes aside. */
-static int visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
+/* visibility_nearest() through the hierarchy, the unbounded shapes of
+ * the kinds in mask aside. */
+static inline __attribute__((always_inline)) int
+visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, unsigned mask, Hit *hit)
 {
     BvhHit bh;
     int found = bvh_nearest(scene->accel, ray, tmax, &bh);
@@ -110,16 +112,25 @@ static int visibility_nearest_accel(const Scene *scene, const Ray *ray, real tma
     if (found)
         visibility_set_hit(hit, bh.t, visibility_of_bvh[bvh_kind(bh.prim)], bvh_index(bh.prim),
                            bh.order);
-    for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED; m != 0; m &= m - 1)
+    for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED & mask; m != 0; m &= m - 1)
         found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
 }
 
+/* visibility_nearest() without the eye's light buffer, over the bounded
+ * shapes and the unbounded ones of the kinds in mask. Inline: the course
+ * scene's every ray comes here. */
+static inline __attribute__((always_inline)) int
+visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned mask, Hit *hit);
+
+int visibility_nearest_among(const Scene *scene, const Ray *ray, real tmax, unsigned kinds,
+                             Hit *hit)
+{
+    return visibility_nearest_in(scene, ray, tmax, kinds | VISIBILITY_BOUNDED, hit);
+}
+
 int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
-    int found = 0;
-    size_t best = 0;
-
     /* A primary ray of a pinhole camera asks the eye's light buffer, a
      * scene of spheres alone having one. */
     if (scene->eye_buffer && vec3_equal(ray->origin, scene->eye_buffer->centre)) {
@@ -132,8 +143,17 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
             return rc;
         }
     }
+    return visibility_nearest_in(scene, ray, tmax, ~0u, hit);
+}
+
+static inline __attribute__((always_inline)) int
+visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned mask, Hit *hit)
+{
+    int found = 0;
+    size_t best = 0;
+
     if (scene->accel)
-        return visibility_nearest_accel(scene, ray, tmax, hit);
+        return visibility_nearest_accel(scene, ray, tmax, mask, hit);
     for (size_t k = 0; k < scene->sphere_count; k++) {
         real t;
         const Sphere *s = &scene->spheres[k];
@@ -148,7 +168,7 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
     }
     if (found)
         visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
-    for (unsigned m = scene->kinds & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
+    for (unsigned m = scene->kinds & mask & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
         found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
 }

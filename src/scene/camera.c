@@ -107,6 +107,19 @@ CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int 
     return CAMERA_VIEW_OK;
 }
 
+void camera_resize(Camera *cam, int width, int height)
+{
+    if ((double)width * cam->height != (double)height * cam->width) {
+        /* u's new length over its old: (width / height) / (W / H). */
+        double s = ((double)width * cam->height) / ((double)height * cam->width);
+        Vec3 centre = vec3_add(cam->top_left, vec3_scale(cam->u, 0.5));
+        cam->u = vec3_scale(cam->u, s);
+        cam->top_left = vec3_sub(centre, vec3_scale(cam->u, 0.5));
+    }
+    cam->width = width;
+    cam->height = height;
+}
+
 int camera_set_lens(Camera *cam, double aperture, double focus)
 {
     Vec3 u = cam->u, v = cam->v, n, lens_v;

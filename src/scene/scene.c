@@ -23,6 +23,7 @@ void scene_init(Scene *scene)
     scene->named = NULL;
     scene->meshes = NULL;
     scene->accel = NULL;
+    scene->ao_samples = scene->gi_samples = -1;
 }
 
 /* Releases the scene's light buffers. */

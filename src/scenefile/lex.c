@@ -291,6 +291,12 @@ int lex_numbers(Lexer *L, const Record *rec, int first, const RecordSpec *spec, 
 int lex_whole_number(Lexer *L, const Record *rec, int k, const char *what, const char *unit,
                      long max, int *out)
 {
+    return lex_whole_number_in(L, rec, k, what, unit, 1, max, out);
+}
+
+int lex_whole_number_in(Lexer *L, const Record *rec, int k, const char *what, const char *unit,
+                        long min, long max, int *out)
+{
     const Token *t = &rec->tok[k];
     long v = 0;
     char q[64];
@@ -306,9 +312,9 @@ int lex_whole_number(Lexer *L, const Record *rec, int k, const char *what, const
         if (v <= max)
             v = v * 10 + (t->text[i] - '0');
     }
-    if (v < 1 || v > max) {
-        lex_fail(L, &rec->line, t->column, "%s must be between 1 and %ld %s, found %s", what,
-                 max, unit, q);
+    if (v < min || v > max) {
+        lex_fail(L, &rec->line, t->column, "%s must be between %ld and %ld %s, found %s", what,
+                 min, max, unit, q);
         return -1;
     }
     *out = (int)v;

@@ -4,7 +4,7 @@
  * stray commas allowed.
  *
  *   scene     -> line*                 (materials before the shapes that use them)
- *   material  -> 'm' name kind r g b stripes specular glossiness texture [ior]
+ *   material  -> 'm' name kind r g b stripes index glossiness texture
  *   kind      -> MATTE | PLASTIC | METALLIC | DIELECTRIC       (any case)
  *   primitive -> 'p' shape number* material
  *   shape     -> Sphere | Plane | Triangle | Tri | Cube | Square | Cylinder | Cone
@@ -14,11 +14,13 @@
  *              | 'c' Background r g b | 'c' Sky r g b r g b        (one of them)
  *              | 'c' Ambient r g b | 'c' Samples n                 (each at most once)
  *              | 'c' AO n [distance] | 'c' GI n [bounces]          (each at most once)
+ *              | 'c' Model seed001 | 'c' Model physical          (at most once)
  *
  * Colours are 0 to 1 (scaled to the renderer's 0 to 255).
  */
 #include "scenefile/mpl.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +43,7 @@ typedef struct {
     int samples_line;
     int ao_line;         /* (c AO, c GI) */
     int gi_line;
+    int model_line;
     Names names;         /* the materials by name */
 } Mpl;
 
@@ -49,11 +52,12 @@ typedef struct {
 
 static const char *const mpl_rgb_names[] = {"red", "green", "blue"};
 static const FieldKind mpl_rgb_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
-static const char *const mpl_material_names[] = {"red",      "green",      "blue", "stripes",
-                                                 "specular", "glossiness", "index"};
+/* Seed 001's reader's order (its SceneReader and Material): the 7th field
+ * is the refractive index ("indice"), the 8th the glossiness. */
+static const char *const mpl_material_names[] = {"red",   "green",      "blue",
+                                                 "stripes", "index", "glossiness"};
 static const FieldKind mpl_material_kinds[] = {FIELD_FRACTION, FIELD_FRACTION,    FIELD_FRACTION,
-                                               FIELD_FRACTION, FIELD_NONNEGATIVE, FIELD_NONNEGATIVE,
-                                               FIELD_POSITIVE};
+                                               FIELD_COORD,    FIELD_NONNEGATIVE, FIELD_NONNEGATIVE};
 static const char *const mpl_light_names[] = {"x",    "y",         "z",    "red",
                                               "green", "blue", "intensity", "range"};
 static const FieldKind mpl_light_kinds[] = {FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
@@ -76,10 +80,8 @@ static const char *const mpl_tri_names[] = {"size", "x", "y", "z"};
 static const FieldKind mpl_tri_kinds[] = {FIELD_POSITIVE, FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
 static const RecordSpec mpl_material = {
-    "the material", "m name kind r g b stripes specular glossiness texture [index]", 6, 0, 0,
+    "the material", "m name kind r g b stripes index glossiness texture", 6, 0, 0,
     mpl_material_names, mpl_material_kinds};
-static const RecordSpec mpl_index = {"the material", NULL, 1, 0, 0, mpl_material_names + 6,
-                                     mpl_material_kinds + 6};
 static const RecordSpec mpl_direction = {"the directional light", "dx dy dz r g b intensity", 7,
                                          0, 0, mpl_light_names, mpl_light_kinds};
 static const RecordSpec mpl_point = {"the point light", "x y z r g b intensity [range]", 7, 1, 0,
@@ -194,27 +196,31 @@ static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const ch
     return -1;
 }
 
-/* Returns the path of texture token t: beside the scene file, or, when
- * only that opens, in its Textures folder, where seed 001's program looks
- * (or its textures folder, the same on a system that ignores case); NULL
- * with the fault recorded when memory runs out. */
+/* Returns the path of texture token t: beside the scene file or, when it
+ * is not there, in the folders seed 001's program looks in: Textures
+ * beside the scene (or textures, the same on a system that ignores case),
+ * and Textures beside the scene's folder (its repository keeps Scene/ and
+ * Textures/ side by side). The search stops at the first candidate that
+ * opens or fails for another reason than not being there (ENOENT,
+ * ENOTDIR): loading it then reports that reason. When none is there, the
+ * path beside the scene. NULL with the fault recorded when memory runs
+ * out. */
 static char *mpl_texture_path(Mpl *M, const Token *t)
 {
-    static const char *const folders[] = {"Textures/", "textures/"};
-    char *path = lex_path(&M->lex, t);
-    FILE *f;
+    static const char *const folders[] = {"", "Textures/", "textures/", "../Textures/"};
+    char *first = NULL;
 
-    if (!path || (f = fopen(path, "rb")) != NULL) {
-        if (path)
-            fclose(f);
-        return path;
-    }
-    for (int i = 0; i < 2 && t->text[0] != '/'; i++) {
+    for (size_t i = 0; i < sizeof folders / sizeof folders[0]; i++) {
         size_t k = strlen(folders[i]), n = k + t->len;
-        char *name = malloc(n + 1), *other;
+        char *name, *path;
         Token in = *t;
+        FILE *f;
+
+        if (i > 0 && t->text[0] == '/')
+            break;
+        name = malloc(n + 1);
         if (!name) {
-            free(path);
+            free(first);
             error_set(M->lex.err, M->lex.name, "out of memory");
             return NULL;
         }
@@ -223,43 +229,81 @@ static char *mpl_texture_path(Mpl *M, const Token *t)
         name[n] = '\0';
         in.text = name;
         in.len = n;
-        other = lex_path(&M->lex, &in);
+        path = lex_path(&M->lex, &in);
         free(name);
-        if (other && (f = fopen(other, "rb")) != NULL) {
-            fclose(f);
-            free(path);
-            return other;
+        if (!path) {
+            free(first);
+            return NULL;
         }
-        free(other);
+        errno = 0;
+        f = fopen(path, "rb");
+        if (f || (errno != ENOENT && errno != ENOTDIR)) {
+            if (f)
+                fclose(f);
+            free(first);
+            return path;
+        }
+        if (first)
+            free(path);
+        else
+            first = path;
     }
-    return path;
+    return first;
 }
 
-/* Sets what the material kind `model` shades with: the weights of the
- * Blinn-Phong term (docs/scene-format.md) and the index. */
-static void mpl_model(NamedMaterial *pm, ShadingModel model, double specular, double glossiness,
-                      double ior)
+/* Sets what the material kind `model` shades with under the physical
+ * model (docs/scene-format.md): the weights of the Blinn-Phong term, a
+ * highlight wherever the glossiness is above 0 (seed 001's rule), and the
+ * index its glass and clear coat bend and reflect with. */
+static void mpl_model(NamedMaterial *pm, ShadingModel model, double index, double glossiness)
 {
     Material *b = &pm->base;
     int diffuse = model == MODEL_MATTE || model == MODEL_PLASTIC;
+    double ior = model == MODEL_PLASTIC || model == MODEL_DIELECTRIC ? index : 1;
     double f0 = (ior - 1) / (ior + 1);
 
     pm->model = model;
     pm->ka = pm->kd = diffuse ? 1 : 0;
-    pm->ks = model == MODEL_MATTE ? 0 : specular;
+    pm->ks = glossiness > 0 ? 1 : 0;
     pm->shininess = glossiness;
-    b->ior = model == MODEL_MATTE || model == MODEL_METALLIC ? 1 : ior;
+    pm->index = index;
+    b->ior = ior;
     /* Shadows through glass: what crosses one surface head on, 1 - F(0),
      * times the mean of its tint. */
     if (model == MODEL_DIELECTRIC)
         b->transparency = (1 - f0 * f0) * (b->colour.r + b->colour.g + b->colour.b) / (3 * 255);
 }
 
-/* material -> 'm' name kind r g b stripes specular glossiness texture [ior] */
+/* Checks the fields of material record rec past its texture (seed 001's
+ * layout ends there); returns 0, or -1 with the fault recorded: a number
+ * there is the layout raytrace's --save wrote before it followed the
+ * seed's reader (a highlight weight 7th, the index 11th), which would be
+ * misread. */
+static int mpl_material_end(Mpl *M, const Record *rec)
+{
+    double ignored;
+    char q[64];
+
+    if (rec->count <= 10)
+        return 0;
+    if (rec->count == 11 &&
+        number_parse(rec->tok[10].text, rec->tok[10].len, &ignored) == NUMBER_OK) {
+        mpl_fail(M, &rec->line, rec->tok[10].column,
+                 "the material has an 11th field, %s: seed 001's layout ends with the texture "
+                 "(m name kind r g b stripes index glossiness texture); raytrace 0.1's --save "
+                 "wrote a highlight weight 7th and the index last: move the index to the 7th "
+                 "field and drop this one",
+                 lex_quote(q, sizeof q, &rec->tok[10]));
+        return -1;
+    }
+    return lex_fail_extra(&M->lex, rec, 10, "the material's texture");
+}
+
+/* material -> 'm' name kind r g b stripes index glossiness texture */
 static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
 {
     const char *syntax = mpl_material.syntax;
-    double v[7] = {0, 0, 0, 0, 0, 0, MPL_DEFAULT_IOR};
+    double v[6] = {0, 0, 0, 0, 0, 0};
     const Token *name, *kind, *tex;
     NamedMaterial pm;
     char q[64];
@@ -295,18 +339,21 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
                  lex_quote(q, sizeof q, &rec->tok[6]));
         return -1;
     }
-    if (mpl_need(M, rec, 9, "the material's texture, a file or N for none", syntax) != 0)
+    if ((model == MODEL_PLASTIC || model == MODEL_DIELECTRIC) && !(v[4] > 0)) {
+        mpl_fail(M, &rec->line, rec->tok[7].column,
+                 "the %s material's index must be positive (glass: about 1.5), found %s",
+                 mpl_kinds[model - MODEL_MATTE], lex_quote(q, sizeof q, &rec->tok[7]));
+        return -1;
+    }
+    if (mpl_need(M, rec, 9, "the material's texture, a file or N for none", syntax) != 0 ||
+        mpl_material_end(M, rec) != 0)
         return -1;
     tex = &rec->tok[9];
-    if (rec->count > 10 && lex_number(&M->lex, rec, 10, &mpl_index, 0, &v[6]) != 0)
-        return -1;
-    if (rec->count > 11)
-        return lex_fail_extra(&M->lex, rec, 11, "the material's index");
     memset(&pm, 0, sizeof pm);
     pm.base = material_plain(colour(v[0] * 255, v[1] * 255, v[2] * 255), 0);
     pm.base.stripes = v[3] == 1;
     pm.line = rec->line.number;
-    mpl_model(&pm, (ShadingModel)model, v[4], v[5], v[6]);
+    mpl_model(&pm, (ShadingModel)model, v[4], v[5]);
     if (!(tex->len == 1 && (tex->text[0] == 'N' || tex->text[0] == 'n'))) {
         char *path = mpl_texture_path(M, tex);
         Error inner;
@@ -389,7 +436,12 @@ static int mpl_primitive_record(Mpl *M, const Record *rec, Scene *scene)
         mpl_fail(M, &rec->line, rec->tok[field < 0 || n == 4 ? 0 : 2 + field].column, "%s", fault);
         return -1;
     }
-    return rc != 0 ? mpl_fail_memory(M, rec, scene, rc) : 0;
+    if (rc != 0)
+        return mpl_fail_memory(M, rec, scene, rc);
+    /* Seed 001's program's cone ends at its circle (cone.h). */
+    if (shape->kind == SHAPE_CONE)
+        scene->cones[scene->cone_count - 1].finite = 1;
+    return 0;
 }
 
 /* light -> 'l' DirectionLight dx dy dz r g b i | 'l' PointLight x y z r g b i [range] */
@@ -481,7 +533,8 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
 }
 
 /* AO -> 'c' AO n [distance] | GI -> 'c' GI n [bounces]: ambient occlusion
- * and global illumination rays (seed 001's section IV, trace.h). */
+ * and global illumination rays (seed 001's section IV, trace.h, seed001.h);
+ * 0 for none. */
 static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
 {
     const char *what = gi ? "the global illumination" : "the ambient occlusion";
@@ -490,9 +543,10 @@ static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
         mpl_need(M, rec, 2, gi ? "the number of global illumination rays"
                                : "the number of ambient occlusion rays",
                  gi ? "c GI n [bounces]" : "c AO n [distance]") != 0 ||
-        lex_whole_number(&M->lex, rec, 2, gi ? "the number of global illumination rays"
-                                             : "the number of ambient occlusion rays",
-                         "rays", SCENE_MAX_INDIRECT, gi ? &scene->gi_samples : &scene->ao_samples) != 0)
+        lex_whole_number_in(&M->lex, rec, 2, gi ? "the number of global illumination rays"
+                                                : "the number of ambient occlusion rays",
+                            "rays", 0, SCENE_MAX_INDIRECT,
+                            gi ? &scene->gi_samples : &scene->ao_samples) != 0)
         return -1;
     if (rec->count > 4)
         return lex_fail_extra(&M->lex, rec, 4, gi ? "the number of bounces" : "the distance");
@@ -503,16 +557,40 @@ static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
     return 0;
 }
 
+/* model -> 'c' Model seed001 | 'c' Model physical: the rules the picture
+ * is made by (scene.h). */
+static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    char q[64];
+
+    if (lex_once(&M->lex, rec, &M->model_line, "the model") != 0 ||
+        mpl_need(M, rec, 2, "the model", "c Model seed001 or c Model physical") != 0)
+        return -1;
+    if (mpl_word_is(&rec->tok[2], "seed001")) {
+        scene->model = SCENE_MODEL_SEED001;
+    } else if (mpl_word_is(&rec->tok[2], "physical")) {
+        scene->model = SCENE_MODEL_PHYSICAL;
+    } else {
+        mpl_fail(M, &rec->line, rec->tok[2].column,
+                 "unknown model %s (expected seed001, seed 001's program's rules, or physical)",
+                 lex_quote(q, sizeof q, &rec->tok[2]));
+        return -1;
+    }
+    return rec->count > 3 ? lex_fail_extra(&M->lex, rec, 3, "the model") : 0;
+}
+
 /* setting -> 'c' Camera ... | Background r g b | Sky r g b r g b | Ambient r g b
- *          | Samples n | AO n [distance] | GI n [bounces] */
+ *          | Samples n | AO n [distance] | GI n [bounces] | Model name */
 static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
 {
     double v[6];
     char q[64];
 
-    if (mpl_need(M, rec, 1, "the setting", "Camera, Background, Sky, Ambient, Samples, AO or GI") !=
-        0)
+    if (mpl_need(M, rec, 1, "the setting",
+                 "Camera, Background, Sky, Ambient, Samples, AO, GI or Model") != 0)
         return -1;
+    if (mpl_word_is(&rec->tok[1], "Model"))
+        return mpl_model_record(M, rec, scene);
     if (mpl_word_is(&rec->tok[1], "AO") || mpl_word_is(&rec->tok[1], "GI"))
         return mpl_indirect_record(M, rec, scene, mpl_word_is(&rec->tok[1], "GI"));
     if (mpl_word_is(&rec->tok[1], "Camera"))
@@ -546,7 +624,8 @@ static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
                                 CAMERA_MAX_SAMPLES, &scene->samples);
     }
     mpl_fail(M, &rec->line, rec->tok[1].column,
-             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO or GI)",
+             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO, GI or "
+             "Model)",
              lex_quote(q, sizeof q, &rec->tok[1]));
     return -1;
 }
@@ -591,13 +670,15 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     scene_init(scene);
     scene->memory_limit = memory_limit;
     scene->format = SCENE_MPL;
+    scene->model = SCENE_MODEL_SEED001;
+    scene->mapping = SCENE_MAPPING_SEED001;
     /* Seed 001's sky: white below, blue above. */
     scene->has_sky = 1;
     scene->sky = colour(0.5 * 255, 0.7 * 255, 255);
     scene->background = colour(255, 255, 255);
     lex_init(&M.lex, name, text, len, err);
     M.camera_line = M.background_line = M.ambient_line = M.samples_line = 0;
-    M.ao_line = M.gi_line = 0;
+    M.ao_line = M.gi_line = M.model_line = 0;
     names_init(&M.names);
     rc = mpl_lines(&M, scene);
     names_free(&M.names);
@@ -614,6 +695,8 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
         scene_free(scene);
         return -1;
     }
+    if (!M.samples_line)
+        scene->samples = MPL_DEFAULT_SAMPLES;
     scene_fit_scale(scene);
     return 0;
 }

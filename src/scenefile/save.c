@@ -223,15 +223,17 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
         save_mpl_colour(fp, scene->ambient);
         fputc('\n', fp);
     }
+    if (scene->model == SCENE_MODEL_PHYSICAL)
+        fputs("c Model physical\n", fp);
     if (scene->samples)
         fprintf(fp, "c Samples %d\n", scene->samples);
-    if (scene->ao_samples) {
+    if (scene->ao_samples >= 0) {
         fprintf(fp, "c AO %d", scene->ao_samples);
         if (scene->ao_distance > 0)
             save_numbers(fp, &scene->ao_distance, 1);
         fputc('\n', fp);
     }
-    if (scene->gi_samples) {
+    if (scene->gi_samples >= 0) {
         fprintf(fp, "c GI %d", scene->gi_samples);
         if (scene->gi_bounces > 0)
             fprintf(fp, " %d", scene->gi_bounces);
@@ -239,7 +241,7 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
     }
     for (i = 0; i < scene->named_count; i++) {
         const NamedMaterial *pm = &scene->named[i];
-        double v[2] = {pm->ks, pm->shininess};
+        double v[2] = {pm->index, pm->shininess};
         fprintf(fp, "m %s %s", pm->name, kinds[pm->model - MODEL_MATTE]);
         save_mpl_colour(fp, pm->base.colour);
         fprintf(fp, " %d", pm->base.stripes);
@@ -250,8 +252,6 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
         else if (save_path(fp, pm->texture, scene->textures[pm->base.texture].path, "texture",
                            scene_name, out_name, err) != 0)
             return -1;
-        if (pm->model == MODEL_PLASTIC || pm->model == MODEL_DIELECTRIC)
-            save_numbers(fp, &pm->base.ior, 1);
         fputc('\n', fp);
     }
     for (i = 0; i < scene->light_count; i++) {

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "image/bmp.h"
 #include "image/jpeg.h"
 #include "image/png.h"
 #include "image/ppm.h"
@@ -30,7 +31,7 @@ static int texture_file_bytes(Texture *tex, const char *name, int width, int hei
 }
 
 /* Decodes the len bytes at data, the file name, into tex by their first
- * bytes: JPEG, PNG or PPM; JPEG's buffers within max_bytes. */
+ * bytes: JPEG, PNG, BMP or PPM; JPEG's buffers within max_bytes. */
 static int texture_file_decode(Texture *tex, const char *name, const char *data, size_t len,
                                size_t max_bytes, Error *err)
 {
@@ -51,6 +52,14 @@ static int texture_file_decode(Texture *tex, const char *name, const char *data,
             return -1;
         rc = texture_file_bytes(tex, name, png.width, png.height, png.rgb, err);
         png_free(&png);
+        return rc;
+    }
+    if (bmp_is(head, len)) {
+        BmpImage bmp;
+        if (bmp_parse(name, head, len, &bmp, err) != 0)
+            return -1;
+        rc = texture_file_bytes(tex, name, bmp.width, bmp.height, bmp.rgb, err);
+        bmp_free(&bmp);
         return rc;
     }
     {

@@ -210,15 +210,21 @@ if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/
     done
 fi
 
-# Seed 001's scenes: its example (four JPEG textures, 800 x 800), every
-# material kind (scenes/materials.txt), and a texture-heavy field made
-# here: 200 cubes and 200 spheres under JPEG textures, 1920 x 1080. Reading (JPEG decoding included) and rendering apart,
-# medians of RUNS on all threads.
+# Seed 001's scenes: its example by its program's model at its defaults
+# (500 x 500, then 1000 x 1000 as its report's render: 4 samples a pixel,
+# 10 occlusion and 10 gathering rays a point; four JPEG textures), every
+# material kind (scenes/materials.txt, the physical model), and a
+# texture-heavy field made here: 200 cubes and 200 spheres under JPEG
+# textures, 1920 x 1080, the physical model at one sample a pixel. Reading
+# (JPEG decoding included) and rendering apart, medians of RUNS on all
+# threads.
 : >"$DIR/seed001"
 if [ "${BENCH_SEED001:-1}" = 1 ]; then
     tex=$(pwd)/scenes/textures
     awk -v tex="$tex" 'BEGIN {
         print "c Camera 0 9 -22 0 0 4 45 1920 1080"
+        print "c Model physical"
+        print "c Samples 1"
         split("Wallpaper carrelage painting marble", t, " ")
         for (k = 1; k <= 4; k++)
             printf "m t%d MATTE 1 1 1 0 0.3 30 %s/%s.jpg\n", k, tex, t[k]
@@ -232,12 +238,17 @@ if [ "${BENCH_SEED001:-1}" = 1 ]; then
         print "l DirectionLight -0.5 -1 0.7 1 1 1 1"
         print "l PointLight 0 4 2 1 0.9 0.8 20 30"
     }' >"$DIR/textured.txt"
-    for f in scenes/seed001.txt scenes/materials.txt "$DIR/textured.txt"; do
+    for run in scenes/seed001.txt scenes/seed001.txt:1000x1000 scenes/materials.txt \
+        "$DIR/textured.txt"; do
+        f=${run%%:*}
+        size=
+        [ "$f" = "$run" ] || size="--size ${run#*:}"
         : >"$DIR/times"
         : >"$DIR/reads"
         i=0
         while [ $i -lt "$RUNS" ]; do
-            "$RT" -v -j "$ALL" "$f" "$DIR/seed.ppm" 2>"$DIR/log" || exit 1
+            # shellcheck disable=SC2086
+            "$RT" -v -j "$ALL" $size "$f" "$DIR/seed.ppm" 2>"$DIR/log" || exit 1
             sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
             sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log" >>"$DIR/reads"
             i=$((i + 1))
@@ -387,12 +398,15 @@ rm -f "$DIR/kernel.ppm"
         echo "## Seed 001's scenes"
         echo
         echo "Its example scene (scenes/seed001.txt: squares, a cube, four infinite"
-        echo "cylinders, an infinite cone, a metallic ball, four JPEG textures), every"
-        echo "material kind (scenes/materials.txt: 4 samples per pixel, glass, a"
-        echo "ranged point light), and a texture-heavy field generated here"
-        echo "(textured.txt: 200 cubes and 200 spheres under the four JPEG textures"
-        echo "on a textured plane). Reading includes decoding the JPEGs; medians of"
-        echo "$RUNS runs on $ALL threads."
+        echo "cylinders, a cone, a metallic ball, four JPEG textures) by its program's"
+        echo "model at its defaults (4 samples a pixel, 10 occlusion and 10 gathering"
+        echo "rays a point), at 500 x 500 and at the 1000 x 1000 of its report's render"
+        echo "(target: 15 s on 2 threads); every material kind (scenes/materials.txt:"
+        echo "4 samples per pixel, glass, a ranged point light, the physical model),"
+        echo "and a texture-heavy field generated here (textured.txt: 200 cubes and"
+        echo "200 spheres under the four JPEG textures on a textured plane, one sample"
+        echo "a pixel). Reading includes decoding the JPEGs; medians of $RUNS runs on"
+        echo "$ALL threads."
         echo
         echo "| scene | pixels | read | render |"
         echo "|-------|--------|------|--------|"
