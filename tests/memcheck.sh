@@ -59,6 +59,10 @@ run "MPL scene, JPEG textures, every material, JPEG out" 0 "$RT" -q -j 2 \
     scenes/.memcheck-materials.txt "$T/materials.jpg"
 run "ambient occlusion and global illumination" 0 "$RT" -q -j 2 --ao 4 --gi 3 --gi-bounces 2 \
     scenes/.memcheck-indirect.txt "$T/indirect.ppm"
+run "seed 001's model: its example, textures, occlusion, gathering" 0 "$RT" -q -j 2 \
+    --size 16x16 scenes/seed001.txt "$T/seed001.png"
+run "raytrace-diff, a BMP and --box" 0 "$DIFF" -q --box 2x1 tests/fuzz/corpus/picture/rgb24.bmp \
+    tests/fuzz/corpus/picture/palette8.bmp
 run "a tile" 0 "$RT" -q -j 2 --tile 1/2 scenes/.memcheck-glass.txt "$T/tile-1.ppm"
 "$RT" -q --tile 2/2 scenes/.memcheck-glass.txt "$T/tile-2.png"
 run "raytrace-merge" 0 "$MERGE" -q "$T/merged.png" "$T/tile-2.png" "$T/tile-1.ppm"

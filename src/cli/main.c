@@ -208,10 +208,10 @@ static void main_buffers(const Scene *scene)
         }
 }
 
-/* Prints the -v summary: size, threads, rays by kind, time, speed, peak
- * memory. */
-static void main_statistics(const Image *img, const RenderOptions *ropts, int threads,
-                            const RayCounts *c, double seconds)
+/* Prints the -v summary: size, threads, rays by kind, the model when it
+ * is seed 001's, time, speed, peak memory. */
+static void main_statistics(const Image *img, const RenderOptions *ropts, SceneModel model,
+                            int threads, const RayCounts *c, double seconds)
 {
     unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction +
                              c->occlusion + c->gather;
@@ -227,6 +227,10 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, int th
             "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
             "%s%llu in all\n",
             c->primary, c->shadow, c->reflection, c->refraction, indirect, all);
+    if (model == SCENE_MODEL_SEED001)
+        fprintf(stderr, "raytrace: seed 001's model: its program's light, occlusion and "
+                        "gathering; gamma %g\n",
+                SEED001_GAMMA);
     if (ropts->indirect.ao_samples > 0)
         fprintf(stderr, "raytrace: ambient occlusion: %d rays a point, distance %g\n",
                 ropts->indirect.ao_samples, ropts->indirect.ao_distance);
@@ -576,7 +580,7 @@ static int main_render(const Options *opts)
                     scene.accel->node_count, scene.accel->depth, accel_time,
                     scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
         main_buffers(&scene);
-        main_statistics(&img, &ropts, threads, &counts, render_time);
+        main_statistics(&img, &ropts, scene.model, threads, &counts, render_time);
         fprintf(stderr, "raytrace: wrote the image in %.3f s\n", write_time);
     } else if (!opts->quiet && isatty(STDERR_FILENO)) {
         fprintf(stderr,
