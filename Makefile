@@ -2,7 +2,8 @@
 #
 # make              build ./raytrace, ./raytrace-diff and ./raytrace-merge
 #                   (with OpenMP when the compiler has it)
-# make test         build and run every test (alias: make check)
+# make test         build and run the quick suite (under a minute on 2 cores)
+# make check        build and run every suite in full (CI runs it)
 # make OPENMP=0     build without OpenMP
 # make REAL=float   build with single-precision geometry (not exact: see
 #                   docs/trade.md); $(BUILD)/raytrace-float is that build too
@@ -110,10 +111,14 @@ raytrace: $(RAYTRACE_OBJ) $(LIB_OBJ)
 $(BUILD)/unit: $(TEST_OBJ) $(LIB_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-raytrace-diff: $(BUILD)/cli/diff_main.o $(LIB_OBJ)
+# raytrace-diff and raytrace-merge need images alone: the layers below
+# geometry (link-time optimisation then reads a third of the objects).
+TOOL_OBJ := $(filter $(BUILD)/base/% $(BUILD)/math/% $(BUILD)/image/%,$(LIB_OBJ))
+
+raytrace-diff: $(BUILD)/cli/diff_main.o $(TOOL_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-raytrace-merge: $(BUILD)/cli/merge_main.o $(LIB_OBJ)
+raytrace-merge: $(BUILD)/cli/merge_main.o $(TOOL_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The fault injector tests/faults.sh preloads (test-only, glibc): built with
@@ -134,20 +139,56 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
-# The unit tests, the fuzz targets on their seeds and past crashes, then the
-# command-line and render tests on the real binary.
-test: raytrace raytrace-diff raytrace-merge $(BUILD)/inject.so $(BUILD)/unit $(FUZZ_TARGETS:%=$(BUILD)/replay/%) $(BUILD)/raytrace-float
+# make test, README's second command: the quick suite, at most a minute on
+# two cores from a fresh clone, build included: the unit tests, the golden
+# render of every example scene (and the course scene against its
+# reference), the command line and its errors, and a sample of each longer
+# suite (tiles, injected faults, JPEGs). make check: every suite in full,
+# the fuzz targets replaying their inputs and the single-precision build
+# besides (CI runs it). Both run the suites side by side, one a processor
+# unless make -jN says otherwise; each suite in its own temporary folder,
+# its output shown whole when it ends (-Otarget).
+NPROC := $(shell nproc 2>/dev/null || echo 2)
+TEST_JOBS = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+TEST_LEVEL ?= full
+QUICK_SUITES := unit golden cli hostile install layers report jpeg tiles faults
+FULL_SUITES := $(QUICK_SUITES) replay
+.PHONY: $(FULL_SUITES:%=test-%)
+
+test:
+	@$(MAKE) --no-print-directory $(TEST_JOBS) -Otarget TEST_LEVEL=quick \
+		$(QUICK_SUITES:%=test-%)
+
+check:
+	@$(MAKE) --no-print-directory $(TEST_JOBS) -Otarget TEST_LEVEL=full \
+		RT_FLOAT=$(BUILD)/raytrace-float $(FULL_SUITES:%=test-%)
+
+# One suite each (make test-NAME runs it alone, in full unless
+# TEST_LEVEL=quick).
+SUITE_ENV = RAYTRACE_TEST_LEVEL=$(TEST_LEVEL)
+test-unit: $(BUILD)/unit
 	$(BUILD)/unit
+test-replay: $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
-	RT_FLOAT=$(BUILD)/raytrace-float sh tests/cli.sh ./raytrace ./raytrace-diff
-	sh tests/hostile.sh ./raytrace
-	sh tests/install.sh
-	sh tests/layers.sh
-	sh tests/jpeg.sh ./raytrace ./raytrace-diff
-	sh tests/tiles.sh ./raytrace ./raytrace-merge
-	sh tests/faults.sh ./raytrace $(BUILD)/inject.so
-	sh tests/report.sh
+test-golden: raytrace raytrace-diff
+	$(SUITE_ENV) sh tests/golden.sh ./raytrace ./raytrace-diff
+test-cli: raytrace raytrace-diff $(RT_FLOAT)
+	$(SUITE_ENV) RT_FLOAT=$(RT_FLOAT) sh tests/cli.sh ./raytrace ./raytrace-diff
+test-hostile: raytrace
+	$(SUITE_ENV) sh tests/hostile.sh ./raytrace
+test-install: raytrace raytrace-diff raytrace-merge
+	$(SUITE_ENV) sh tests/install.sh
+test-layers:
+	$(SUITE_ENV) sh tests/layers.sh
+test-report:
+	$(SUITE_ENV) sh tests/report.sh
+test-jpeg: raytrace raytrace-diff
+	$(SUITE_ENV) sh tests/jpeg.sh ./raytrace ./raytrace-diff
+test-tiles: raytrace raytrace-merge
+	$(SUITE_ENV) sh tests/tiles.sh ./raytrace ./raytrace-merge
+test-faults: raytrace $(BUILD)/inject.so
+	$(SUITE_ENV) sh tests/faults.sh ./raytrace $(BUILD)/inject.so
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
@@ -283,8 +324,6 @@ fuzz-long: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
 
 memcheck: raytrace raytrace-diff raytrace-merge
 	sh tests/memcheck.sh ./raytrace ./raytrace-diff ./raytrace-merge
-
-check: test
 
 clean:
 	rm -rf $(BUILD) raytrace raytrace-diff raytrace-merge

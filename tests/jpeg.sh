@@ -23,6 +23,10 @@
 # Without cjpeg and djpeg (or pamflip) the parts that need them are skipped,
 # saying so, unless RAYTRACE_TEST_TOOLS=required (CI), where that fails.
 #
+# The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) takes a sample of
+# each part: three sources at seven settings, one orientation, two scenes
+# written at two settings, two odd sizes; make check takes them all.
+#
 # Usage: sh tests/jpeg.sh RAYTRACE RAYTRACE-DIFF   (from the repository root)
 
 RT=$1
@@ -58,12 +62,15 @@ if have cjpeg && have djpeg; then
     noise 33 65 "$T/n33.ppm"
     noise 257 131 "$T/n257.ppm"
     images=0
-    for src in render materials n1 n7 n17 n33 n257; do
-        for opts in "-quality 90" "-quality 10" "-quality 50 -sample 1x1" "-quality 100" \
-            "-sample 2x1" "-sample 1x2" "-sample 2x2" "-sample 4x1" "-sample 1x4" \
-            "-sample 4x2" "-sample 2x2,1x1,2x1" "-progressive" "-progressive -sample 1x1" \
-            "-grayscale" "-grayscale -progressive" "-restart 1" "-restart 3b -sample 2x1" \
-            "-optimize" "-smooth 40" "-dct float -quality 95" "-baseline -quality 5"; do
+    sources="render materials n1 n7 n17 n33 n257"
+    settings='-quality 90;-quality 10;-quality 50 -sample 1x1;-quality 100;-sample 2x1;-sample 1x2;-sample 2x2;-sample 4x1;-sample 1x4;-sample 4x2;-sample 2x2,1x1,2x1;-progressive;-progressive -sample 1x1;-grayscale;-grayscale -progressive;-restart 1;-restart 3b -sample 2x1;-optimize;-smooth 40;-dct float -quality 95;-baseline -quality 5'
+    if ! full; then
+        sources="render n7 n33"
+        settings='-quality 90;-sample 2x1;-sample 2x2;-progressive;-grayscale;-restart 1;-optimize'
+    fi
+    for src in $sources; do
+        for opts in $(printf '%s' "$settings" | tr ' ;' '@ '); do
+            opts=$(printf '%s' "$opts" | tr '@' ' ')
             # shellcheck disable=SC2086
             if ! cjpeg $opts -outfile "$T/c.jpg" "$T/$src.ppm" 2>"$T/err"; then
                 fail "cjpeg $opts $src" "$(cat "$T/err")"
@@ -98,8 +105,9 @@ if have cjpeg && have djpeg && have pamflip; then
     cjpeg -quality 95 -outfile "$T/o.jpg" "$T/o.ppm"
     djpeg -rgb -outfile "$T/o-d.ppm" "$T/o.jpg"
     # Orientation 7 (transverse) is pamflip's transpose then half a turn.
-    for o in 2:-leftright 3:-rotate180 4:-topbottom 5:-transpose 6:-cw 7:-transpose,-rotate180 \
-        8:-ccw; do
+    orientations="2:-leftright 3:-rotate180 4:-topbottom 5:-transpose 6:-cw 7:-transpose,-rotate180 8:-ccw"
+    full || orientations="6:-cw"
+    for o in $orientations; do
         { printf '\377\330'; exif "${o%%:*}"; tail -c +3 "$T/o.jpg"; } >"$T/t.jpg"
         flips=${o#*:}
         cp "$T/o-d.ppm" "$T/want.ppm"
@@ -163,12 +171,23 @@ fi
 psnr() { "$DIFF" "$1" "$2" 2>&1 | sed -n 's/.*PSNR: \([0-9.]*\) dB.*/\1/p'; }
 if have djpeg; then
     written=0
-    for src in course lights seed001 materials; do
-        "$RT" -q "scenes/$src.txt" "$T/w-$src.ppm"
-        for opts in "" "--jpeg-subsampling 444" "--jpeg-quality 1" "--jpeg-quality 50" \
-            "--jpeg-quality 100" "--jpeg-quality 100 --jpeg-subsampling 444"; do
+    # Seed 001's example by the physical model: its textures' sharp edges,
+    # without its own model's noise.
+    scenes="course lights seed001 materials"
+    settings=';--jpeg-subsampling 444;--jpeg-quality 1;--jpeg-quality 50;--jpeg-quality 100;--jpeg-quality 100 --jpeg-subsampling 444'
+    if ! full; then
+        scenes="course lights"
+        settings=';--jpeg-quality 100 --jpeg-subsampling 444'
+    fi
+    for src in $scenes; do
+        model=
+        [ "$src" = seed001 ] && model="--model physical"
+        # shellcheck disable=SC2086
+        "$RT" -q $model "scenes/$src.txt" "$T/w-$src.ppm"
+        for opts in $(printf '%s' "$settings" | tr ' ;' '@ ' | sed 's/^ /_ /'); do
+            opts=$(printf '%s' "$opts" | tr '@' ' ' | sed 's/^_$//')
             # shellcheck disable=SC2086
-            "$RT" -q $opts "scenes/$src.txt" "$T/w.jpg" || fail "$src $opts: no JPEG written"
+            "$RT" -q $model $opts "scenes/$src.txt" "$T/w.jpg" || fail "$src $opts: no JPEG written"
             written=$((written + 1))
             if ! djpeg -rgb "$T/w.jpg" >"$T/w-djpeg.ppm" 2>"$T/err" || [ -s "$T/err" ]; then
                 fail "djpeg cannot read our $src $opts" "$(cat "$T/err")"
@@ -191,7 +210,10 @@ if have djpeg; then
     done
     echo "jpeg: $written JPEGs written by raytrace read back by djpeg"
     # Odd sizes, from one pixel to two MCUs and a bit.
-    for size in "1 1" "7 5" "17 9" "33 65"; do
+    sizes="1@1 7@5 17@9 33@65"
+    full || sizes="1@1 17@9"
+    for size in $sizes; do
+        size=$(printf '%s' "$size" | tr '@' ' ')
         set -- $size
         sed "s/ 700 500\$/ $1 $2/" scenes/seed002.txt >"$T/odd.txt"
         for sub in 420 444; do

@@ -10,6 +10,7 @@
 #include "rng.h"
 #include "scene/scale.h"
 #include "scene/scene.h"
+#include "scene/scene_accel.h"
 #include "test.h"
 
 /* Adds n random spheres, triangles, cubes and squares (some of

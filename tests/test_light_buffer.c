@@ -7,6 +7,7 @@
 #include "render/visibility.h"
 #include "rng.h"
 #include "scene/scene.h"
+#include "scene/scene_accel.h"
 #include "test.h"
 
 /* Fills spheres with n random spheres around the origin at scale s, every

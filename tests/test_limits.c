@@ -11,6 +11,7 @@
 #include "image/writer.h"
 #include "math/number.h"
 #include "scene/scene.h"
+#include "scene/scene_accel.h"
 #include "scenefile/course.h"
 #include "scenefile/obj.h"
 #include "test.h"

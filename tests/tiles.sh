@@ -17,6 +17,9 @@
 #     RAYTRACE_TEST_TOOLS=required (CI), where that fails; Slurm installed
 #     on a machine that cannot run its daemons is skipped, saying why.
 #
+# The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) merges two scenes
+# cut 1, 3 and 16 ways and runs the make recipe only; make check runs all.
+#
 # Usage: sh tests/tiles.sh RAYTRACE RAYTRACE-MERGE   (from the repository root)
 
 RT=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -43,8 +46,16 @@ tiles() {
 # --- 1. the merged picture is the whole render ---
 . "$(dirname "$0")/lib.sh"
 resize scenes/course.txt 48 >scenes/.tiles-course.txt
-for case in "course" ".tiles-course" "glass" "focus --spp 4" "textures" "materials" "seed002" \
-    "indirect --ao 3 --gi 2 --gi-bounces 2 --spp 2"; do
+if full; then
+    cases='course;.tiles-course;glass;focus --spp 4;textures;materials;seed002;seed001 --size 48x40;indirect --ao 3 --gi 2 --gi-bounces 2 --spp 2'
+    counts="1 2 3 7 16"
+else
+    cases='.tiles-course;glass'
+    counts="1 3 16"
+fi
+for case in $(printf '%s' "$cases" | tr ' ;' '@ '); do
+    case=$(printf '%s' "$case" | tr '@' ' ')
+    # shellcheck disable=SC2086
     set -- $case
     name=$1
     shift
@@ -59,8 +70,8 @@ for case in "course" ".tiles-course" "glass" "focus --spp 4" "textures" "materia
     opts=$*
     # As many tiles as rows (one row each) where that is quick.
     all=
-    [ "$height" -le 64 ] && all=$height
-    for n in 1 2 3 7 16 $all; do
+    full && [ "$height" -le 64 ] && all=$height
+    for n in $counts $all; do
         for layout in rows bands; do
             # shellcheck disable=SC2086
             tiles "$name" "$n" "$layout" ppm $opts
@@ -200,7 +211,7 @@ make -s -j 4 -f tiles.mk >make.log 2>&1 && cmp -s picture.png whole.png && pass 
 rm -f tile-*.ppm picture.png
 
 # (b) GNU parallel, here and through ssh logins (':' is this machine).
-if have parallel parallel; then
+if full && have parallel parallel; then
     parallel -j 4 raytrace -q -j 1 --tile {}/8 scene.txt tile-{}.ppm ::: 1 2 3 4 5 6 7 8 &&
         raytrace-merge -q picture.png tile-*.ppm && cmp -s picture.png whole.png && pass ||
         fail "GNU parallel recipe"
@@ -213,7 +224,7 @@ if have parallel parallel; then
 fi
 
 # (c) A Slurm job array on a single-node Slurm started here.
-if have sbatch slurm-wlm; then
+if full && have sbatch slurm-wlm; then
     SLURM_CONF=$T/slurm/slurm.conf
     export SLURM_CONF
     mkdir -p "$T/slurm"

@@ -323,19 +323,6 @@ int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
  * -1 (tex released) when memory runs out. */
 int scene_add_texture(Scene *scene, Texture *tex);
 
-/* Returns how many of the scene's shapes are bounded, and so go into the
- * hierarchy: spheres, triangles, cubes and squares. */
-size_t scene_bounded_count(const Scene *scene);
-
-/* Builds the acceleration structure (bvh.h) when the scene has enough
- * bounded shapes to gain from one, with up to threads threads, and moves
- * the spheres of a scene without transparency into its order (each keeps
- * its position among the objects: walks and the file-order loops are for
- * before); returns 0, SCENE_OVER_LIMIT (nothing allocated) when its estimated size
- * would pass the memory limit, or -1 when memory runs out (the scene is
- * then left without one, and still renders). */
-int scene_build_accel(Scene *scene, int threads);
-
 /* Returns the bytes the scene holds: its arrays at their capacity, its
  * textures' texels and its hierarchy. */
 size_t scene_memory(const Scene *scene);

@@ -16,6 +16,17 @@
  * *err describing the fault in the file (*tex then owns nothing). */
 int texture_file_load(Texture *tex, const char *path, size_t max_bytes, Error *err);
 
+/* Returns, newly allocated, where the texture file name (len bytes, not
+ * NUL-terminated) named by the scene file scene_name is: beside the scene
+ * file, else in the first of its nfolders folders (relative to the scene
+ * file's folder, each ending in '/') that has it; the search stops at a
+ * file that opens, or that fails to open for another reason than not
+ * being there (ENOENT, ENOTDIR), so that loading it reports that reason.
+ * When none has it: the path beside the scene. An absolute name is taken
+ * as it is. NULL when memory runs out. */
+char *texture_file_find(const char *scene_name, const char *name, size_t len,
+                        const char *const *folders, size_t nfolders);
+
 /* What texture_file_add() returns when the file cannot be used. */
 #define TEXTURE_FILE_FAULT (-3)
 

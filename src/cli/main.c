@@ -30,6 +30,7 @@
 #include "render/render.h"
 #include "render/seed001.h"
 #include "scene/scene.h"
+#include "scene/scene_accel.h"
 #include "scenefile/load.h"
 #include "scenefile/save.h"
 

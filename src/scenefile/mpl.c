@@ -20,7 +20,6 @@
  */
 #include "scenefile/mpl.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -196,59 +195,20 @@ static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const ch
     return -1;
 }
 
-/* Returns the path of texture token t: beside the scene file or, when it
- * is not there, in the folders seed 001's program looks in: Textures
- * beside the scene (or textures, the same on a system that ignores case),
- * and Textures beside the scene's folder (its repository keeps Scene/ and
- * Textures/ side by side). The search stops at the first candidate that
- * opens or fails for another reason than not being there (ENOENT,
- * ENOTDIR): loading it then reports that reason. When none is there, the
- * path beside the scene. NULL with the fault recorded when memory runs
- * out. */
+/* Returns the path of texture token t, as texture_file_find() finds it
+ * from the scene's folder in the folders seed 001's program looks in:
+ * Textures beside the scene (or textures, the same on a system that
+ * ignores case), and Textures beside the scene's folder (its repository
+ * keeps Scene/ and Textures/ side by side); NULL with the fault recorded
+ * when memory runs out. */
 static char *mpl_texture_path(Mpl *M, const Token *t)
 {
-    static const char *const folders[] = {"", "Textures/", "textures/", "../Textures/"};
-    char *first = NULL;
+    static const char *const folders[] = {"Textures/", "textures/", "../Textures/"};
+    char *path = texture_file_find(M->lex.name, t->text, t->len, folders, 3);
 
-    for (size_t i = 0; i < sizeof folders / sizeof folders[0]; i++) {
-        size_t k = strlen(folders[i]), n = k + t->len;
-        char *name, *path;
-        Token in = *t;
-        FILE *f;
-
-        if (i > 0 && t->text[0] == '/')
-            break;
-        name = malloc(n + 1);
-        if (!name) {
-            free(first);
-            error_set(M->lex.err, M->lex.name, "out of memory");
-            return NULL;
-        }
-        memcpy(name, folders[i], k);
-        memcpy(name + k, t->text, t->len);
-        name[n] = '\0';
-        in.text = name;
-        in.len = n;
-        path = lex_path(&M->lex, &in);
-        free(name);
-        if (!path) {
-            free(first);
-            return NULL;
-        }
-        errno = 0;
-        f = fopen(path, "rb");
-        if (f || (errno != ENOENT && errno != ENOTDIR)) {
-            if (f)
-                fclose(f);
-            free(first);
-            return path;
-        }
-        if (first)
-            free(path);
-        else
-            first = path;
-    }
-    return first;
+    if (!path)
+        error_set(M->lex.err, M->lex.name, "out of memory");
+    return path;
 }
 
 /* Sets what the material kind `model` shades with under the physical

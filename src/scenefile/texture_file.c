@@ -1,6 +1,8 @@
 /* texture_file.c: textures from image files (see texture_file.h). */
 #include "scenefile/texture_file.h"
 
+#include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -109,3 +111,57 @@ int texture_file_add(Scene *scene, const char *path, Error *err)
         return TEXTURE_FILE_FAULT;
     return scene_add_texture(scene, &tex);
 }
+
+/* Returns, newly allocated, the path of name (len bytes) in folder, which
+ * is relative to the scene file scene_name's folder (folder "" for that
+ * folder itself), or name as it is when absolute; NULL when memory runs
+ * out. */
+static char *texture_file_path(const char *scene_name, const char *folder, const char *name,
+                               size_t len)
+{
+    const char *slash = strrchr(scene_name, '/');
+    size_t dir = name[0] == '/' || !slash ? 0 : (size_t)(slash - scene_name) + 1;
+    size_t k = name[0] == '/' ? 0 : strlen(folder);
+    char *path = malloc(dir + k + len + 1);
+
+    if (!path)
+        return NULL;
+    memcpy(path, scene_name, dir);
+    memcpy(path + dir, folder, k);
+    memcpy(path + dir + k, name, len);
+    path[dir + k + len] = '\0';
+    return path;
+}
+
+char *texture_file_find(const char *scene_name, const char *name, size_t len,
+                        const char *const *folders, size_t nfolders)
+{
+    char *first = texture_file_path(scene_name, "", name, len);
+
+    if (!first)
+        return NULL;
+    for (size_t i = 0; i <= nfolders; i++) {
+        char *path = i == 0 ? first : texture_file_path(scene_name, folders[i - 1], name, len);
+        FILE *f;
+        if (!path) {
+            free(first);
+            return NULL;
+        }
+        errno = 0;
+        f = fopen(path, "rb");
+        if (f || (errno != ENOENT && errno != ENOTDIR)) {
+            /* There, or there but unreadable: loading it says why. */
+            if (f)
+                fclose(f);
+            if (path != first)
+                free(first);
+            return path;
+        }
+        if (path != first)
+            free(path);
+        if (name[0] == '/')
+            break;
+    }
+    return first;
+}
+

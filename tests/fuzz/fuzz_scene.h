@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "render/render.h"
+#include "scene/scene_accel.h"
 #include "scenefile/load.h"
 
 static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)

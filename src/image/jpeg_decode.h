@@ -1,0 +1,116 @@
+/*
+ * jpeg_decode.h: the JPEG reader's state and the steps that share it, one
+ * module each (private to image/; jpeg.h is the reader's contract):
+ *   jpeg_markers.c  the markers from SOI to EOI: tables (DQT, DHT), the
+ *                   frame (SOF), restart intervals, Exif, scan headers
+ *   jpeg_entropy.c  a scan's entropy-coded data: the bit reader, Huffman
+ *                   decoding, sequential and progressive blocks, restarts
+ *   jpeg_idct.c     coefficients to pixels: the inverse DCT, upsampling
+ *                   of subsampled components, YCbCr to RGB
+ *   jpeg.c          the whole: jpeg_parse() drives them, turns the picture
+ *                   as Exif says, and reports faults
+ * (libjpeg-turbo cuts its decoder at the same seams: jdmarker, jdhuff and
+ * jdphuff, jidctint, jdsample and jdcolor.)
+ */
+#ifndef RAYTRACE_JPEG_DECODE_H
+#define RAYTRACE_JPEG_DECODE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/error.h"
+
+enum {
+    JPEG_MAX_SIDE = 65535, /* the frame header's 16 bits */
+    JPEG_FAST_BITS = 9     /* codes this long or shorter are looked up at once */
+};
+
+/* A Huffman table, as decoding needs it. */
+typedef struct {
+    uint8_t fast_len[1 << JPEG_FAST_BITS]; /* code length of a 9-bit prefix, 0: longer */
+    uint8_t fast_sym[1 << JPEG_FAST_BITS]; /* its symbol */
+    int32_t maxcode[18];                   /* largest code of each length, -1: none */
+    int32_t delta[17];                     /* symbol index of a code = code + delta */
+    uint8_t symbols[256];
+    int defined;
+} JpegHuffman;
+
+/* A component of the frame and its decoding state. */
+typedef struct {
+    int id, h, v, tq;       /* from the frame header */
+    int width, height;      /* its samples: ceil(X h / hmax), ceil(Y v / vmax) */
+    int bw, bh;             /* blocks across and down, whole MCUs */
+    int16_t *coef;          /* 64 per block, natural order, as decoded */
+    uint16_t quant[64];     /* the table, latched at its first scan */
+    int latched;
+    int dc, ac;             /* the current scan's tables */
+    int pred;               /* DC predictor */
+    int seen;               /* in some scan */
+    unsigned char *plane;   /* samples, width x height, after the IDCT */
+} JpegComponent;
+
+/* The decoder's state. */
+typedef struct {
+    const char *name;
+    Error *err;
+    const uint8_t *data;
+    size_t len, pos;
+    size_t max_bytes;
+    /* The frame. */
+    int width, height, ncomp, progressive, frame;
+    int hmax, vmax, mcux, mcuy;
+    JpegComponent comp[4];
+    uint16_t qt[4][64];
+    int qt_defined[4];
+    JpegHuffman dc[4], ac[4];
+    int restart;            /* MCUs between restart markers, 0: none */
+    int adobe, transform;   /* an Adobe marker and its colour transform */
+    int orientation;        /* Exif: 1 to 8 */
+    /* The entropy-coded data of a scan. */
+    uint32_t bits;          /* bits not yet used, the next at bit 31 */
+    int nbits;
+    int marker;             /* a marker met in the data (then zeros follow) */
+    int pad;                /* zero bits fed past a marker or the end */
+    int eobrun;
+} Jpeg;
+
+/* The scan being decoded. */
+typedef struct {
+    int n;                 /* components in it */
+    JpegComponent *c[4];
+    int ss, se, ah, al;    /* spectral selection and successive approximation */
+} JpegScan;
+
+/* Reads a big-endian 16-bit number at p (which must be there). */
+static inline int jpeg_u16(const uint8_t *p)
+{
+    return p[0] << 8 | p[1];
+}
+
+/* Records a fault "at byte OFFSET: MESSAGE" (fmt with one %s, what);
+ * returns -1 (jpeg.c). */
+int jpeg_fail(Jpeg *J, const char *fmt, const char *what);
+
+/* Records that the file uses something this reader does not; returns -1
+ * (jpeg.c). */
+int jpeg_unsupported(Jpeg *J, const char *what);
+
+/* Reads the markers from SOI to EOI (or the data's end after a scan),
+ * decoding every scan into its components' coefficients; returns 0 or -1
+ * with the fault recorded (jpeg_markers.c). */
+int jpeg_markers(Jpeg *J);
+
+/* Decodes the entropy-coded data of scan s, J at its first byte, and
+ * leaves J at the marker after it; returns 0 or -1 (jpeg_entropy.c). */
+int jpeg_scan_data(Jpeg *J, const JpegScan *s);
+
+/* Turns component c's coefficients into its plane of samples; returns 0
+ * or -1 when memory runs out (jpeg_idct.c). */
+int jpeg_component_samples(Jpeg *J, JpegComponent *c);
+
+/* Writes the frame's pixels as 8-bit RGB into rgb (width x height x 3),
+ * upsampling and converting the components; returns 0 or -1
+ * (jpeg_idct.c). */
+int jpeg_pixels(Jpeg *J, unsigned char *rgb);
+
+#endif

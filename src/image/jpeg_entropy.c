@@ -1,0 +1,313 @@
+/* jpeg_entropy.c: a scan's entropy-coded data, Huffman-decoded into its
+ * components' coefficients, sequential and progressive (see jpeg_decode.h;
+ * ITU-T T.81, annexes F and G). */
+#include <stdint.h>
+#include <string.h>
+
+#include "jpeg_decode.h"
+#include "jpeg_tables.h"
+
+/* Tops up J's bit buffer to at least 25 bits, zeros once the data ends or
+ * reaches a marker (T.81, F.2.2.5: the decoder pads with zeros). */
+static void jpeg_fill(Jpeg *J)
+{
+    while (J->nbits <= 24) {
+        uint32_t byte = 0;
+        if (J->marker || J->pos >= J->len)
+            J->pad += 8;
+        if (!J->marker && J->pos < J->len) {
+            byte = J->data[J->pos];
+            if (byte == 0xFF) {
+                uint8_t next = J->pos + 1 < J->len ? J->data[J->pos + 1] : 0xD9;
+                if (next == 0x00) {
+                    J->pos += 2; /* a stuffed zero */
+                } else if (next == 0xFF) {
+                    J->pos++; /* fill bytes before a marker */
+                    continue;
+                } else {
+                    J->marker = next; /* stop here; the marker is read later */
+                    J->pad += 8;
+                    byte = 0;
+                }
+            } else {
+                J->pos++;
+            }
+        }
+        J->bits |= byte << (24 - J->nbits);
+        J->nbits += 8;
+    }
+}
+
+/* Returns the next n bits (0 <= n <= 16). */
+static int jpeg_bits(Jpeg *J, int n)
+{
+    int v;
+
+    if (n == 0)
+        return 0;
+    jpeg_fill(J);
+    v = (int)(J->bits >> (32 - n));
+    J->bits <<= n;
+    J->nbits -= n;
+    return v;
+}
+
+/* Returns the next n bits as a signed value: T.81's EXTEND. */
+static int jpeg_signed(Jpeg *J, int n)
+{
+    int v = jpeg_bits(J, n);
+
+    return n && v < 1 << (n - 1) ? v - (1 << n) + 1 : v;
+}
+
+/* Decodes a symbol with table h; returns it, or -1 at a bad code. */
+static int jpeg_symbol(Jpeg *J, const JpegHuffman *h)
+{
+    int peek, len;
+    int32_t code;
+
+    jpeg_fill(J);
+    peek = (int)(J->bits >> (32 - JPEG_FAST_BITS));
+    len = h->fast_len[peek];
+    if (len) {
+        J->bits <<= len;
+        J->nbits -= len;
+        return h->fast_sym[peek];
+    }
+    code = (int32_t)(J->bits >> (32 - JPEG_FAST_BITS));
+    for (len = JPEG_FAST_BITS + 1; len <= 16; len++) {
+        code = (int32_t)(J->bits >> (32 - len));
+        if (code <= h->maxcode[len])
+            break;
+    }
+    if (len > 16)
+        return -1;
+    J->bits <<= len;
+    J->nbits -= len;
+    return h->symbols[(code + h->delta[len]) & 0xFF];
+}
+
+/* ---- Markers ---- */
+
+/* Decodes one block of a sequential scan into blk. */
+static int jpeg_block(Jpeg *J, JpegComponent *c, int16_t *blk)
+{
+    int t = jpeg_symbol(J, &J->dc[c->dc]);
+
+    if (t < 0 || t > 11)
+        return jpeg_fail(J, "bad Huffman code in a DC coefficient%s", NULL);
+    c->pred += jpeg_signed(J, t);
+    blk[0] = (int16_t)c->pred;
+    for (int k = 1; k < 64;) {
+        int rs = jpeg_symbol(J, &J->ac[c->ac]), r, s;
+        if (rs < 0)
+            return jpeg_fail(J, "bad Huffman code in an AC coefficient%s", NULL);
+        r = rs >> 4;
+        s = rs & 15;
+        if (s == 0) {
+            if (r != 15)
+                break;
+            k += 16;
+            continue;
+        }
+        k += r;
+        if (k > 63)
+            return jpeg_fail(J, "an AC coefficient beyond the block's 64%s", NULL);
+        blk[jpeg_zigzag[k++]] = (int16_t)jpeg_signed(J, s);
+    }
+    return 0;
+}
+
+/* Decodes one block of a progressive DC scan. */
+static int jpeg_dc_progressive(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t *blk)
+{
+    if (s->ah == 0) {
+        int t = jpeg_symbol(J, &J->dc[c->dc]);
+        if (t < 0 || t > 11)
+            return jpeg_fail(J, "bad Huffman code in a DC coefficient%s", NULL);
+        c->pred += jpeg_signed(J, t);
+        blk[0] = (int16_t)(c->pred * (1 << s->al));
+    } else if (jpeg_bits(J, 1)) {
+        blk[0] = (int16_t)(blk[0] | 1 << s->al);
+    }
+    return 0;
+}
+
+/* Decodes one block of a progressive AC scan's first pass. */
+static int jpeg_ac_first(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t *blk)
+{
+    if (J->eobrun > 0) {
+        J->eobrun--;
+        return 0;
+    }
+    for (int k = s->ss; k <= s->se;) {
+        int rs = jpeg_symbol(J, &J->ac[c->ac]), r, z;
+        if (rs < 0)
+            return jpeg_fail(J, "bad Huffman code in an AC coefficient%s", NULL);
+        r = rs >> 4;
+        z = rs & 15;
+        if (z == 0) {
+            if (r < 15) { /* an end-of-band run of 2^r + bits - 1 more blocks */
+                J->eobrun = (1 << r) - 1 + jpeg_bits(J, r);
+                break;
+            }
+            k += 16;
+            continue;
+        }
+        k += r;
+        if (k > 63)
+            return jpeg_fail(J, "an AC coefficient beyond the block's 64%s", NULL);
+        blk[jpeg_zigzag[k++]] = (int16_t)(jpeg_signed(J, z) * (1 << s->al));
+    }
+    return 0;
+}
+
+/* Adds the next correction bit to the non-zero coefficient *x of a
+ * refinement pass. */
+static void jpeg_correct(Jpeg *J, int16_t *x, int bit)
+{
+    if (jpeg_bits(J, 1) && (*x & bit) == 0)
+        *x = (int16_t)(*x >= 0 ? *x + bit : *x - bit);
+}
+
+/* Decodes one block of a progressive AC scan's refinement (T.81,
+ * G.1.2.3): new coefficients of magnitude 1 << al, and a correction bit
+ * for each that is already non-zero. */
+static int jpeg_ac_refine(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t *blk)
+{
+    int bit = 1 << s->al, k = s->ss;
+
+    if (J->eobrun == 0) {
+        for (; k <= s->se; k++) {
+            int rs = jpeg_symbol(J, &J->ac[c->ac]), r, value = 0;
+            if (rs < 0)
+                return jpeg_fail(J, "bad Huffman code in an AC refinement%s", NULL);
+            r = rs >> 4;
+            if ((rs & 15) != 0) {
+                if ((rs & 15) != 1)
+                    return jpeg_fail(J, "a refinement's new coefficient is not 1 or -1%s", NULL);
+                value = jpeg_bits(J, 1) ? bit : -bit;
+            } else if (r != 15) {
+                J->eobrun = (1 << r) + jpeg_bits(J, r);
+                break;
+            }
+            /* Skip r zero coefficients, correcting the non-zero ones on the
+             * way; the new one goes in the next zero. */
+            for (; k <= s->se; k++) {
+                int16_t *x = &blk[jpeg_zigzag[k]];
+                if (*x != 0) {
+                    jpeg_correct(J, x, bit);
+                } else {
+                    if (r == 0)
+                        break;
+                    r--;
+                }
+            }
+            if (value && k <= s->se)
+                blk[jpeg_zigzag[k]] = (int16_t)value;
+        }
+    }
+    if (J->eobrun > 0) {
+        for (; k <= s->se; k++) {
+            int16_t *x = &blk[jpeg_zigzag[k]];
+            if (*x != 0)
+                jpeg_correct(J, x, bit);
+        }
+        J->eobrun--;
+    }
+    return 0;
+}
+
+/* Decodes the block at (bx, by) of component c in scan s. */
+static int jpeg_decode_block(Jpeg *J, const JpegScan *s, JpegComponent *c, int bx, int by)
+{
+    int16_t *blk = c->coef + 64 * ((size_t)by * (size_t)c->bw + (size_t)bx);
+
+    if (!J->progressive)
+        return jpeg_block(J, c, blk);
+    if (s->ss == 0)
+        return jpeg_dc_progressive(J, s, c, blk);
+    return s->ah == 0 ? jpeg_ac_first(J, s, c, blk) : jpeg_ac_refine(J, s, c, blk);
+}
+
+/* Says, recording the fault, whether the scan's data ran out: bits past a
+ * marker or the file's end were decoded (a truncated or damaged file). */
+static int jpeg_ran_out(Jpeg *J)
+{
+    if (J->pad <= J->nbits)
+        return 0;
+    jpeg_fail(J, "%s", J->pos >= J->len ? "the file ends inside the image data (truncated)"
+                                        : "the image data ends early, at a marker (damaged)");
+    return 1;
+}
+
+/* At a restart interval's end: the RSTn marker, then fresh predictors and
+ * bits. A missing marker is passed over (the data is decoded on). */
+static void jpeg_restart(Jpeg *J, const JpegScan *s)
+{
+    J->bits = 0;
+    J->nbits = 0;
+    J->pad = 0;
+    if (J->marker >= 0xD0 && J->marker <= 0xD7) {
+        J->pos += 2;
+        J->marker = 0;
+    }
+    for (int i = 0; i < s->n; i++)
+        s->c[i]->pred = 0;
+    J->eobrun = 0;
+}
+
+/* Decodes the entropy-coded data of scan s. */
+int jpeg_scan_data(Jpeg *J, const JpegScan *s)
+{
+    long mcus, todo;
+    int across;
+
+    J->bits = 0;
+    J->nbits = 0;
+    J->marker = 0;
+    J->pad = 0;
+    J->eobrun = 0;
+    for (int i = 0; i < s->n; i++)
+        s->c[i]->pred = 0;
+    if (s->n == 1) { /* not interleaved: the component's own blocks */
+        JpegComponent *c = s->c[0];
+        across = (c->width + 7) / 8;
+        mcus = (long)across * ((c->height + 7) / 8);
+    } else {
+        across = J->mcux;
+        mcus = (long)J->mcux * J->mcuy;
+    }
+    todo = J->restart ? J->restart : mcus;
+    for (long m = 0; m < mcus; m++) {
+        int mx = (int)(m % across), my = (int)(m / across);
+        if (todo == 0) {
+            if (jpeg_ran_out(J))
+                return -1;
+            jpeg_restart(J, s);
+            todo = J->restart;
+        }
+        todo--;
+        if (s->n == 1) {
+            if (jpeg_decode_block(J, s, s->c[0], mx, my) != 0)
+                return -1;
+            continue;
+        }
+        for (int i = 0; i < s->n; i++) {
+            JpegComponent *c = s->c[i];
+            for (int y = 0; y < c->v; y++)
+                for (int x = 0; x < c->h; x++)
+                    if (jpeg_decode_block(J, s, c, mx * c->h + x, my * c->v + y) != 0)
+                        return -1;
+        }
+    }
+    if (jpeg_ran_out(J))
+        return -1;
+    /* Move to the marker after the data. */
+    while (J->pos < J->len && !(J->data[J->pos] == 0xFF && J->pos + 1 < J->len &&
+                                J->data[J->pos + 1] != 0x00 &&
+                                !(J->data[J->pos + 1] >= 0xD0 && J->data[J->pos + 1] <= 0xD7) &&
+                                J->data[J->pos + 1] != 0xFF))
+        J->pos++;
+    return 0;
+}

@@ -1,0 +1,130 @@
+/* scene_accel.c: the scene's structures for fast queries, built once it
+ * is read (see scene_accel.h). */
+#include "scene/scene_accel.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "accel/bvh.h"
+#include "accel/light_buffer.h"
+
+/* Returns the larger of m and the largest magnitude of p's coordinates. */
+static real scene_farther(real m, Vec3 p)
+{
+    real x = fabs(p.x), y = fabs(p.y), z = fabs(p.z);
+
+    m = x > m ? x : m;
+    m = y > m ? y : m;
+    return z > m ? z : m;
+}
+
+/* Returns the hierarchy's reach (bvh.h): the largest coordinate of the
+ * camera, its screen, the lights and the unbounded shapes. */
+static real scene_reach(const Scene *scene)
+{
+    const Camera *cam = &scene->camera;
+    real m = scene_farther(scene_farther(scene_farther(0, cam->eye), cam->top_left),
+                           vec3_add(cam->top_left, vec3_add(cam->u, cam->v)));
+
+    for (size_t i = 0; i < scene->light_count; i++)
+        m = scene_farther(m, scene->lights[i].position);
+    for (size_t i = 0; i < scene->plane_count; i++)
+        m = scene_farther(m, scene->planes[i].point);
+    for (size_t i = 0; i < scene->cylinder_count; i++)
+        m = scene_farther(m, scene->cylinders[i].centre);
+    for (size_t i = 0; i < scene->cone_count; i++)
+        m = scene_farther(scene_farther(m, scene->cones[i].base), scene->cones[i].apex);
+    return m;
+}
+
+size_t scene_bounded_count(const Scene *scene)
+{
+    return scene->sphere_count + scene->triangle_count + scene->cube_count + scene->square_count;
+}
+
+enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
+
+/* Returns the bytes each of `buffers` light buffers may take: a share of
+ * what the hierarchy's build held and gave back (so that they do not raise
+ * the peak), or SCENE_BUFFER_FLOOR if more, within the memory limit. */
+static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
+{
+    size_t share = bvh_build_scratch(scene_bounded_count(scene)) / buffers;
+    size_t left = scene_memory_left(scene);
+
+    share = share > SCENE_BUFFER_FLOOR ? share : SCENE_BUFFER_FLOOR;
+    return share < left ? share : left;
+}
+
+/* Builds the light buffers of a scene of spheres alone (light_buffer.h):
+ * around a pinhole eye for the primary rays, and around each point light
+ * for the shadow rays of an opaque scene (a transparent one's shadow rays
+ * multiply transparencies, which the hierarchy lists), when the image
+ * has at least two pixels a sphere. Where a buffer would
+ * not fit its budget or pay, the rays walk the hierarchy: the answers are
+ * the same. */
+static void scene_build_buffers(Scene *scene, int threads)
+{
+    size_t buffers = 0;
+    size_t pixels = (size_t)scene->camera.width * (size_t)scene->camera.height;
+
+    /* A buffer's build reads every sphere five times; the rays it saves
+     * come from the pixels: on fields of 10^5 spheres it loses 9% of the
+     * time at 1.3 pixels a sphere, breaks even at 2.3 and gains from there
+     * (docs/log.md). */
+    if (scene->kinds != 1u << SHAPE_SPHERE || pixels / 2 < scene->sphere_count)
+        return;
+    buffers += scene->camera.aperture == 0;
+    for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)
+        buffers += !scene->lights[i].distant;
+    if (buffers == 0)
+        return;
+    /* Each budget is taken when its buffer is built: the memory left
+     * shrinks with every buffer. */
+    if (scene->camera.aperture == 0) {
+        scene->eye_buffer = calloc(1, sizeof *scene->eye_buffer);
+        if (scene->eye_buffer &&
+            light_buffer_build(scene->eye_buffer, scene->camera.eye, scene->spheres,
+                               scene->sphere_count, pixels, scene_buffer_budget(scene, buffers),
+                               threads) != 0) {
+            free(scene->eye_buffer);
+            scene->eye_buffer = NULL;
+        }
+    }
+    if (scene->has_transparency)
+        return;
+    scene->light_buffers = calloc(scene->light_count, sizeof *scene->light_buffers);
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        if (!scene->lights[i].distant)
+            (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
+                                     scene->spheres, scene->sphere_count, pixels,
+                                     scene_buffer_budget(scene, buffers), threads);
+}
+
+int scene_build_accel(Scene *scene, int threads)
+{
+    Bvh *bvh;
+    size_t n = scene_bounded_count(scene);
+    BvhShapes shapes = {scene->spheres,  scene->sphere_count, scene->triangles,
+                        scene->triangle_count, scene->cubes, scene->cube_count,
+                        scene->squares,  scene->square_count};
+
+    if (scene->accel || n < BVH_MIN_PRIMITIVES)
+        return 0;
+    if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
+        return SCENE_OVER_LIMIT;
+    bvh = malloc(sizeof *bvh);
+    if (!bvh || bvh_build(bvh, &shapes, scene_reach(scene), threads) != 0) {
+        free(bvh);
+        return -1;
+    }
+    /* Spheres in the leaves' order are read from neighbouring memory. A
+     * transparent scene's keep the file's: shadow rays multiply their
+     * transparencies in that order (visibility.c). Without the memory to
+     * move them, they stay: the answers are the same. */
+    if (!scene->has_transparency)
+        (void)bvh_renumber_spheres(bvh, scene->spheres);
+    scene->accel = bvh;
+    scene_build_buffers(scene, threads);
+    return 0;
+}
