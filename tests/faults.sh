@@ -175,6 +175,68 @@ if [ -n "$INJECT" ]; then
         fi
     done
     echo "faults: $survived injected faults survived, $runtime more refused by the OpenMP runtime"
+
+    # --- 4. the named temporary file (no O_TMPFILE): the same faults, and
+    # exits the program did not choose (the OpenMP runtime's fatal errors
+    # call exit() from its threads), at every call: nothing is left ---
+    exits=0
+    "$RT" -q -j 2 "$T/f.txt" "$T/good.png"
+    for fault in write:ENOSPC fsync:EIO rename:EIO malloc:ENOMEM write:exit malloc:exit; do
+        call=${fault%%:*}
+        rm -rf "$T/o" "$T/count"
+        mkdir "$T/o"
+        RAYTRACE_NO_TMPFILE=1 RAYTRACE_FAULT_COUNT="$T/count" LD_PRELOAD="$INJECT" \
+            "$RT" -q -j 2 "$T/f.txt" "$T/o/out.png"
+        count=$(sed -n "s/^$call //p" "$T/count")
+        step=1
+        full || step=$(((${count:-0} + 3) / 4))
+        n=1
+        while [ "$n" -le "${count:-0}" ]; do
+            rm -rf "$T/o"
+            mkdir "$T/o"
+            printf 'keep me\n' >"$T/o/out.png"
+            RAYTRACE_NO_TMPFILE=1 RAYTRACE_FAULT="$call:$n:${fault#*:}" LD_PRELOAD="$INJECT" \
+                "$RT" -q -j 2 "$T/f.txt" "$T/o/out.png" 2>"$T/err"
+            code=$?
+            left=$(ls -A "$T/o")
+            if [ "$left" != out.png ]; then
+                fail "no O_TMPFILE, $fault at call $n: left $(echo $left)" "$(cat "$T/err")"
+            elif [ $code = 0 ] && cmp -s "$T/o/out.png" "$T/good.png"; then
+                pass
+            elif [ $code = 0 ]; then
+                fail "no O_TMPFILE, $fault at call $n: exit 0 with a wrong image"
+            elif [ "$(cat "$T/o/out.png")" != "keep me" ]; then
+                fail "no O_TMPFILE, $fault at call $n: the old output was changed"
+            else
+                pass
+                exits=$((exits + 1))
+            fi
+            n=$((n + step))
+        done
+    done
+    echo "faults: without unnamed files, $exits injected failures and exits left the old output alone"
+
+    # --- 5. a failed clean-up is said: the rename fails, then the removal
+    # of the named temporary file: the message names it ---
+    rm -rf "$T/o"
+    mkdir "$T/o"
+    printf 'keep me\n' >"$T/o/out.png"
+    RAYTRACE_NO_TMPFILE=1 RAYTRACE_FAULT="rename:1:EIO" LD_PRELOAD="$INJECT" \
+        "$RT" -q "$T/f.txt" "$T/o/out.png" 2>"$T/err"
+    [ $? = 1 ] && [ "$(ls -A "$T/o")" = out.png ] && pass || fail "a failed rename" "$(cat "$T/err")"
+    rm -rf "$T/o"
+    mkdir "$T/o"
+    printf 'keep me\n' >"$T/o/out.png"
+    RAYTRACE_NO_TMPFILE=1 RAYTRACE_FAULT="rename:1:EIO" RAYTRACE_FAULT2="unlink:1:EACCES" \
+        LD_PRELOAD="$INJECT" "$RT" -q "$T/f.txt" "$T/o/out.png" 2>"$T/err"
+    left=$(ls -A "$T/o" | grep -v '^out.png$')
+    if [ -n "$left" ] && grep -q "the temporary file '$T/o/$left' could not be removed" "$T/err"; then
+        pass
+    elif [ -z "$left" ]; then
+        fail "a failed clean-up: nothing was left to name" "$(cat "$T/err")"
+    else
+        fail "a failed clean-up leaves $left unnamed" "$(cat "$T/err")"
+    fi
 fi
 
 finish

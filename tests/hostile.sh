@@ -141,7 +141,7 @@ check "scene is a device" 1 "raytrace: /dev/zero: error: cannot read: not a regu
 check "missing scene" 1 "raytrace: $T/none.txt: error: cannot open: No such file or directory" \
     "$T/o/out.ppm" "$T/none.txt" "$T/o/out.ppm"
 "$RT" -q - "$T/o/out.ppm" </dev/null 2>"$T/err"
-[ $? = 1 ] && grep -q "^raytrace: <stdin>:1:1: error: expected the camera position" "$T/err" &&
+[ $? = 1 ] && grep -q "^raytrace: <stdin>: error: the scene is empty: the file holds no byte" "$T/err" &&
     passed=$((passed + 1)) || fail "empty standard input" "$(cat "$T/err")"
 printf '%s\n%s\n' "$H" "$S" >"$T/locked.txt"
 chmod 000 "$T/locked.txt"

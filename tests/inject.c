@@ -3,11 +3,16 @@
  * into raytrace (test-only: built by `make test` as build/inject.so).
  *
  * RAYTRACE_FAULT=CALL:N:FAULT makes the N-th call (counting from 1) of CALL
- * fail: CALL is write, read, fsync, rename, linkat, open or malloc
+ * fail: CALL is write, read, fsync, rename, linkat, open, unlink or malloc
  * (malloc, calloc and realloc counted together); FAULT is an errno name
  * (ENOSPC, EIO, EINTR, ENOMEM, EACCES) or, for write and read, "short": the
- * call moves half its bytes (at least one). RAYTRACE_FAULT_COUNT=FILE
+ * call moves half its bytes (at least one), or "exit": the call ends the
+ * process with exit(1), as the OpenMP runtime's fatal errors do ("libgomp:
+ * Out of memory allocating ..."). RAYTRACE_FAULT_COUNT=FILE
  * instead appends to FILE, at exit, how many times each CALL was made.
+ * RAYTRACE_FAULT2 names a second fault, the same way.
+ * RAYTRACE_NO_TMPFILE=1 makes every open() of an unnamed file (O_TMPFILE)
+ * fail with EOPNOTSUPP, as on a file system without them.
  * Only the calls the program makes through the dynamic linker are seen:
  * raytrace's own reads and writes (base/file.c, base/outfile.c) are.
  */
@@ -23,42 +28,56 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-enum { CALL_WRITE, CALL_READ, CALL_FSYNC, CALL_RENAME, CALL_LINKAT, CALL_OPEN, CALL_MALLOC,
-       CALLS };
-static const char *const inject_names[CALLS] = {"write",  "read", "fsync", "rename",
-                                                "linkat", "open", "malloc"};
+enum { CALL_WRITE, CALL_READ, CALL_FSYNC, CALL_RENAME, CALL_LINKAT, CALL_OPEN, CALL_UNLINK,
+       CALL_MALLOC, CALLS };
+static const char *const inject_names[CALLS] = {"write",  "read", "fsync",  "rename",
+                                                "linkat", "open", "unlink", "malloc"};
 static unsigned long inject_counts[CALLS];
-static int inject_call = -1;   /* the call to fail, or -1 */
-static unsigned long inject_at; /* its number */
-static int inject_errno;        /* the errno it fails with, 0: a short move */
+/* The faults to inject: the call to fail (-1: none), its number, the
+ * errno it fails with (0: a short move, -1: exit(1)). */
+static struct {
+    int call;
+    unsigned long at;
+    int err;
+} inject_faults[2] = {{-1, 0, 0}, {-1, 0, 0}};
+static int inject_errno; /* the errno of the fault that hit */
 static int inject_ready;
 
 extern void *__libc_malloc(size_t);
 extern void *__libc_calloc(size_t, size_t);
 extern void *__libc_realloc(void *, size_t);
 
-static void inject_setup(void)
+/* Reads fault k from the environment variable var, "CALL:N:FAULT". */
+static void inject_parse(int k, const char *var)
 {
-    const char *spec = getenv("RAYTRACE_FAULT");
+    const char *spec = getenv(var);
     char name[16], fault[16];
     static const struct {
         const char *name;
         int value;
     } errnos[] = {{"ENOSPC", ENOSPC}, {"EIO", EIO},       {"EINTR", EINTR},
-                  {"ENOMEM", ENOMEM}, {"EACCES", EACCES}, {"short", 0}};
+                  {"ENOMEM", ENOMEM}, {"EACCES", EACCES}, {"short", 0},
+                  {"exit", -1}};
 
-    inject_ready = 1;
-    if (!spec || sscanf(spec, "%15[a-z]:%lu:%15[A-Za-z]", name, &inject_at, fault) != 3)
+    if (!spec || sscanf(spec, "%15[a-z]:%lu:%15[A-Za-z]", name, &inject_faults[k].at, fault) != 3)
         return;
-    for (int k = 0; k < CALLS; k++)
-        if (strcmp(name, inject_names[k]) == 0)
-            inject_call = k;
-    for (size_t k = 0; k < sizeof errnos / sizeof errnos[0]; k++)
-        if (strcmp(fault, errnos[k].name) == 0)
-            inject_errno = errnos[k].value;
+    for (int c = 0; c < CALLS; c++)
+        if (strcmp(name, inject_names[c]) == 0)
+            inject_faults[k].call = c;
+    for (size_t e = 0; e < sizeof errnos / sizeof errnos[0]; e++)
+        if (strcmp(fault, errnos[e].name) == 0)
+            inject_faults[k].err = errnos[e].value;
 }
 
-/* Counts a call of kind k; returns 1 when it is the one to fail. */
+static void inject_setup(void)
+{
+    inject_ready = 1;
+    inject_parse(0, "RAYTRACE_FAULT");
+    inject_parse(1, "RAYTRACE_FAULT2");
+}
+
+/* Counts a call of kind k; returns 1 when it is the one to fail (or ends
+ * the process, for an "exit" fault). */
 static int inject_hit(int k)
 {
     unsigned long n;
@@ -66,7 +85,20 @@ static int inject_hit(int k)
     if (!inject_ready)
         inject_setup();
     n = __atomic_add_fetch(&inject_counts[k], 1, __ATOMIC_RELAXED);
-    return k == inject_call && n == inject_at;
+    for (int f = 0; f < 2; f++) {
+        if (k != inject_faults[f].call || n != inject_faults[f].at)
+            continue;
+        if (inject_faults[f].err == -1) {
+            static const char msg[] = "libgomp: Out of memory allocating (injected)\n";
+            if (write(2, msg, sizeof msg - 1) < 0) {
+                /* nothing more to say */
+            }
+            exit(1);
+        }
+        inject_errno = inject_faults[f].err;
+        return 1;
+    }
+    return 0;
 }
 
 __attribute__((destructor)) static void inject_report(void)
@@ -172,7 +204,26 @@ int open(const char *path, int flags, ...)
         errno = inject_errno ? inject_errno : EIO;
         return -1;
     }
+#ifdef O_TMPFILE
+    if ((flags & O_TMPFILE) == O_TMPFILE && getenv("RAYTRACE_NO_TMPFILE")) {
+        errno = EOPNOTSUPP;
+        return -1;
+    }
+#endif
     return next(path, flags, mode);
+}
+
+int unlink(const char *path)
+{
+    static int (*next)(const char *);
+
+    if (!next)
+        next = (int (*)(const char *))inject_next("unlink");
+    if (inject_hit(CALL_UNLINK)) {
+        errno = inject_errno ? inject_errno : EIO;
+        return -1;
+    }
+    return next(path);
 }
 
 void *malloc(size_t n)

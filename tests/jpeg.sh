@@ -6,7 +6,11 @@
 #     (quality, every chroma subsampling, progressive, greyscale, restart
 #     markers, optimised tables, smoothing): our pixels must be djpeg's
 #     (`djpeg -rgb`, default settings) to within 1 level on 99.9% of pixels
-#     or more (so far they are the same to the byte).
+#     or more (so far they are the same to the byte); and every size from
+#     1 x 1 to 17 x 17 under six subsamplings, to the byte.
+#     Damaged files (bytes changed, cut out or added, no end marker, cut
+#     short), sequential and progressive, with restart markers: our pixels
+#     are djpeg's C decoder's, and we warn when it does.
 #  2. Exif orientations 2 to 8: our picture is djpeg's turned by netpbm's
 #     pamflip as the tag says.
 #  3. What we do not read is refused with an error that names it:
@@ -24,8 +28,9 @@
 # saying so, unless RAYTRACE_TEST_TOOLS=required (CI), where that fails.
 #
 # The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) takes a sample of
-# each part: three sources at seven settings, one orientation, two scenes
-# written at two settings, two odd sizes; make check takes them all.
+# each part: three sources at seven settings, the sizes up to 5 x 5, one
+# orientation, two scenes written at two settings, two odd sizes; make
+# check takes them all.
 #
 # Usage: sh tests/jpeg.sh RAYTRACE RAYTRACE-DIFF   (from the repository root)
 
@@ -90,6 +95,77 @@ if have cjpeg && have djpeg; then
         done
     done
     echo "jpeg: $images files made by cjpeg compared with djpeg"
+    # Every size from 1 x 1 to 17 x 17 under each chroma subsampling, of
+    # noise: where a subsampled component is 1 or 2 samples wide, libjpeg
+    # repeats its samples instead of filtering them (the quick suite: up to
+    # 5 x 5).
+    last=17
+    full || last=5
+    sizes=0 bad=""
+    w=1
+    while [ $w -le $last ]; do
+        h=1
+        while [ $h -le $last ]; do
+            noise $w $h "$T/s.ppm"
+            for sample in 2x1 1x2 2x2 4x1 1x4 4x2; do
+                cjpeg -quality 90 -sample $sample -outfile "$T/s.jpg" "$T/s.ppm" &&
+                    djpeg -rgb -outfile "$T/s-d.ppm" "$T/s.jpg" &&
+                    "$DIFF" -q "$T/s-d.ppm" "$T/s.jpg" || bad="$bad ${w}x$h/$sample"
+                sizes=$((sizes + 1))
+            done
+            h=$((h + 1))
+        done
+        w=$((w + 1))
+    done
+    [ -z "$bad" ] && pass || fail "sizes whose pixels are not djpeg's:$bad"
+    echo "jpeg: $sizes small files (1 x 1 to $last x $last, six subsamplings) identical to djpeg's"
+fi
+
+# --- 1b. damaged files: read as djpeg reads them, with a warning ---
+# corrupt IN OUT KIND: OUT is IN damaged at fixed places of its data:
+# bytes changed, bytes cut out, junk between segments, no end marker, or
+# cut short.
+corrupt() {
+    size=$(wc -c <"$1")
+    sos=$(od -An -v -tx1 -w1 "$1" | awk '/ff/ { f = NR } /da/ && f == NR - 1 { print NR; exit }')
+    cp "$1" "$2"
+    case $3 in
+    changed)
+        for at in $((sos + (size - sos) * 2 / 5)) $((sos + (size - sos) * 3 / 5)) \
+            $((sos + (size - sos) * 4 / 5)); do
+            printf '\132' | dd of="$2" bs=1 seek="$at" conv=notrunc 2>/dev/null
+        done ;;
+    cut) { head -c $((sos + (size - sos) / 2)) "$1"; tail -c +$((sos + (size - sos) / 2 + 40)) "$1"; } >"$2" ;;
+    junk) { head -c 20 "$1"; printf 'junk'; tail -c +21 "$1"; } >"$2" ;;
+    noeoi) head -c $((size - 2)) "$1" >"$2" ;;
+    short) head -c $((sos + (size - sos) * 2 / 3)) "$1" >"$2" ;;
+    esac
+}
+if have cjpeg && have djpeg; then
+    damaged=0
+    # djpeg's own C code (JSIMD_FORCENONE): its SIMD inverse DCT computes
+    # in 16 bits, so that blocks of damaged data out of every valid range
+    # come out otherwise on another machine; valid data is the same.
+    for opts in "-restart 1" "-restart 2 -sample 2x2" "-restart 1 -progressive" "-optimize"; do
+        full || [ "$opts" = "-restart 1" ] || [ "$opts" = "-restart 1 -progressive" ] || continue
+        # shellcheck disable=SC2086
+        cjpeg -quality 85 $opts -outfile "$T/good.jpg" "$T/render.ppm"
+        for kind in changed cut junk noeoi short; do
+            # A progressive file cut short: libjpeg smooths the blocks
+            # whose coefficients never came (its block smoothing); we
+            # leave them as they are (docs/scene-format.md).
+            case "$opts:$kind" in *progressive:short) continue ;; esac
+            corrupt "$T/good.jpg" "$T/bad.jpg" $kind
+            JSIMD_FORCENONE=1 djpeg -rgb -outfile "$T/bad-d.ppm" "$T/bad.jpg" 2>"$T/djpeg-err"
+            "$DIFF" "$T/bad-d.ppm" "$T/bad.jpg" >"$T/out" 2>"$T/err" &&
+                { [ -s "$T/djpeg-err" ] || [ ! -s "$T/err" ]; } &&
+                { [ ! -s "$T/djpeg-err" ] || grep -q 'warning: corrupt JPEG data' "$T/err"; } && pass ||
+                fail "damaged ($kind) cjpeg $opts file: not djpeg's pixels, or not its warning" \
+                    "$(cat "$T/djpeg-err" "$T/err" "$T/out")"
+            damaged=$((damaged + 1))
+        done
+    done
+    echo "jpeg: $damaged damaged files read as djpeg reads them"
 fi
 
 # --- 2. Exif orientation ---

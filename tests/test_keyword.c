@@ -436,8 +436,8 @@ static void keyword_formats_are_told_apart(void)
     CHECK_INT(SCENE_COURSE, detect("nan 0 0\n"));
     CHECK_INT(SCENE_COURSE, detect("Infinity 0 0\n"));
     CHECK_INT(SCENE_COURSE, detect(".5 0 0\n"));
-    CHECK_INT(SCENE_COURSE, detect(""));
-    CHECK_INT(SCENE_COURSE, detect("# only a comment"));
+    CHECK_INT(SCENE_AUTO, detect("")); /* empty: refused as such */
+    CHECK_INT(SCENE_AUTO, detect("# only a comment"));
     CHECK_INT(SCENE_COURSE, detect("\x01"));
 }
 

@@ -50,9 +50,12 @@ static void cube_surface_points_lie_on_their_face(void)
     Cube c;
     SurfacePoint sp;
     double uv[2];
+    Ray down = ray_from(1e7 + 0.2, 10, 3.1, 0, -1, 0), ahead = ray_from(1e7 - 0.25, 2.25, -5, 0, 0, 1);
+    real t = 0;
 
     cube_make(&c, vec3(1e7, 2, 3), 0.5, plain);
-    sp = cube_surface_at(&c, vec3(1e7 + 0.2, 2.5000000001, 3.1));
+    CHECK(cube_intersect(&c, &down, 0, INFINITY, &t));
+    sp = cube_surface_at(&c, &down, t);
     CHECK(sp.normal.y == 1 && sp.normal.x == 0 && sp.normal.z == 0);
     CHECK(sp.point.y == c.hi.y);
     CHECK(sp.error.x > 0 && sp.error.y > 0 && sp.error.z > 0);
@@ -60,11 +63,50 @@ static void cube_surface_points_lie_on_their_face(void)
     CHECK_NEAR(0.7, uv[0], 1e-9); /* top: +x to the right, +z up */
     CHECK_NEAR(0.6, uv[1], 1e-9);
     /* The -z face seen from in front: +x to the right, +y up. */
-    sp = cube_surface_at(&c, vec3(1e7 - 0.25, 2.25, 2.5));
+    CHECK(cube_intersect(&c, &ahead, 0, INFINITY, &t));
+    sp = cube_surface_at(&c, &ahead, t);
     CHECK(sp.normal.z == -1);
     cube_uv(&c, sp.point, sp.normal, uv);
     CHECK_NEAR(0.25, uv[0], 1e-9);
     CHECK_NEAR(0.75, uv[1], 1e-9);
+}
+
+static void cube_edges_belong_to_the_face_the_ray_crosses(void)
+{
+    /* The cube of centre (0, 0, 2) and half-edge 1, from (0, 0, -3): rays
+     * that meet its front face (z = 1) exactly on its top edge (y = 1),
+     * its right edge (x = 1) and its corner leave the slabs of y and x
+     * there and enter z's: the front face's normal, -z, however the
+     * point rounds (a ray at 1/4 of the way across rounds nearer the top
+     * face than the front). A ray that enters two slabs at once (through
+     * an edge from outside both) takes the lower axis's face; a ray lying
+     * in a face's plane touches the cube, at the face it then meets. */
+    Cube c;
+    Ray rays[] = {ray_from(0, 0, -3, 0, 1, 4), ray_from(0, 0, -3, 1, 0, 4),
+                  ray_from(0, 0, -3, 1, 1, 4), ray_from(0, 0, -3, 0.25, 1, 4),
+                  ray_from(-5, 3, 2, 4, -2, 0), ray_from(0, 1, -3, 0, 0, 1)};
+    Vec3 want[] = {vec3(0, 0, -1), vec3(0, 0, -1), vec3(0, 0, -1), vec3(0, 0, -1),
+                   vec3(-1, 0, 0), vec3(0, 0, -1)};
+    real t = 0;
+
+    cube_make(&c, vec3(0, 0, 2), 1, plain);
+    for (size_t i = 0; i < sizeof rays / sizeof rays[0]; i++) {
+        SurfacePoint sp;
+        if (!cube_intersect(&c, &rays[i], 0, INFINITY, &t)) {
+            test_fail(__FILE__, __LINE__, "ray %zu misses the cube", i);
+            continue;
+        }
+        sp = cube_surface_at(&c, &rays[i], t);
+        if (!vec3_equal(sp.normal, want[i]))
+            test_fail(__FILE__, __LINE__, "ray %zu: normal (%g, %g, %g), expected (%g, %g, %g)",
+                      i, sp.normal.x, sp.normal.y, sp.normal.z, want[i].x, want[i].y, want[i].z);
+    }
+    /* Leaving from inside through an edge: the slab left first, outward. */
+    {
+        Ray out = ray_from(0, 0, 2, 0, 1, 1);
+        CHECK(cube_intersect(&c, &out, 0, INFINITY, &t));
+        CHECK(vec3_equal(cube_surface_at(&c, &out, t).normal, vec3(0, 1, 0)));
+    }
 }
 
 static void square_hits_inside_its_edges_on_both_sides(void)
@@ -180,11 +222,13 @@ static int solid_hit(const Solid *s, const Ray *r, real *t)
     }
 }
 
-static SurfacePoint solid_surface(const Solid *s, Vec3 p)
+static SurfacePoint solid_surface(const Solid *s, const Ray *r, real t)
 {
+    Vec3 p = ray_at(r, t);
+
     switch (s->kind) {
     case 0:
-        return cube_surface_at(&s->cube, p);
+        return cube_surface_at(&s->cube, r, t);
     case 1:
         return square_surface_at(&s->square, p);
     case 2:
@@ -240,7 +284,7 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         if (!solid_hit(&s, &ray, &t))
             continue;
         tested[s.kind]++;
-        sp = solid_surface(&s, ray_at(&ray, t));
+        sp = solid_surface(&s, &ray, t);
         n = ray_facing_normal(sp.normal, ray.dir);
         /* Where the ray really came from: the cylinder and cone are
          * infinite, so an origin picked outside may be inside. */
@@ -273,6 +317,7 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
 const TestCase solid_tests[] = {
     {"cube_hits_from_outside_inside_and_along_axes", cube_hits_from_outside_inside_and_along_axes},
     {"cube_surface_points_lie_on_their_face", cube_surface_points_lie_on_their_face},
+    {"cube_edges_belong_to_the_face_the_ray_crosses", cube_edges_belong_to_the_face_the_ray_crosses},
     {"square_hits_inside_its_edges_on_both_sides", square_hits_inside_its_edges_on_both_sides},
     {"cylinder_hits_at_known_t_and_not_along_its_axis",
      cylinder_hits_at_known_t_and_not_along_its_axis},

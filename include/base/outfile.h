@@ -7,8 +7,9 @@
  * synced, then the directory synced: a failed, interrupted or killed
  * render leaves an existing file untouched and nothing beside it. Where
  * unnamed files are not possible, a named temporary file beside the
- * output takes their place (removed on failure and on SIGINT/SIGTERM; a
- * SIGKILL leaves it). "-" means
+ * output takes their place (removed on failure, and by the command on
+ * SIGINT, SIGTERM and any exit it did not choose; a SIGKILL leaves it);
+ * when even its removal fails, the message names it. "-" means
  * standard output, and an existing file that is not a regular file (a
  * device such as /dev/null, a FIFO) is written in place, since it cannot be
  * replaced.
@@ -36,17 +37,26 @@ typedef struct {
     int is_stdout;               /* 1 when writing to standard output */
 } OutFile;
 
+/* Says whether path ("-": standard output) could be opened for writing
+ * (it is no directory, and its directory exists and may be written to),
+ * creating nothing: a check to make before a long render; returns 0, or -1
+ * with *err saying why. */
+int outfile_check(const char *path, Error *err);
+
 /* Opens path ("-": standard output) for writing as described above; returns
  * 0, or -1 with *err saying why and nothing created. */
 int outfile_open(OutFile *out, const char *path, Error *err);
 
 /* Finishes the file: flushes and syncs it, closes it and renames the
  * temporary file onto the destination. Returns 0, or -1 with *err filled
- * and the temporary file removed. */
+ * and the temporary file removed (or, if that fails too, named in *err's
+ * message). */
 int outfile_commit(OutFile *out, Error *err);
 
 /* Abandons the file: closes it and removes the temporary file, leaving any
- * existing output as it was. */
-void outfile_abort(OutFile *out);
+ * existing output as it was. Returns 0, or -1 when the temporary file
+ * could not be removed: then its name and why are added to *err's message
+ * (err may be NULL). */
+int outfile_abort(OutFile *out, Error *err);
 
 #endif

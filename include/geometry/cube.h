@@ -37,9 +37,14 @@ int cube_intersect(const Cube *c, const Ray *ray, real tmin, real tmax, real *t)
  * 0, 1 or 2. */
 int cube_crossings(const Cube *c, const Ray *ray, real tmin, real tmax);
 
-/* Puts p, a point near the cube's surface, onto the face nearest to it and
- * returns it with that face's outward normal and its error bound. */
-SurfacePoint cube_surface_at(const Cube *c, Vec3 p);
+/* Returns the point of the ray at t, where it crosses the cube's surface
+ * (t from cube_intersect()), put onto the face it crosses there, with that
+ * face's outward normal and its error bound. The face is the one whose
+ * slab the ray enters last (at the entry) or leaves first (at the exit),
+ * the lower axis (x, then y, then z) when it crosses two or three at once
+ * (an edge or a corner), whatever face the rounded point lies nearest to;
+ * for any other t, the face nearest to the point. */
+SurfacePoint cube_surface_at(const Cube *c, const Ray *ray, real t);
 
 /* Returns in uv the texture coordinates of the surface point p of outward
  * normal n: each face holds the whole image, upright (v along +y on the

@@ -19,6 +19,7 @@ typedef struct {
     int width, height;  /* pixels */
     char format[48];    /* "PPM P6, maxval 255", "PNG", "PFM"... for reports */
     double *rgb;        /* 3 * width * height values, rows top to bottom, owned */
+    char warning[200];  /* damage its decoder passed over (a JPEG's), or "" */
 } Picture;
 
 /* Reads the image file at path, of whichever format its first bytes say,

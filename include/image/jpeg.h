@@ -14,6 +14,14 @@
  * lossless and hierarchical modes, 12-bit samples and four components
  * (CMYK) are refused with an error that names them. The output is 8-bit RGB,
  * rows top to bottom.
+ *
+ * Damage libjpeg passes over with a warning, the reader passes over alike,
+ * with libjpeg's pixels, and says so in the image's warning: bytes between
+ * segments, a missing end marker, a file cut short (what is missing is
+ * grey), entropy-coded data that is damaged (a bad Huffman code decodes as
+ * 0, a coefficient past the block's end lands on its last, data that runs
+ * out leaves the rest of its restart interval grey) and found again at the
+ * next restart marker as libjpeg's resynchronisation finds it.
  */
 #ifndef RAYTRACE_JPEG_H
 #define RAYTRACE_JPEG_H
@@ -23,10 +31,14 @@
 
 #include "base/error.h"
 
+enum { JPEG_WARNING_MAX = 200 }; /* room for a warning */
+
 typedef struct {
     int width, height;  /* pixels, after the Exif orientation */
     int channels;       /* components in the file: 1 or 3 */
     unsigned char *rgb; /* 3 * width * height bytes, owned */
+    char warning[JPEG_WARNING_MAX]; /* the first damage passed over ("at
+                           byte N: ...", and how many more), or "" */
 } JpegImage;
 
 /* Reads the JPEG file at path into *img, its buffers taking at most

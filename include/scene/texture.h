@@ -22,6 +22,8 @@ typedef struct {
                                times scale is a colour, 0..255 */
     char *path;             /* the file it was read from, as the scene
                                names it; owned */
+    char warning[200];      /* damage its decoder passed over (a JPEG's,
+                               jpeg.h), or "": the caller may say so */
 } Texture;
 
 /* Returns the bytes t's texels take. */

@@ -10,7 +10,8 @@
  * letters m, p, l or c means the MPL format (no keyword is one letter); one
  * that starts with another ASCII letter and is not a number word ("nan",
  * "inf") means the keyword format; anything else the course format, whose
- * parser then explains what it expected.
+ * parser then explains what it expected. A file without any such token
+ * is refused as an empty scene.
  */
 #ifndef RAYTRACE_LOAD_H
 #define RAYTRACE_LOAD_H
@@ -20,7 +21,9 @@
 #include "base/error.h"
 #include "scene/scene.h"
 
-/* Returns the format of the len bytes at text by the rule above. */
+/* Returns the format of the len bytes at text by the rule above, or
+ * SCENE_AUTO when they hold no element (an empty scene, which
+ * load_scene_text() refuses as such). */
 SceneFormat load_detect(const char *text, size_t len);
 
 /* Reads the scene file at path ("-": standard input) in the given format

@@ -128,6 +128,27 @@ static int outfile_unnamed(const char *dir, mode_t mode)
 #endif
 }
 
+/* Removes out's named temporary file, if any; when that fails too, adds to
+ * err's message (when err is not NULL) the file's name and why, so that
+ * the user can delete it. Returns 0, or -1 when the file stays. */
+static int outfile_remove_temp(OutFile *out, Error *err)
+{
+    int rc = 0;
+
+    if (out->temp[0] && unlink(out->temp) != 0 && errno != ENOENT) {
+        int saved = errno;
+        rc = -1;
+        if (err) {
+            size_t n = strlen(err->message);
+            snprintf(err->message + n, sizeof err->message - n,
+                     "; and the temporary file '%s' could not be removed (%s): delete it",
+                     out->temp, strerror(saved));
+        }
+    }
+    out->temp[0] = '\0';
+    return rc;
+}
+
 int outfile_open(OutFile *out, const char *path, Error *err)
 {
     char dir[OUTFILE_PATH_MAX];
@@ -190,12 +211,46 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     if (fchmod(fd, outfile_mode(&st, exists)) != 0 || !(out->fp = outfile_stream(fd))) {
         error_set(err, path, "cannot write in directory '%s': %s", dir, strerror(errno));
         close(fd);
-        unlink(out->temp);
-        out->temp[0] = '\0';
+        outfile_remove_temp(out, err);
         return -1;
     }
     out->fd = fd;
     return 0;
+}
+
+int outfile_check(const char *path, Error *err)
+{
+    char dest[OUTFILE_PATH_MAX], dir[OUTFILE_PATH_MAX];
+    const char *base;
+    struct stat st;
+    int exists, saved;
+
+    if (strcmp(path, "-") == 0)
+        return 0;
+    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
+        error_set(err, path, "output path is too long");
+        return -1;
+    }
+    exists = stat(path, &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) {
+        error_set(err, path, "cannot write the image: it is a directory");
+        return -1;
+    }
+    if (exists && !S_ISREG(st.st_mode))
+        return 0; /* a device or a FIFO, written in place */
+    if (!exists || !realpath(path, dest))
+        strcpy(dest, path);
+    outfile_split(dest, dir, &base);
+    if (stat(dir, &st) != 0)
+        saved = errno;
+    else if (!S_ISDIR(st.st_mode))
+        saved = ENOTDIR;
+    else if (access(dir, W_OK | X_OK) != 0)
+        saved = errno;
+    else
+        return 0;
+    error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(saved));
+    return -1;
 }
 
 /* Syncs directory dir, so that a name just made in it survives a crash
@@ -286,22 +341,18 @@ int outfile_commit(OutFile *out, Error *err)
     if (failed) {
         error_set(err, out->is_stdout ? "<stdout>" : out->path, "cannot write the image: %s",
                   strerror(saved ? saved : EIO));
-        if (out->temp[0])
-            unlink(out->temp);
-        out->temp[0] = '\0';
+        outfile_remove_temp(out, err);
         return -1;
     }
     out->temp[0] = '\0';
     return 0;
 }
 
-void outfile_abort(OutFile *out)
+int outfile_abort(OutFile *out, Error *err)
 {
     /* An unnamed file vanishes with its descriptor. */
     if (out->fp && !out->is_stdout)
         fclose(out->fp);
     out->fp = NULL;
-    if (out->temp[0])
-        unlink(out->temp);
-    out->temp[0] = '\0';
+    return outfile_remove_temp(out, err);
 }

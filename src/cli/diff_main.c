@@ -100,8 +100,9 @@ static int diff_write_image(const char *path, const Picture *a, const Picture *b
         return -1;
     }
     if (writer_write(out.fp, &img, &wopts) != 0) {
-        fprintf(stderr, "raytrace-diff: %s: error: cannot write the image\n", path);
-        outfile_abort(&out);
+        error_set(&err, path, "cannot write the image");
+        outfile_abort(&out, &err);
+        diff_report(&err);
         image_free(&img);
         return -1;
     }
@@ -179,6 +180,9 @@ int main(int argc, char **argv)
         picture_free(&a);
         return 2;
     }
+    for (int i = 0; i < 2 && !quiet; i++)
+        if ((i ? b.warning : a.warning)[0])
+            fprintf(stderr, "raytrace-diff: %s: warning: %s\n", paths[i], i ? b.warning : a.warning);
     if (a.width != b.width || a.height != b.height) {
         fprintf(stderr, "raytrace-diff: error: the sizes differ: %s is %d x %d, %s is %d x %d\n",
                 paths[0], a.width, a.height, paths[1], b.width, b.height);

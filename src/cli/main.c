@@ -9,6 +9,7 @@
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -57,15 +58,32 @@ static void main_on_signal(int sig)
     _exit(128 + sig);
 }
 
+/* At any exit raytrace did not choose (the OpenMP runtime's fatal errors
+ * call exit() from its threads): remove the temporary file. */
+static void main_at_exit(void)
+{
+    const char *temp = main_temp_path;
+
+    if (temp)
+        unlink(temp);
+}
+
+/* Arranges, once, for SIGINT, SIGTERM and any exit to remove the
+ * temporary output file and for the signals to say so. */
 static void main_catch_signals(void)
 {
+    static int caught;
     struct sigaction sa;
 
+    if (caught)
+        return;
+    caught = 1;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = main_on_signal;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    atexit(main_at_exit);
 }
 
 /*
@@ -255,8 +273,14 @@ static int main_load(const Options *opts, Scene *scene)
     Error err;
 
     if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        scene, &err) == 0)
+                        scene, &err) == 0) {
+        /* Textures read despite damage, as other readers read them. */
+        for (size_t i = 0; !opts->quiet && i < scene->texture_count; i++)
+            if (scene->textures[i].warning[0])
+                fprintf(stderr, "raytrace: %s: warning: %s\n", scene->textures[i].path,
+                        scene->textures[i].warning);
         return 0;
+    }
     main_report(&err);
     return 1;
 }
@@ -307,7 +331,7 @@ static int main_save(const Options *opts)
     rc = save_scene(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
                       &err);
     if (rc != 0)
-        outfile_abort(&out);
+        outfile_abort(&out, &err);
     else
         rc = outfile_commit(&out, &err);
     main_temp_path = NULL;
@@ -535,7 +559,9 @@ static int main_render(const Options *opts)
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
         goto fail_scene;
     }
+    /* An output that cannot be made is said before a long render. */
     if (main_check_target(opts, opts->output_path, &err) != 0 ||
+        outfile_check(opts->output_path, &err) != 0 ||
         main_prepare(opts, &wopts, &scene, &err) != 0)
         goto fail_scene;
     accel_time = main_now() - start - read_time;
@@ -558,15 +584,18 @@ static int main_render(const Options *opts)
         error_set(&err, opts->scene_path, "out of memory");
         goto fail_image_only;
     }
+    /* The render needs no file: the output is created once the picture is
+     * done, so that nothing is left of it whatever ends the render. */
+    main_catch_signals();
+    threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
     if (main_open_output(&out, opts->output_path, &err) != 0)
         goto fail_image;
-    threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
     write_time = main_now();
     /* An interrupt from here on still finds main_temp_path: before the rename
      * it removes the unfinished file, after it the unlink finds nothing. */
     if (writer_write(out.fp, &img, &wopts) != 0) {
         error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
-        outfile_abort(&out);
+        outfile_abort(&out, &err);
         goto fail_image;
     }
     if (outfile_commit(&out, &err) != 0)

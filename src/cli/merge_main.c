@@ -286,7 +286,7 @@ int main(int argc, char **argv)
         goto fail;
     if (writer_write(out.fp, &m.img, &w) != 0) {
         error_set(&err, out_path, "cannot write the picture");
-        outfile_abort(&out);
+        outfile_abort(&out, &err);
         goto fail;
     }
     if (outfile_commit(&out, &err) != 0)

@@ -28,11 +28,22 @@ static inline real cube_at(Vec3 v, int a)
     return a == 0 ? v.x : a == 1 ? v.y : v.z;
 }
 
-/* Stores in *t0 and *t1 where the ray's line enters and leaves the box
- * (t0 <= t1); returns 0 when the line misses it. */
-static int cube_slabs(const Cube *c, const Ray *ray, real *t0, real *t1)
+/* Where a ray's line crosses the box: it enters at t0 through the face of
+ * axis enter_axis and leaves at t1 through that of leave_axis (the slab
+ * crossed last and first; on a tie, the lower axis: x, then y, then z). */
+typedef struct {
+    real t0, t1;
+    int enter_axis, leave_axis;
+} CubeSpan;
+
+/* Stores in *s where the ray's line enters and leaves the box (t0 <= t1);
+ * returns 0 when the line misses it. A line parallel to a pair of faces
+ * and within their slab (in a face's plane included) is inside it: the
+ * box is closed. */
+static int cube_slabs(const Cube *c, const Ray *ray, CubeSpan *s)
 {
     real enter = -INFINITY, leave = INFINITY;
+    int ea = -1, la = -1;
 
     for (int a = 0; a < 3; a++) {
         real o = cube_at(ray->origin, a), d = cube_at(ray->dir, a);
@@ -50,28 +61,36 @@ static int cube_slabs(const Cube *c, const Ray *ray, real *t0, real *t1)
             n = f;
             f = tmp;
         }
-        enter = n > enter ? n : enter;
-        leave = f < leave ? f : leave;
+        if (n > enter) {
+            enter = n;
+            ea = a;
+        }
+        if (f < leave) {
+            leave = f;
+            la = a;
+        }
     }
     if (!(enter <= leave))
         return 0;
-    *t0 = enter;
-    *t1 = leave;
+    s->t0 = enter;
+    s->t1 = leave;
+    s->enter_axis = ea;
+    s->leave_axis = la;
     return 1;
 }
 
 int cube_intersect(const Cube *c, const Ray *ray, real tmin, real tmax, real *t)
 {
-    real t0, t1;
+    CubeSpan s;
 
-    if (!cube_slabs(c, ray, &t0, &t1))
+    if (!cube_slabs(c, ray, &s))
         return 0;
-    if (t0 > tmin && t0 < tmax) {
-        *t = t0;
+    if (s.t0 > tmin && s.t0 < tmax) {
+        *t = s.t0;
         return 1;
     }
-    if (t1 > tmin && t1 < tmax) {
-        *t = t1;
+    if (s.t1 > tmin && s.t1 < tmax) {
+        *t = s.t1;
         return 1;
     }
     return 0;
@@ -79,34 +98,50 @@ int cube_intersect(const Cube *c, const Ray *ray, real tmin, real tmax, real *t)
 
 int cube_crossings(const Cube *c, const Ray *ray, real tmin, real tmax)
 {
-    real t0, t1;
+    CubeSpan s;
 
-    if (!cube_slabs(c, ray, &t0, &t1))
+    if (!cube_slabs(c, ray, &s))
         return 0;
-    return (t0 > tmin && t0 < tmax) + (t1 != t0 && t1 > tmin && t1 < tmax);
+    return (s.t0 > tmin && s.t0 < tmax) + (s.t1 != s.t0 && s.t1 > tmin && s.t1 < tmax);
 }
 
-SurfacePoint cube_surface_at(const Cube *c, Vec3 p)
+SurfacePoint cube_surface_at(const Cube *c, const Ray *ray, real t)
 {
+    Vec3 p = ray_at(ray, t);
     real q[3] = {p.x, p.y, p.z}, lo[3] = {c->lo.x, c->lo.y, c->lo.z};
-    real hi[3] = {c->hi.x, c->hi.y, c->hi.z}, n[3] = {0, 0, 0}, best = INFINITY;
-    int axis = 0, side = -1;
+    real hi[3] = {c->hi.x, c->hi.y, c->hi.z}, n[3] = {0, 0, 0};
+    int axis = -1, side = -1;
+    CubeSpan s;
     SurfacePoint sp;
 
-    /* The face nearest to p, then p on it and within the other two slabs. */
-    for (int a = 0; a < 3; a++) {
-        real dl = fabs(q[a] - lo[a]), dh = fabs(q[a] - hi[a]);
-        if (dl < best) {
-            best = dl;
-            axis = a;
-            side = -1;
-        }
-        if (dh < best) {
-            best = dh;
-            axis = a;
-            side = 1;
+    /* The face the ray enters at t0 (the slab it enters last), or leaves
+     * at t1, whatever face p rounds nearest to: an edge belongs to the
+     * face the ray crosses there, never to one it runs along. */
+    if (cube_slabs(c, ray, &s) && (t == s.t0 || t == s.t1)) {
+        axis = t == s.t0 ? s.enter_axis : s.leave_axis;
+        if (axis >= 0) {
+            int toward_hi = cube_at(ray->dir, axis) > 0;
+            side = (t == s.t0) == toward_hi ? -1 : 1;
         }
     }
+    if (axis < 0) {
+        /* Not one of the ray's crossings: the face nearest to p. */
+        real best = INFINITY;
+        for (int a = 0; a < 3; a++) {
+            real dl = fabs(q[a] - lo[a]), dh = fabs(q[a] - hi[a]);
+            if (dl < best) {
+                best = dl;
+                axis = a;
+                side = -1;
+            }
+            if (dh < best) {
+                best = dh;
+                axis = a;
+                side = 1;
+            }
+        }
+    }
+    /* p on that face, within the other two slabs. */
     for (int a = 0; a < 3; a++)
         q[a] = q[a] < lo[a] ? lo[a] : q[a] > hi[a] ? hi[a] : q[a];
     q[axis] = side < 0 ? lo[axis] : hi[axis];

@@ -95,6 +95,7 @@ int picture_parse(const char *name, const char *data, size_t len, Picture *pic, 
         JpegImage jpg;
         if (jpeg_parse(name, head, len, 0, &jpg, err) != 0)
             return -1;
+        snprintf(pic->warning, sizeof pic->warning, "%s", jpg.warning);
         if (picture_alloc(pic, jpg.width, jpg.height, name, err) == 0) {
             size_t count = 3 * (size_t)jpg.width * (size_t)jpg.height;
             for (size_t k = 0; k < count; k++)

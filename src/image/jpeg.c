@@ -2,6 +2,7 @@
  * jpeg_decode.h put together, and the picture turned as Exif says. */
 #include "image/jpeg.h"
 
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,6 +26,18 @@ int jpeg_unsupported(Jpeg *J, const char *what)
 {
     error_set(J->err, J->name, "unsupported JPEG: %s", what);
     return -1;
+}
+
+void jpeg_warn(Jpeg *J, const char *fmt, ...)
+{
+    if (J->warnings++ == 0) {
+        char msg[120];
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, sizeof msg, fmt, ap);
+        va_end(ap);
+        snprintf(J->warning, sizeof J->warning, "at byte %zu: %s", J->pos, msg);
+    }
 }
 
 /* Turns img as Exif orientation o (2 to 8) says, so that it shows upright. */
@@ -78,6 +91,7 @@ int jpeg_parse(const char *name, const unsigned char *data, size_t len, size_t m
     int rc = -1;
 
     img->rgb = NULL;
+    img->warning[0] = '\0';
     if (!J) {
         error_set(err, name, "out of memory");
         return -1;
@@ -113,6 +127,11 @@ int jpeg_parse(const char *name, const unsigned char *data, size_t len, size_t m
     if (jpeg_pixels(J, img->rgb) != 0 ||
         (J->orientation > 1 && jpeg_orient(img, J->orientation, J) != 0))
         goto done;
+    if (J->warnings > 1)
+        snprintf(img->warning, sizeof img->warning, "corrupt JPEG data, %s; and %d more", J->warning,
+                 J->warnings - 1);
+    else if (J->warnings == 1)
+        snprintf(img->warning, sizeof img->warning, "corrupt JPEG data, %s", J->warning);
     rc = 0;
 done:
     for (int i = 0; i < 4; i++) {
@@ -132,6 +151,7 @@ int jpeg_read(const char *path, size_t max_bytes, JpegImage *img, Error *err)
     int rc;
 
     img->rgb = NULL;
+    img->warning[0] = '\0';
     if (file_read_all(path, &data, &len, err) != 0)
         return -1;
     rc = jpeg_parse(file_display_name(path), (const unsigned char *)data, len, max_bytes, img,

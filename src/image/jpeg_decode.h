@@ -72,6 +72,12 @@ typedef struct {
     int marker;             /* a marker met in the data (then zeros follow) */
     int pad;                /* zero bits fed past a marker or the end */
     int eobrun;
+    int next_restart;       /* the RSTn marker expected next, 0..7 */
+    int insufficient;       /* the data ran out in this restart interval:
+                               its other MCUs are left as they are */
+    /* Damage passed over, as libjpeg passes over it. */
+    int warnings;
+    char warning[160];      /* the first, "at byte N: ..." */
 } Jpeg;
 
 /* The scan being decoded. */
@@ -94,6 +100,17 @@ int jpeg_fail(Jpeg *J, const char *fmt, const char *what);
 /* Records that the file uses something this reader does not; returns -1
  * (jpeg.c). */
 int jpeg_unsupported(Jpeg *J, const char *what);
+
+/* Notes damage passed over (printf's fmt), at J's byte: the first is kept
+ * in J->warning, the others counted (jpeg.c). */
+void jpeg_warn(Jpeg *J, const char *fmt, ...);
+
+/* Moves J to the next marker at or after its position (0xFF, fill bytes
+ * 0xFF, then a byte other than 0 and 0xFF), warning of the bytes it passes
+ * over with the junk bytes before its position (libjpeg counts them
+ * alike); returns the marker's code with J at its 0xFF, or -1 when the
+ * data ends first (jpeg_markers.c). */
+int jpeg_find_marker(Jpeg *J, size_t junk);
 
 /* Reads the markers from SOI to EOI (or the data's end after a scan),
  * decoding every scan into its components' coefficients; returns 0 or -1

@@ -60,7 +60,8 @@ static int jpeg_signed(Jpeg *J, int n)
     return n && v < 1 << (n - 1) ? v - (1 << n) + 1 : v;
 }
 
-/* Decodes a symbol with table h; returns it, or -1 at a bad code. */
+/* Decodes a symbol with table h and returns it; a bad code (none of the
+ * table's 16 lengths) is 0, as libjpeg decodes it. */
 static int jpeg_symbol(Jpeg *J, const JpegHuffman *h)
 {
     int peek, len;
@@ -80,30 +81,29 @@ static int jpeg_symbol(Jpeg *J, const JpegHuffman *h)
         if (code <= h->maxcode[len])
             break;
     }
-    if (len > 16)
-        return -1;
+    if (len > 16) {
+        /* libjpeg takes 17 bits and decodes a zero: the safest guess. */
+        jpeg_warn(J, "bad Huffman code");
+        J->bits <<= 17;
+        J->nbits -= 17;
+        return 0;
+    }
     J->bits <<= len;
     J->nbits -= len;
     return h->symbols[(code + h->delta[len]) & 0xFF];
 }
-
-/* ---- Markers ---- */
 
 /* Decodes one block of a sequential scan into blk. */
 static int jpeg_block(Jpeg *J, JpegComponent *c, int16_t *blk)
 {
     int t = jpeg_symbol(J, &J->dc[c->dc]);
 
-    if (t < 0 || t > 11)
+    if (t > 15)
         return jpeg_fail(J, "bad Huffman code in a DC coefficient%s", NULL);
     c->pred += jpeg_signed(J, t);
     blk[0] = (int16_t)c->pred;
     for (int k = 1; k < 64;) {
-        int rs = jpeg_symbol(J, &J->ac[c->ac]), r, s;
-        if (rs < 0)
-            return jpeg_fail(J, "bad Huffman code in an AC coefficient%s", NULL);
-        r = rs >> 4;
-        s = rs & 15;
+        int rs = jpeg_symbol(J, &J->ac[c->ac]), r = rs >> 4, s = rs & 15;
         if (s == 0) {
             if (r != 15)
                 break;
@@ -111,9 +111,10 @@ static int jpeg_block(Jpeg *J, JpegComponent *c, int16_t *blk)
             continue;
         }
         k += r;
-        if (k > 63)
-            return jpeg_fail(J, "an AC coefficient beyond the block's 64%s", NULL);
-        blk[jpeg_zigzag[k++]] = (int16_t)jpeg_signed(J, s);
+        /* Past the block's end (damaged data): on its last coefficient, as
+         * libjpeg puts it. */
+        blk[jpeg_zigzag[k < 64 ? k : 63]] = (int16_t)jpeg_signed(J, s);
+        k++;
     }
     return 0;
 }
@@ -123,7 +124,7 @@ static int jpeg_dc_progressive(Jpeg *J, const JpegScan *s, JpegComponent *c, int
 {
     if (s->ah == 0) {
         int t = jpeg_symbol(J, &J->dc[c->dc]);
-        if (t < 0 || t > 11)
+        if (t > 15)
             return jpeg_fail(J, "bad Huffman code in a DC coefficient%s", NULL);
         c->pred += jpeg_signed(J, t);
         blk[0] = (int16_t)(c->pred * (1 << s->al));
@@ -141,11 +142,7 @@ static int jpeg_ac_first(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t *
         return 0;
     }
     for (int k = s->ss; k <= s->se;) {
-        int rs = jpeg_symbol(J, &J->ac[c->ac]), r, z;
-        if (rs < 0)
-            return jpeg_fail(J, "bad Huffman code in an AC coefficient%s", NULL);
-        r = rs >> 4;
-        z = rs & 15;
+        int rs = jpeg_symbol(J, &J->ac[c->ac]), r = rs >> 4, z = rs & 15;
         if (z == 0) {
             if (r < 15) { /* an end-of-band run of 2^r + bits - 1 more blocks */
                 J->eobrun = (1 << r) - 1 + jpeg_bits(J, r);
@@ -155,9 +152,8 @@ static int jpeg_ac_first(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t *
             continue;
         }
         k += r;
-        if (k > 63)
-            return jpeg_fail(J, "an AC coefficient beyond the block's 64%s", NULL);
-        blk[jpeg_zigzag[k++]] = (int16_t)(jpeg_signed(J, z) * (1 << s->al));
+        blk[jpeg_zigzag[k < 64 ? k : 63]] = (int16_t)(jpeg_signed(J, z) * (1 << s->al));
+        k++;
     }
     return 0;
 }
@@ -179,13 +175,12 @@ static int jpeg_ac_refine(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t 
 
     if (J->eobrun == 0) {
         for (; k <= s->se; k++) {
-            int rs = jpeg_symbol(J, &J->ac[c->ac]), r, value = 0;
-            if (rs < 0)
-                return jpeg_fail(J, "bad Huffman code in an AC refinement%s", NULL);
-            r = rs >> 4;
+            int rs = jpeg_symbol(J, &J->ac[c->ac]), r = rs >> 4, value = 0;
             if ((rs & 15) != 0) {
+                /* Only 1 or -1 is new here: libjpeg takes any other size
+                 * as 1 (damaged data). */
                 if ((rs & 15) != 1)
-                    return jpeg_fail(J, "a refinement's new coefficient is not 1 or -1%s", NULL);
+                    jpeg_warn(J, "a refinement's new coefficient is not 1 or -1");
                 value = jpeg_bits(J, 1) ? bit : -bit;
             } else if (r != 15) {
                 J->eobrun = (1 << r) + jpeg_bits(J, r);
@@ -203,8 +198,10 @@ static int jpeg_ac_refine(Jpeg *J, const JpegScan *s, JpegComponent *c, int16_t 
                     r--;
                 }
             }
-            if (value && k <= s->se)
-                blk[jpeg_zigzag[k]] = (int16_t)value;
+            /* Past the band when it had too few zeros (damaged data):
+             * where libjpeg puts it, the next position, or the last. */
+            if (value)
+                blk[jpeg_zigzag[k < 64 ? k : 63]] = (int16_t)value;
         }
     }
     if (J->eobrun > 0) {
@@ -230,31 +227,82 @@ static int jpeg_decode_block(Jpeg *J, const JpegScan *s, JpegComponent *c, int b
     return s->ah == 0 ? jpeg_ac_first(J, s, c, blk) : jpeg_ac_refine(J, s, c, blk);
 }
 
-/* Says, recording the fault, whether the scan's data ran out: bits past a
- * marker or the file's end were decoded (a truncated or damaged file). */
+/* Says whether the decoding went past the data (bits past a marker or the
+ * file's end were read as zeros): the data is damaged or cut short. The
+ * first time in a restart interval, says so; libjpeg then leaves the
+ * interval's other MCUs as they are (grey, in a sequential scan). */
 static int jpeg_ran_out(Jpeg *J)
 {
-    if (J->pad <= J->nbits)
-        return 0;
-    jpeg_fail(J, "%s", J->pos >= J->len ? "the file ends inside the image data (truncated)"
+    if (J->insufficient || J->pad <= J->nbits)
+        return J->insufficient;
+    jpeg_warn(J, "%s", J->pos >= J->len ? "the file ends inside the image data (truncated)"
                                         : "the image data ends early, at a marker (damaged)");
+    J->insufficient = 1;
     return 1;
 }
 
-/* At a restart interval's end: the RSTn marker, then fresh predictors and
- * bits. A missing marker is passed over (the data is decoded on). */
+/* At a restart interval's end: the expected RSTn marker, then fresh
+ * predictors and bits. As libjpeg's jpeg_resync_to_restart(): the data
+ * left in the interval is passed over to the next marker; the expected
+ * marker, or one not in the next four, is taken and decoding goes on; one
+ * of the two before it is passed over to the next marker; one of the two
+ * after it, or a marker that is not a restart, is left for later (the
+ * interval after is then empty). */
 static void jpeg_restart(Jpeg *J, const JpegScan *s)
 {
+    int desired = 0xD0 + J->next_restart;
+    size_t left = J->nbits > J->pad ? (size_t)(J->nbits - J->pad) / 8 : 0;
+
     J->bits = 0;
     J->nbits = 0;
     J->pad = 0;
-    if (J->marker >= 0xD0 && J->marker <= 0xD7) {
-        J->pos += 2;
-        J->marker = 0;
+    /* The data left in the interval (whole bytes in the bit buffer, then
+     * up to the marker) is passed over, with a warning. */
+    if (!J->marker && (J->marker = jpeg_find_marker(J, left)) < 0) {
+        J->marker = 0xD9; /* the data ends: as libjpeg's fake EOI */
+        J->pos = J->len;
     }
+    for (;;) {
+        int m = J->marker, action;
+        if (m == desired) {
+            action = 1;
+        } else if (m < 0xC0) {
+            action = 2;
+        } else if (m < 0xD0 || m > 0xD7) {
+            action = 3;
+        } else if (m == 0xD0 + ((J->next_restart + 1) & 7) ||
+                   m == 0xD0 + ((J->next_restart + 2) & 7)) {
+            action = 3;
+        } else if (m == 0xD0 + ((J->next_restart - 1) & 7) ||
+                   m == 0xD0 + ((J->next_restart - 2) & 7)) {
+            action = 2;
+        } else {
+            action = 1;
+        }
+        if (action != 1 && m != 0xD9)
+            jpeg_warn(J, "found marker 0x%02X instead of RST%d", m, J->next_restart);
+        if (action == 1) {
+            J->pos += 2;
+            J->marker = 0;
+            break;
+        }
+        if (action == 3)
+            break;
+        J->pos += 2; /* a marker to pass over */
+        if ((J->marker = jpeg_find_marker(J, 0)) < 0) {
+            J->marker = 0xD9;
+            J->pos = J->len;
+            break;
+        }
+    }
+    J->next_restart = (J->next_restart + 1) & 7;
     for (int i = 0; i < s->n; i++)
         s->c[i]->pred = 0;
     J->eobrun = 0;
+    /* With the marker taken, the next interval's data starts afresh;
+     * against a marker left for later, it is empty. */
+    if (!J->marker)
+        J->insufficient = 0;
 }
 
 /* Decodes the entropy-coded data of scan s. */
@@ -268,6 +316,8 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s)
     J->marker = 0;
     J->pad = 0;
     J->eobrun = 0;
+    J->insufficient = 0;
+    J->next_restart = 0;
     for (int i = 0; i < s->n; i++)
         s->c[i]->pred = 0;
     if (s->n == 1) { /* not interleaved: the component's own blocks */
@@ -282,12 +332,14 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s)
     for (long m = 0; m < mcus; m++) {
         int mx = (int)(m % across), my = (int)(m / across);
         if (todo == 0) {
-            if (jpeg_ran_out(J))
-                return -1;
+            (void)jpeg_ran_out(J);
             jpeg_restart(J, s);
             todo = J->restart;
         }
         todo--;
+        /* The data ran out: the interval's other MCUs stay as they are. */
+        if (jpeg_ran_out(J))
+            continue;
         if (s->n == 1) {
             if (jpeg_decode_block(J, s, s->c[0], mx, my) != 0)
                 return -1;
@@ -301,13 +353,18 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s)
                         return -1;
         }
     }
-    if (jpeg_ran_out(J))
-        return -1;
-    /* Move to the marker after the data. */
-    while (J->pos < J->len && !(J->data[J->pos] == 0xFF && J->pos + 1 < J->len &&
-                                J->data[J->pos + 1] != 0x00 &&
-                                !(J->data[J->pos + 1] >= 0xD0 && J->data[J->pos + 1] <= 0xD7) &&
-                                J->data[J->pos + 1] != 0xFF))
-        J->pos++;
+    (void)jpeg_ran_out(J);
+    /* On to the marker after the data, passing over (with a warning) what
+     * is left before it, restart markers included. */
+    if (!J->marker) {
+        size_t left = J->nbits > J->pad ? (size_t)(J->nbits - J->pad) / 8 : 0;
+        if (jpeg_find_marker(J, left) < 0)
+            J->pos = J->len;
+    }
+    while (J->pos + 1 < J->len && J->data[J->pos + 1] >= 0xD0 && J->data[J->pos + 1] <= 0xD7) {
+        J->pos += 2;
+        if (jpeg_find_marker(J, 0) < 0)
+            J->pos = J->len;
+    }
     return 0;
 }

@@ -83,11 +83,15 @@ static void jpeg_idct8(const int32_t *in, int stride, int32_t out[8], int shift)
     out[4] = jpeg_descale(t13 - t0, shift);
 }
 
-/* Returns x + 128 clamped to a byte. */
+/* Returns the sample of the IDCT's output x (centred on 0) as libjpeg's
+ * range-limit table gives it: x + 128 within [-128, 127], 255 above and 0
+ * below, the table indexed by x's 10 low bits, so that values of damaged
+ * data beyond 511 in size wrap around as libjpeg's do. */
 static inline uint8_t jpeg_sample(int32_t x)
 {
-    x += 128;
-    return (uint8_t)(x < 0 ? 0 : x > 255 ? 255 : x);
+    uint32_t i = (uint32_t)x & 1023;
+
+    return (uint8_t)(i < 128 ? i + 128 : i < 512 ? 255 : i < 896 ? 0 : i - 896);
 }
 
 /* Dequantises block blk with quant and writes its 8 x 8 samples at out
@@ -163,14 +167,18 @@ static inline int jpeg_at(const JpegComponent *c, int x, int y)
 
 /* Writes row y of the image's samples of component c, upsampled to the
  * image's width, into out: libjpeg's "fancy" triangle filter where the
- * component is halved across, down or both, and each sample repeated for
- * other whole ratios. */
+ * component is halved down, or across (or both) and more than 2 samples
+ * wide (libjpeg-turbo's jdsample.c filters across only then), and each
+ * sample repeated otherwise. */
 static void jpeg_upsample_row(const Jpeg *J, const JpegComponent *c, int y, uint8_t *out)
 {
     int fx = J->hmax / c->h, fy = J->vmax / c->v, w = J->width;
 
     if (fx == 1 && fy == 1) {
         memcpy(out, c->plane + (size_t)y * (size_t)c->width, (size_t)w);
+    } else if (fx == 2 && c->width <= 2) {
+        for (int i = 0; i < w; i++)
+            out[i] = (uint8_t)jpeg_at(c, i / fx, y / fy);
     } else if (fx == 2 && fy == 1) {
         for (int i = 0; i < c->width; i++) {
             int s = jpeg_at(c, i, y), l = jpeg_at(c, i - 1, y), r = jpeg_at(c, i + 1, y);

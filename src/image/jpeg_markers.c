@@ -303,6 +303,40 @@ static int jpeg_sos(Jpeg *J, int n)
     return jpeg_scan_data(J, &s);
 }
 
+int jpeg_find_marker(Jpeg *J, size_t junk)
+{
+    size_t start = J->pos;
+
+    for (;;) {
+        size_t at;
+        while (J->pos < J->len && J->data[J->pos] != 0xFF) {
+            J->pos++;
+            junk++;
+        }
+        at = J->pos;
+        while (J->pos < J->len && J->data[J->pos] == 0xFF)
+            J->pos++;
+        if (J->pos >= J->len) {
+            J->pos = start;
+            return -1;
+        }
+        if (J->data[J->pos] != 0) {
+            int marker = J->data[J->pos];
+            J->pos = J->pos - 1; /* its last 0xFF */
+            if (junk > 0) {
+                size_t here = J->pos;
+                J->pos = at;
+                jpeg_warn(J, "%zu extraneous bytes before marker 0x%02X", junk, marker);
+                J->pos = here;
+            }
+            return marker;
+        }
+        /* 0xFF 0x00: a stuffed byte of data, not a marker. */
+        J->pos++;
+        junk += 2;
+    }
+}
+
 /* Reads the markers from SOI to EOI (or the data's end after a scan). */
 int jpeg_markers(Jpeg *J)
 {
@@ -315,18 +349,17 @@ int jpeg_markers(Jpeg *J)
     J->pos = 2;
     for (;;) {
         int marker, n;
-        if (J->pos >= J->len) {
-            if (scans > 0)
-                return 0; /* no EOI: what came is decoded */
-            return jpeg_fail(J, "the file ends before any image data%s", NULL);
+        /* Bytes before the next marker are passed over (with a warning),
+         * as libjpeg does. */
+        if ((marker = jpeg_find_marker(J, 0)) < 0) {
+            if (scans == 0)
+                return jpeg_fail(J, "the file ends before any image data%s", NULL);
+            /* No EOI: what came is decoded. */
+            J->pos = J->len;
+            jpeg_warn(J, "the file ends without its end marker (EOI)");
+            return 0;
         }
-        if (J->data[J->pos] != 0xFF)
-            return jpeg_fail(J, "expected a marker%s", NULL);
-        while (J->pos < J->len && J->data[J->pos] == 0xFF)
-            J->pos++;
-        if (J->pos >= J->len)
-            continue;
-        marker = J->data[J->pos++];
+        J->pos += 2;
         if (marker == 0xD9) {
             if (scans == 0)
                 return jpeg_fail(J, "the image ends before any scan%s", NULL);
@@ -334,6 +367,13 @@ int jpeg_markers(Jpeg *J)
         }
         if (marker == 0xD8 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01)
             continue; /* no segment */
+        /* A segment cut short after the image data: libjpeg reads up to
+         * the file's end and ends the image there. */
+        if (scans > 0 && (J->pos + 2 > J->len || J->pos + jpeg_u16(J->data + J->pos) > J->len)) {
+            jpeg_warn(J, "the file ends inside a marker segment (truncated)");
+            J->pos = J->len;
+            return 0;
+        }
         if ((n = jpeg_segment(J)) < 0)
             return -1;
         switch (marker) {

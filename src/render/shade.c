@@ -62,7 +62,7 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
     }
     case SHAPE_CUBE: {
         const Cube *c = &scene->cubes[hit->index];
-        sh.sp = cube_surface_at(c, ray_at(ray, hit->t));
+        sh.sp = cube_surface_at(c, ray, hit->t);
         if (want_uv)
             cube_uv(c, sh.sp.point, sh.sp.normal, uv);
         break;

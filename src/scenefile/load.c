@@ -42,7 +42,7 @@ SceneFormat load_detect(const char *text, size_t len)
         return number_parse(text + start, i - start, &ignored) == NUMBER_SYNTAX ? SCENE_KEYWORD
                                                                                 : SCENE_COURSE;
     }
-    return SCENE_COURSE;
+    return SCENE_AUTO; /* no element: an empty scene */
 }
 
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
@@ -50,8 +50,12 @@ int load_scene_text(const char *name, const char *text, size_t len, SceneFormat 
 {
     int rc;
 
-    if (format == SCENE_AUTO)
-        format = load_detect(text, len);
+    if (format == SCENE_AUTO && (format = load_detect(text, len)) == SCENE_AUTO) {
+        scene_init(scene);
+        error_set(err, name, "the scene is empty: %s",
+                  len == 0 ? "the file holds no byte" : "it holds only blank lines and comments");
+        return -1;
+    }
     if (format == SCENE_KEYWORD)
         rc = keyword_parse_text(name, text, len, memory_limit, scene, err);
     else if (format == SCENE_MPL)

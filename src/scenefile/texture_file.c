@@ -44,6 +44,7 @@ static int texture_file_decode(Texture *tex, const char *name, const char *data,
         JpegImage jpg;
         if (jpeg_parse(name, head, len, max_bytes, &jpg, err) != 0)
             return -1;
+        snprintf(tex->warning, sizeof tex->warning, "%s", jpg.warning);
         rc = texture_file_bytes(tex, name, jpg.width, jpg.height, jpg.rgb, err);
         jpeg_free(&jpg);
         return rc;
