@@ -151,7 +151,7 @@ $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 TEST_JOBS = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
 TEST_LEVEL ?= full
-QUICK_SUITES := unit golden cli hostile install layers report jpeg tiles faults
+QUICK_SUITES := unit golden cli hostile install layers report jpeg tiles faults noise
 FULL_SUITES := $(QUICK_SUITES) replay
 .PHONY: $(FULL_SUITES:%=test-%)
 
@@ -187,6 +187,8 @@ test-jpeg: raytrace raytrace-diff
 	$(SUITE_ENV) sh tests/jpeg.sh ./raytrace ./raytrace-diff
 test-tiles: raytrace raytrace-merge
 	$(SUITE_ENV) sh tests/tiles.sh ./raytrace ./raytrace-merge
+test-noise: raytrace raytrace-diff raytrace-merge
+	$(SUITE_ENV) sh tests/noise.sh ./raytrace ./raytrace-diff ./raytrace-merge
 test-faults: raytrace $(BUILD)/inject.so
 	$(SUITE_ENV) sh tests/faults.sh ./raytrace $(BUILD)/inject.so
 

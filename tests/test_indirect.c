@@ -104,7 +104,7 @@ static void indirect_gathering_from_a_uniformly_lit_ball(void)
 static void indirect_render(const char *text, Indirect in, int spp, int threads, Image *img,
                             RayCounts *counts)
 {
-    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0};
+    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0, {0, 0, 0}, NULL, NULL};
     Scene sc;
 
     img->rgb = NULL;

@@ -178,8 +178,18 @@ static const BadMpl mpl_bad[] = {
     {"c Camera 0 0 0 0 0 1 90 8 8\nc Camera 0 0 0 0 0 1 90 8 8\n", 2, 1,
      "the camera is already set, on line 1"},
     {"c Fog 1\n", 1, 3,
-     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO, GI or "
-     "Model)"},
+     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO, GI, Model "
+     "or Noise)"},
+    {"c Noise\n", 1, 8,
+     "expected the noise level (c Noise level [min-spp [max-spp]]), found the end of the line"},
+    {"c Noise 0\n", 1, 9, "the noise's level must be greater than 0, found '0'"},
+    {"c Noise 300\n", 1, 9,
+     "the noise level must be at most 255 levels (an error the size of the whole range)"},
+    {"c Noise 1 0\n", 1, 11,
+     "the least samples a pixel must be between 1 and 1048576 samples, found '0'"},
+    {"c Noise 1 64 16\n", 1, 14, "the most samples a pixel (16) is fewer than the least (64)"},
+    {"c Noise 1 16 64 9\n", 1, 17, "expected the end of the line after the noise, found '9'"},
+    {"c Noise 1\nc Noise 2\n", 2, 1, "the noise is already set, on line 1"},
     {"c Sky 1 1 1\n", 1, 12, "expected 6 numbers for the sky (r g b r g b), found 3"},
     {"c AO 4097\n", 1, 6,
      "the number of ambient occlusion rays must be between 0 and 4096 rays, found '4097'"},
@@ -354,7 +364,7 @@ static void mpl_saved_scene_reads_back_the_same(void)
     static const char *const texts[] = {
         ("c Camera 0.1 0.2 -3 0 0 0.30000000000000004 45 64 48\nc Sky 0.3 0.6 0.9 0.1 0.2 0.7\n"
          "c Ambient 0.1 0.1 0.13\nc Samples 3\n"
-         "c Model physical\nc AO 3 0.5\nc GI 2\n"
+         "c Model physical\nc AO 3 0.5\nc GI 2\nc Noise 0.75 32 512\n"
          "m a PLASTIC 0.13 0.7 0.33333333333333331 1 1.45 20 N\n"
          "m b DIELECTRIC 0.9 0.9 1 0 1 100 N\nm c METALLIC 0.01 0.99 0.5 0 1 1e3 N\n"
          "p Sphere 1 2 3 0.7 a\np Plane 0 -1 0 0.1 1 0 b\np Cube -1 0 2 0.25 c\n"
@@ -392,6 +402,11 @@ static void mpl_saved_scene_reads_back_the_same(void)
                               y, once);
             }
         CHECK(memcmp(&a.named[0].base.colour, &b.named[0].base.colour, sizeof(Colour)) == 0);
+        CHECK_NEAR(a.noise, b.noise, 0);
+        CHECK_INT(a.noise_min_spp, b.noise_min_spp);
+        CHECK_INT(a.noise_max_spp, b.noise_max_spp);
+        CHECK_NEAR(i == 0 ? 0.75 : 0, a.noise, 0);
+        CHECK_INT(i == 0 ? 512 : 0, a.noise_max_spp);
         CHECK(a.light_count == b.light_count &&
               memcmp(&a.lights[a.light_count - 1].intensity,
                      &b.lights[b.light_count - 1].intensity, sizeof(double)) == 0);

@@ -63,7 +63,7 @@ static void render_eye_on_the_screen_sees_background(void)
  * summed left to right, its direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
     RayCounts counts = {0};
     Scene sc;
     Error err;
@@ -117,8 +117,9 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0}, two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0},
-                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL},
+                  two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL},
+                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -194,7 +195,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             double s = scales[si], o = offsets[oi];
             Scene sc;
             Material m = material_plain(base_colour, base_refl);
-            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -262,7 +263,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
     Scene sc;
     Error err;
     int e;
@@ -310,7 +311,7 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
     Scene sc;
     Error err;
 
@@ -572,7 +573,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Scene sc;
     Error err;
     Image img;
-    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
@@ -637,7 +638,100 @@ static void render_cutoff_refines_before_tracing_in_full(void)
     }
 }
 
+/* Renders sc under noise with `threads` threads, rows row_first + k
+ * row_step (row_step 0: all) into img (allocated here), recording each
+ * pixel's samples and error. */
+static void render_noisy(const Scene *sc, NoiseOptions noise, Indirect in, int threads,
+                         int row_first, int row_step, Image *img, unsigned *spp, float *error)
+{
+    RenderOptions opts = {10, 1, 0.1, threads, NULL, NULL, in, row_first, row_step, 0, noise, spp,
+                          error};
+    int rows = row_step ? (sc->camera.height - row_first + row_step - 1) / row_step
+                        : sc->camera.height;
+
+    CHECK_INT(0, image_init(img, sc->camera.width, rows));
+    render(sc, &opts, img, NULL);
+}
+
+static void render_noise_is_each_pixels_own(void)
+{
+    static const char *const scenes[] = {"scenes/focus.txt", "scenes/indirect.txt"};
+    NoiseOptions noise = {3, 16, 256};
+
+    for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
+        Indirect in = {s == 1 ? 2 : 0, 0.5, s == 1 ? 2 : 0, 1};
+        unsigned spp[3][40 * 30];
+        float error[3][40 * 30];
+        Image img[3], tile;
+        Scene sc;
+        Error err;
+
+        CHECK_INT(0, load_scene_file(scenes[s], SCENE_AUTO, 0, &sc, &err));
+        camera_resize(&sc.camera, 40, 30);
+        render_noisy(&sc, noise, in, 1, 0, 0, &img[0], spp[0], error[0]);
+        render_noisy(&sc, noise, in, 2, 0, 0, &img[1], spp[1], error[1]);
+        render_noisy(&sc, noise, in, 7, 0, 0, &img[2], spp[2], error[2]);
+        for (int k = 1; k < 3; k++) {
+            CHECK(memcmp(img[0].rgb, img[k].rgb, image_size(40, 30)) == 0);
+            CHECK(memcmp(spp[0], spp[k], sizeof spp[0]) == 0);
+            CHECK(memcmp(error[0], error[k], sizeof error[0]) == 0);
+        }
+        /* A tile (every third row from row 1) has the same rows. */
+        render_noisy(&sc, noise, in, 2, 1, 3, &tile, spp[1], error[1]);
+        for (int y = 0; y < tile.height; y++)
+            CHECK(memcmp(tile.rgb + 3 * 40 * y, img[0].rgb + 3 * 40 * (1 + 3 * y), 3 * 40) == 0);
+        /* Every pixel took a power of two from 16 to 256 samples, and
+         * stopped within the level unless it took the most. */
+        for (int i = 0; i < 40 * 30; i++) {
+            unsigned n = spp[0][i];
+            if (n < 16 || n > 256 || (n & (n - 1)) != 0 || (error[0][i] > 3 && n != 256))
+                test_fail(__FILE__, __LINE__, "%s pixel %d: %u samples, error %g", scenes[s], i,
+                          n, error[0][i]);
+        }
+        image_free(&tile);
+        for (int k = 0; k < 3; k++)
+            image_free(&img[k]);
+        scene_free(&sc);
+    }
+}
+
+static void render_noise_spends_samples_where_the_pixel_varies(void)
+{
+    /* Half the picture a flat wall, half a sphere's edge: the wall's
+     * pixels are exact at the first round, the edge's need more. */
+    const char *text = "0 0 -1\n-1 1 0\n1 1 0\n-1 -1 0\n16\n0 0 0\n0 0 -10 255 255 255\n"
+                       "sphere: 0 0 5 1.3 200 100 50 0\n";
+    NoiseOptions noise = {0.5, 16, 1024};
+    Indirect none = {0, 0, 0, 0};
+    unsigned spp[16 * 16];
+    float error[16 * 16];
+    int flat = 0, more = 0;
+    Image img;
+    Scene sc;
+    Error err;
+
+    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
+    render_noisy(&sc, noise, none, 2, 0, 0, &img, spp, error);
+    for (int i = 0; i < 16 * 16; i++) {
+        const unsigned char *p = img.rgb + 3 * i;
+        int inside = p[0] > 0, edge = error[i] > 0;
+        flat += !edge && spp[i] == 16;
+        more += edge && spp[i] > 16;
+        /* A pixel the whole sphere covers, or none of it, is flat. */
+        if (!inside && (spp[i] != 16 || error[i] != 0))
+            test_fail(__FILE__, __LINE__, "background pixel %d: %u samples, error %g", i, spp[i],
+                      error[i]);
+    }
+    CHECK(flat > 100);
+    CHECK(more > 10);
+    image_free(&img);
+    scene_free(&sc);
+}
+
 const TestCase render_tests[] = {
+    {"render_noise_is_each_pixels_own", render_noise_is_each_pixels_own},
+    {"render_noise_spends_samples_where_the_pixel_varies",
+     render_noise_spends_samples_where_the_pixel_varies},
     {"render_cutoff_leaves_out_no_more_than_it_counts",
      render_cutoff_leaves_out_no_more_than_it_counts},
     {"render_cutoff_leaves_out_shadow_rays", render_cutoff_leaves_out_shadow_rays},

@@ -112,7 +112,91 @@ static void sampler_disk_keeps_area_and_centre(void)
     CHECK_INT(total / 4, inner);
 }
 
+/* Counts the elementary boxes of shape 2^a x 2^(m - a), for every a,
+ * that do not hold exactly one of the 2^m points xy (a (0, m, 2)-net
+ * holds one in each). */
+static int sobol_net_faults(double (*xy)[2], unsigned m)
+{
+    unsigned n = 1u << m;
+    int faults = 0;
+
+    for (unsigned a = 0; a <= m; a++) {
+        unsigned char count[1024] = {0};
+        for (unsigned k = 0; k < n; k++) {
+            unsigned i = (unsigned)(xy[k][0] * (1u << a)), j = (unsigned)(xy[k][1] * (1u << (m - a)));
+            count[(j << a) | i]++;
+        }
+        for (unsigned b = 0; b < n; b++)
+            faults += count[b] != 1;
+    }
+    return faults;
+}
+
+static void sampler_sobol_prefixes_and_their_blocks_are_nets(void)
+{
+    static double xy[1024][2];
+
+    for (uint64_t seed = 1; seed <= 40; seed++) {
+        for (unsigned k = 0; k < 1024; k++) {
+            sampler_sobol(seed * 0x9e3779b97f4a7c15u, k, xy[k]);
+            if (!(xy[k][0] >= 0 && xy[k][0] < 1 && xy[k][1] >= 0 && xy[k][1] < 1))
+                test_fail(__FILE__, __LINE__, "seed %u, point %u outside the square",
+                          (unsigned)seed, k);
+        }
+        /* Every prefix of 2^m points, and every aligned block of 2^m
+         * (noise.h's quarters), one point a box. */
+        for (unsigned m = 0; m <= 10; m++)
+            for (unsigned start = 0; start + (1u << m) <= 1024; start += 1u << m) {
+                int f = sobol_net_faults(xy + start, m);
+                if (f)
+                    test_fail(__FILE__, __LINE__, "seed %u, points %u..%u: %d boxes off",
+                              (unsigned)seed, start, start + (1u << m) - 1, f);
+            }
+    }
+}
+
+static void sampler_sobol_sequences_differ_by_seed_and_agree_by_seed(void)
+{
+    double a[2], b[2], c[2];
+    int same = 0;
+
+    for (unsigned k = 0; k < 64; k++) {
+        sampler_sobol(7, k, a);
+        sampler_sobol(7, k, b);
+        sampler_sobol(8, k, c);
+        CHECK_NEAR(a[0], b[0], 0);
+        CHECK_NEAR(a[1], b[1], 0);
+        same += a[0] == c[0] || a[1] == c[1];
+    }
+    CHECK_INT(0, same);
+}
+
+static void sampler_progressive_layout_draws_sobol_points(void)
+{
+    SamplerGrid g = sampler_progressive();
+    double p[2], l[2], sq[2];
+    int same = 0;
+
+    /* Pixel, lens and a path's directions: each its own sequence, the
+     * same for the same pixel, sample and dimension. */
+    for (unsigned k = 0; k < 32; k++) {
+        double again[2];
+        sampler_sample(&g, 3, 4, k, SAMPLER_DIM_PIXEL, p);
+        sampler_sample(&g, 3, 4, k, SAMPLER_DIM_PIXEL, again);
+        sampler_sample(&g, 3, 4, k, SAMPLER_DIM_LENS, l);
+        sampler_square(&g, 3, 4, k, 12345, sq);
+        CHECK_NEAR(p[0], again[0], 0);
+        same += p[0] == l[0] || p[0] == sq[0] || l[0] == sq[0];
+    }
+    CHECK_INT(0, same);
+}
+
 const TestCase sampler_tests[] = {
+    {"sampler_sobol_prefixes_and_their_blocks_are_nets",
+     sampler_sobol_prefixes_and_their_blocks_are_nets},
+    {"sampler_sobol_sequences_differ_by_seed_and_agree_by_seed",
+     sampler_sobol_sequences_differ_by_seed_and_agree_by_seed},
+    {"sampler_progressive_layout_draws_sobol_points", sampler_progressive_layout_draws_sobol_points},
     {"sampler_grid_is_the_squarest_factoring", sampler_grid_is_the_squarest_factoring},
     {"sampler_one_sample_is_the_centre", sampler_one_sample_is_the_centre},
     {"sampler_patterns_are_multi_jittered", sampler_patterns_are_multi_jittered},

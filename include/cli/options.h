@@ -45,6 +45,13 @@ typedef struct {
     int width, height;       /* its W and H, 1..CAMERA_MAX_SIZE; 0: the
                                 scene's */
     int no_shadows;          /* --no-shadows: no shadow rays */
+    double noise;            /* --noise L: the error a pixel may keep, in
+                                levels (noise.h); -1: the scene's (none
+                                unless it asks); 0: none */
+    int min_spp, max_spp;    /* --min-spp, --max-spp; 0: the scene's, else
+                                NOISE_MIN_SPP and NOISE_MAX_SPP */
+    const char *spp_map;     /* --spp-map FILE: where the samples went, or
+                                NULL */
 } Options;
 
 /* What options_parse() found the command line asks for. */

@@ -36,6 +36,15 @@ int picture_parse(const char *name, const char *data, size_t len, Picture *pic, 
  * when memory runs out (pic unchanged). */
 int picture_box(Picture *pic, int width, int height, Error *err);
 
+/* Clamps every value of pic to 0..255, as an 8-bit image shows it (a
+ * PFM's unclamped colours against an 8-bit render). */
+void picture_clamp(Picture *pic);
+
+/* Replaces pic by its pixels that are not black in mask (of pic's size),
+ * in reading order, as one row; returns 0, or -1 with *err set when
+ * memory runs out or none is left (pic unchanged). */
+int picture_select(Picture *pic, const Picture *mask, Error *err);
+
 /* Releases pic's pixels. */
 void picture_free(Picture *pic);
 

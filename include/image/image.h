@@ -24,6 +24,7 @@ typedef struct {
                            NULL unless image_keep_linear() was called */
     double *encode;     /* COLOUR_LEVELS - 1 thresholds of its encoding
                            (colour_encode()), owned; NULL: linear bytes */
+    double gamma;       /* the encoding's gamma; 1 for linear bytes */
 } Image;
 
 /* Allocates a black width x height image; returns 0, or -1 when memory runs

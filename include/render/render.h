@@ -6,12 +6,15 @@
  * sample per pixel the ray goes through the pixel's centre (and the lens's
  * centre); with n, through n points of the pixel (and of the lens) placed by
  * sampler.h, and the pixel is the mean of their colours, taken before the
- * colour is clamped and rounded.
+ * colour is clamped and rounded. Under --noise a pixel takes as many
+ * samples as its own error estimate asks for (noise.h), so the bytes still
+ * depend on nothing but the pixel.
  */
 #ifndef RAYTRACE_RENDER_H
 #define RAYTRACE_RENDER_H
 
 #include "image/image.h"
+#include "render/noise.h"
 #include "render/trace.h"
 #include "scene/scene.h"
 
@@ -37,6 +40,13 @@ typedef struct {
                                 row_step 0: the whole picture */
     int no_shadows;          /* 1: cast no shadow rays (every light reaches
                                 every point facing it) */
+    NoiseOptions noise;      /* adaptive sampling (noise.h): level 0, off
+                                (samples a pixel then); else samples is
+                                unused and the cut-off off */
+    unsigned *spp;           /* under noise, receives the samples each pixel
+                                took (img's layout, one a pixel), or NULL */
+    float *error;            /* under noise, receives each pixel's
+                                estimated error (noise_error()), or NULL */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's

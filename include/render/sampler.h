@@ -9,6 +9,16 @@
  * from a hash of the pixel's coordinates, the sample's number and the
  * dimension (pixel area, lens disk): no state, no allocation, and the same
  * numbers whichever thread renders the pixel.
+ *
+ * Under --noise (render.h) a pixel takes samples in rounds, as many as its
+ * error needs, so its points must come as a sequence whose every prefix is
+ * well spread: the progressive layout gives each pixel and dimension its
+ * own Owen-scrambled Sobol sequence (Owen 1995; hashed as Burley,
+ * "Practical hash-based Owen scrambling", JCGT 2020, the index shuffled
+ * too, so that dimensions are not correlated). Its points 2^m j to
+ * 2^m (j + 1) - 1, for any m and j, fill the square one to each of its
+ * 2^m elementary boxes of every shape (a (0, m, 2)-net): the first 2^m
+ * points, and each quarter of them, which noise.h compares.
  */
 #ifndef RAYTRACE_SAMPLER_H
 #define RAYTRACE_SAMPLER_H
@@ -23,19 +33,29 @@ enum {
     SAMPLER_DIM_LENS = 1   /* positions on the lens */
 };
 
-/* The layout of n samples: columns x rows = n. */
+/* The layout of n samples: columns x rows = n; or progressive. */
 typedef struct {
     unsigned n;    /* samples, 1..SAMPLER_MAX */
     unsigned cols; /* largest divisor of n at most sqrt(n) */
     unsigned rows; /* n / cols */
+    int progressive; /* 1: Owen-scrambled Sobol points, as many as asked
+                        for (n, cols and rows unused) */
 } SamplerGrid;
 
 /* Returns the layout of n samples (1 <= n <= SAMPLER_MAX). */
 SamplerGrid sampler_grid(unsigned n);
 
+/* Returns the progressive layout. */
+SamplerGrid sampler_progressive(void);
+
+/* Stores in xy point k (k < 2^32) of the Owen-scrambled Sobol sequence of
+ * seed: a point of [0, 1)^2. */
+void sampler_sobol(uint64_t seed, uint32_t k, double xy[2]);
+
 /* Stores in xy sample k (0 <= k < g->n) of pixel (px, py) in dimension dim:
  * a point of the unit square [0, 1]^2. With one sample it is the centre,
- * (0.5, 0.5). */
+ * (0.5, 0.5). In a progressive layout, point k of the pixel's sequence for
+ * dim. */
 void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2]);
 
 /* Returns the key of the branch-th ray leaving a point whose ray had key
@@ -54,7 +74,8 @@ void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64
 
 /* Stores in xy point k (0 <= k < g->n) of pixel (px, py)'s multi-jittered
  * pattern for the rays of path `key`, as sampler_hemisphere() draws its
- * own: a point of [0, 1)^2, random for one point. */
+ * own: a point of [0, 1)^2, random for one point (progressive layout:
+ * point k of the pixel's sequence for path key). */
 void sampler_square(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,
                     double xy[2]);
 

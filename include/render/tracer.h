@@ -48,7 +48,7 @@ typedef struct {
  * pixel's `of`; what the indirect rays' directions are drawn from. */
 typedef struct {
     int x, y;         /* the pixel */
-    unsigned k, of;   /* sample k of `of` */
+    unsigned k, of;   /* sample k of `of` (progressive layout: of unused) */
 } TraceSample;
 
 typedef struct {

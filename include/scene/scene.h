@@ -61,6 +61,7 @@ typedef enum {
 /* The most ambient occlusion or global illumination rays a point casts,
  * and the most diffuse bounces gathered. */
 enum { SCENE_MAX_INDIRECT = 4096, SCENE_MAX_BOUNCES = 64 };
+enum { SCENE_MAX_SPP = 1 << 20 }; /* most samples a pixel under --noise */
 
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
@@ -182,6 +183,11 @@ typedef struct Scene {
     int gi_samples;         /* global illumination rays it asks for (c GI);
                                -1 when it does not say */
     int gi_bounces;         /* their bounces; 0: not said */
+    double noise;           /* the error a pixel may keep (MPL c Noise;
+                               render/noise.h), levels; 0: not said */
+    int noise_min_spp;      /* its least and most samples a pixel, 1 to
+                               SCENE_MAX_SPP; 0: not said */
+    int noise_max_spp;
     int length_exponent;    /* every length above is the scene file's times
                                2^length_exponent: 0 unless scene_fit_scale()
                                (scale.h)

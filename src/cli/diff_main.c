@@ -33,6 +33,11 @@ static const char diff_help[] =
     "                      covers in both images (a box filter, 1 <= W <= the\n"
     "                      width, 1 <= H <= the height): noise and edges averaged\n"
     "                      out, the pictures' look compared\n"
+    "  -c, --clamp         clamp both to 0..255 first, as an 8-bit image shows\n"
+    "                      them (a PFM's colours against an 8-bit render)\n"
+    "  -o, --only MASK     compare only the pixels that are not black in MASK,\n"
+    "                      an image of the same size (raytrace --spp-map's:\n"
+    "                      the pixels that took more than the least samples)\n"
     "  -q, --quiet         print nothing; the exit status says it all\n"
     "  -h, --help          print this help and exit\n"
     "  -V, --version       print the version and exit\n"
@@ -114,13 +119,36 @@ static int diff_write_image(const char *path, const Picture *a, const Picture *b
     return 0;
 }
 
+/* Keeps of a and b (of one size) the pixels not black in the image at
+ * mask_path; returns 0, or -1 after saying why not. */
+static int diff_select(const char *mask_path, Picture *a, Picture *b)
+{
+    Picture mask;
+    Error err;
+    int rc = -1;
+
+    if (picture_load(mask_path, &mask, &err) != 0) {
+        diff_report(&err);
+        return -1;
+    }
+    if (mask.width != a->width || mask.height != a->height)
+        fprintf(stderr, "raytrace-diff: error: --only %s is %d x %d, the images %d x %d\n",
+                mask_path, mask.width, mask.height, a->width, a->height);
+    else if (picture_select(a, &mask, &err) != 0 || picture_select(b, &mask, &err) != 0)
+        fprintf(stderr, "raytrace-diff: error: --only %s: %s\n", mask_path, err.message);
+    else
+        rc = 0;
+    picture_free(&mask);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     static const char *const channel[3] = {"red", "green", "blue"};
-    const char *paths[2], *diff_path = NULL, *box = NULL;
+    const char *paths[2], *diff_path = NULL, *box = NULL, *only = NULL;
     int box_w = 0, box_h = 0;
     double tolerance = 0, max_pixels = 0;
-    int npaths = 0, quiet = 0, status;
+    int npaths = 0, quiet = 0, clamp = 0, status, width, height;
     Picture a, b;
     Comparison c;
     Error err;
@@ -135,6 +163,12 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
             quiet = 1;
+        } else if (strcmp(arg, "-c") == 0 || strcmp(arg, "--clamp") == 0) {
+            clamp = 1;
+        } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--only") == 0) {
+            if (i + 1 >= argc)
+                return diff_usage("option '%s' needs a value", arg);
+            only = argv[++i];
         } else if (strcmp(arg, "-t") == 0 || strcmp(arg, "--tolerance") == 0 ||
                    strcmp(arg, "-m") == 0 || strcmp(arg, "--max-pixels") == 0 ||
                    strcmp(arg, "-d") == 0 || strcmp(arg, "--diff") == 0) {
@@ -190,6 +224,19 @@ int main(int argc, char **argv)
         picture_free(&b);
         return 2;
     }
+    if (clamp) {
+        picture_clamp(&a);
+        picture_clamp(&b);
+    }
+    width = a.width;
+    height = a.height;
+    if (only && box)
+        fprintf(stderr, "raytrace-diff: error: --only and --box cannot be combined\n");
+    if ((only && box) || (only && diff_select(only, &a, &b) != 0)) {
+        picture_free(&a);
+        picture_free(&b);
+        return 2;
+    }
     if (box && (box_w > a.width || box_h > a.height)) {
         fprintf(stderr, "raytrace-diff: error: --box %s: the images are %d x %d, fewer pixels "
                         "than boxes\n",
@@ -209,8 +256,11 @@ int main(int argc, char **argv)
     if (!quiet) {
         const double *p = a.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
         const double *q = b.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
-        printf("reference: %s: %d x %d, %s\n", paths[0], a.width, a.height, a.format);
-        printf("image:     %s: %d x %d, %s\n", paths[1], b.width, b.height, b.format);
+        printf("reference: %s: %d x %d, %s\n", paths[0], width, height, a.format);
+        printf("image:     %s: %d x %d, %s\n", paths[1], width, height, b.format);
+        if (only)
+            printf("compared:  the %d pixels not black in %s (numbered in reading order)\n",
+                   a.width, only);
         if (box)
             printf("compared:  %d x %d boxes, each the mean of the pixels it covers\n", box_w,
                    box_h);

@@ -227,6 +227,22 @@ static void main_buffers(const Scene *scene)
         }
 }
 
+/* Returns how ropts samples pixels, for a summary: "4 samples per pixel",
+ * or under --noise its level and bounds (the text is overwritten by the
+ * next call). */
+static const char *main_samples(const RenderOptions *ropts)
+{
+    static char text[96];
+
+    if (ropts->noise.level > 0)
+        snprintf(text, sizeof text, "--noise %g (%u to %u samples a pixel)", ropts->noise.level,
+                 ropts->noise.min_spp, ropts->noise.max_spp);
+    else
+        snprintf(text, sizeof text, "%d sample%s per pixel", ropts->samples,
+                 ropts->samples == 1 ? "" : "s");
+    return text;
+}
+
 /* Prints the -v summary: size, threads, rays by kind, the model when it
  * is seed 001's, time, speed, peak memory. */
 static void main_statistics(const Image *img, const RenderOptions *ropts, SceneModel model,
@@ -236,9 +252,8 @@ static void main_statistics(const Image *img, const RenderOptions *ropts, SceneM
                              c->occlusion + c->gather;
     char indirect[96] = "";
 
-    fprintf(stderr, "raytrace: %d x %d pixels, %d sample%s per pixel, %d thread%s\n",
-            img->width, img->height, ropts->samples, ropts->samples == 1 ? "" : "s", threads,
-            threads == 1 ? "" : "s");
+    fprintf(stderr, "raytrace: %d x %d pixels, %s, %d thread%s\n", img->width, img->height,
+            main_samples(ropts), threads, threads == 1 ? "" : "s");
     if (ropts->indirect.ao_samples > 0 || ropts->indirect.gi_samples > 0)
         snprintf(indirect, sizeof indirect, "%llu occlusion, %llu gathering, ", c->occlusion,
                  c->gather);
@@ -346,15 +361,16 @@ fail:
     return 1;
 }
 
-/* Sets aside from the memory limit what the image and its writing need,
+/* Sets aside from the memory limit what the image and its writing need
+ * (and `extra` bytes more),
  * failing when the scene leaves less; then builds the scene's bounding
  * volume hierarchy (unless opts say not to), failing when it would pass
  * the limit and warning when memory runs out for it. Returns 0, or -1 with
  * *err set. */
-static int main_prepare(const Options *opts, const WriterOptions *wopts, Scene *scene,
-                        Error *err)
+static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t extra,
+                        Scene *scene, Error *err)
 {
-    size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height);
+    size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height) + extra;
     char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
     size_t n = scene_bounded_count(scene);
     int rc;
@@ -461,6 +477,37 @@ static void main_note(const Options *opts, const char *what)
         fprintf(stderr, "raytrace: note: %s\n", what);
 }
 
+/* Sets ropts' adaptive sampling from the command line, else the scene
+ * (noise.h); says when an option of it, or -s under it, changes nothing. */
+static void main_noise(const Options *opts, const Scene *scene, RenderOptions *ropts)
+{
+    NoiseOptions *n = &ropts->noise;
+    int most = opts->max_spp ? opts->max_spp : scene->noise_max_spp;
+    int least = opts->min_spp ? opts->min_spp : scene->noise_min_spp;
+
+    n->level = opts->noise >= 0 ? opts->noise : scene->noise;
+    n->max_spp = most ? (unsigned)most : NOISE_MAX_SPP;
+    n->min_spp = least ? (unsigned)least : noise_default_min(n->level);
+    /* A bound given alone moves the other's default out of its way. */
+    if (n->min_spp > n->max_spp) {
+        if (least)
+            n->max_spp = n->min_spp;
+        else
+            n->min_spp = n->max_spp;
+    }
+    if (n->level > 0 && opts->samples)
+        main_note(opts, "--spp changes nothing here: --noise takes as many samples a pixel as "
+                        "its error needs (bounded by --min-spp and --max-spp)");
+    if (n->level > 0)
+        return;
+    if (opts->min_spp || opts->max_spp)
+        main_note(opts, "--min-spp and --max-spp change nothing without --noise: every pixel "
+                        "takes the samples -s asks for");
+    if (opts->spp_map)
+        main_note(opts, "--spp-map writes nothing without --noise: every pixel takes the "
+                        "samples -s asks for");
+}
+
 /* Applies the command line's choices about the picture to scene (its
  * model and size) and sets ropts' depth, samples and indirect light from
  * them; says once, on standard error, of each option given that can
@@ -480,6 +527,7 @@ static void main_adjust(const Options *opts, Scene *scene, RenderOptions *ropts)
     ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
     ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
     ropts->no_shadows = opts->no_shadows;
+    main_noise(opts, scene, ropts);
     main_indirect(opts, scene, &ropts->indirect);
     if (opts->ao > 0 && !seed && !main_has_ambient(scene))
         main_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
@@ -513,6 +561,13 @@ static uint64_t main_fingerprint(const Scene *scene, const RenderOptions *ropts)
     h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
     h = hash_u64(h, (uint64_t)scene->model);
     h = hash_u64(h, (uint64_t)ropts->no_shadows);
+    if (ropts->noise.level > 0) { /* else the hash of earlier versions */
+        double level = ropts->noise.level;
+        uint64_t bits;
+        memcpy(&bits, &level, sizeof bits);
+        h = hash_u64(h, bits);
+        h = hash_u64(h, (uint64_t)ropts->noise.min_spp << 32 | ropts->noise.max_spp);
+    }
     h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
     return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
 }
@@ -531,6 +586,124 @@ static int main_tile(const Options *opts, const Scene *scene, const RenderOption
     return -1;
 }
 
+/* Says, in *err, why opts' --spp-map may not be written: it is the
+ * output itself; returns 0 when it may. */
+static int main_spp_map_target(const Options *opts, Error *err)
+{
+    if (strcmp(opts->spp_map, "-") == 0 || strcmp(opts->spp_map, opts->output_path) == 0 ||
+        (strcmp(opts->output_path, "-") != 0 && main_same_file(opts->output_path, opts->spp_map))) {
+        error_set(err, opts->spp_map,
+                  "--spp-map must name a file of its own, not the output or standard output");
+        return -1;
+    }
+    return 0;
+}
+
+/* Returns the bytes main_noise_record() will take for scene's image. */
+static size_t main_noise_memory(const Options *opts, const RenderOptions *ropts,
+                                const Scene *scene)
+{
+    if (!(ropts->noise.level > 0) || !(opts->verbose || opts->spp_map))
+        return 0;
+    return (size_t)scene->camera.width * (size_t)scene->camera.height *
+           (sizeof *ropts->spp + sizeof *ropts->error);
+}
+
+/* Gives ropts, under --noise, the arrays the samples and errors of img's
+ * pixels are recorded in when -v or --spp-map will show them; returns 0,
+ * or -1 when memory runs out. */
+static int main_noise_record(const Options *opts, const Image *img, RenderOptions *ropts)
+{
+    size_t n = (size_t)img->width * (size_t)img->height;
+
+    if (!(ropts->noise.level > 0) || !(opts->verbose || opts->spp_map))
+        return 0;
+    ropts->spp = malloc(n * sizeof *ropts->spp);
+    ropts->error = malloc(n * sizeof *ropts->error);
+    return ropts->spp && ropts->error ? 0 : -1;
+}
+
+/* Releases what main_noise_record() gave ropts. */
+static void main_noise_free(RenderOptions *ropts)
+{
+    free(ropts->spp);
+    free(ropts->error);
+    ropts->spp = NULL;
+    ropts->error = NULL;
+}
+
+/* Prints, for -v, the samples n pixels took under --noise and the errors
+ * they reached. */
+static void main_noise_statistics(const Options *opts, const RenderOptions *ropts, size_t n)
+{
+    NoiseSummary s;
+    size_t short_of = 0;
+
+    noise_summarise(ropts->spp, ropts->error, n, &s);
+    for (size_t i = 0; i < n; i++)
+        short_of += ropts->error[i] > ropts->noise.level;
+    fprintf(stderr,
+            "raytrace: --noise %g: samples a pixel %u to %u: mean %.1f, most %u; pixels by "
+            "samples:",
+            ropts->noise.level, ropts->noise.min_spp, ropts->noise.max_spp, s.mean_spp,
+            s.max_spp);
+    for (int b = 0; b < NOISE_BINS; b++)
+        if (s.bins[b])
+            fprintf(stderr, " %s%u %.1f%%", b == NOISE_BINS - 1 ? ">" : "<=",
+                    b == NOISE_BINS - 1 ? 2u << b : 4u << b, 100.0 * s.bins[b] / n);
+    fprintf(stderr, "\nraytrace: estimated error (one standard error, 68%% confidence): mean "
+                    "%.3f, worst %.3f levels; %zu pixel%s short of %g at --max-spp\n",
+            s.mean_error, s.worst_error, short_of, short_of == 1 ? "" : "s", ropts->noise.level);
+    if (opts->spp_map)
+        fprintf(stderr, "raytrace: map of samples: %s (black %u or fewer, white %u, log scale)\n",
+                opts->spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
+}
+
+/* Writes img to path as wopts say, replacing path only once the whole image
+ * is written; returns 0, or -1 with *err set (and nothing left of a new
+ * file). */
+static int main_write(const char *path, const Image *img, const WriterOptions *wopts,
+                      Error *err)
+{
+    OutFile out;
+
+    if (main_open_output(&out, path, err) != 0)
+        return -1;
+    /* An interrupt from here on still finds main_temp_path: before the rename
+     * it removes the unfinished file, after it the unlink finds nothing. */
+    if (writer_write(out.fp, img, wopts) != 0) {
+        error_set(err, path, "cannot write the image: %s", strerror(errno));
+        outfile_abort(&out, err);
+        main_temp_path = NULL;
+        return -1;
+    }
+    if (outfile_commit(&out, err) != 0) {
+        main_temp_path = NULL;
+        return -1;
+    }
+    main_temp_path = NULL;
+    return 0;
+}
+
+/* Writes opts' --spp-map: a width x height heat map of the samples ropts
+ * recorded, in the format its name says; returns 0, or -1 with *err. */
+static int main_spp_map(const Options *opts, const RenderOptions *ropts, int width, int height,
+                        Error *err)
+{
+    WriterOptions w = {writer_format_for(opts->spp_map), 0, DEFLATE_FIXED, 95, 1, NULL};
+    Image map;
+    int rc;
+
+    if (image_init(&map, width, height) != 0) {
+        error_set(err, opts->spp_map, "out of memory for the map of samples");
+        return -1;
+    }
+    noise_heat_map(ropts->spp, ropts->noise.min_spp, ropts->noise.max_spp, &map);
+    rc = main_write(opts->spp_map, &map, &w, err);
+    image_free(&map);
+    return rc;
+}
+
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
@@ -539,7 +712,7 @@ static int main_render(const Options *opts)
                            opts->jpeg_444, NULL};
     /* The linear colours of PFM would show what the cut-off leaves out. */
     RenderOptions ropts = {0, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
     RayCounts counts = {0};
     Tile tile;
     char record[TILE_RECORD_MAX];
@@ -547,7 +720,6 @@ static int main_render(const Options *opts)
     double start = main_now(), read_time, accel_time, render_time, write_time;
     Scene scene;
     Image img;
-    OutFile out;
     Error err;
     int threads;
 
@@ -562,7 +734,10 @@ static int main_render(const Options *opts)
     /* An output that cannot be made is said before a long render. */
     if (main_check_target(opts, opts->output_path, &err) != 0 ||
         outfile_check(opts->output_path, &err) != 0 ||
-        main_prepare(opts, &wopts, &scene, &err) != 0)
+        (ropts.noise.level > 0 && opts->spp_map &&
+         (main_check_target(opts, opts->spp_map, &err) != 0 ||
+          main_spp_map_target(opts, &err) != 0 || outfile_check(opts->spp_map, &err) != 0)) ||
+        main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
         goto fail_scene;
     accel_time = main_now() - start - read_time;
     rows = scene.camera.height;
@@ -580,7 +755,8 @@ static int main_render(const Options *opts)
     }
     if (main_image(opts, &wopts, &scene, rows, &img, &err) != 0)
         goto fail_scene;
-    if (scene.model == SCENE_MODEL_SEED001 && image_encode_gamma(&img, SEED001_GAMMA) != 0) {
+    if ((scene.model == SCENE_MODEL_SEED001 && image_encode_gamma(&img, SEED001_GAMMA) != 0) ||
+        main_noise_record(opts, &img, &ropts) != 0) {
         error_set(&err, opts->scene_path, "out of memory");
         goto fail_image_only;
     }
@@ -588,20 +764,11 @@ static int main_render(const Options *opts)
      * done, so that nothing is left of it whatever ends the render. */
     main_catch_signals();
     threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
-    if (main_open_output(&out, opts->output_path, &err) != 0)
-        goto fail_image;
     write_time = main_now();
-    /* An interrupt from here on still finds main_temp_path: before the rename
-     * it removes the unfinished file, after it the unlink finds nothing. */
-    if (writer_write(out.fp, &img, &wopts) != 0) {
-        error_set(&err, opts->output_path, "cannot write the image: %s", strerror(errno));
-        outfile_abort(&out, &err);
-        goto fail_image;
-    }
-    if (outfile_commit(&out, &err) != 0)
+    if (main_write(opts->output_path, &img, &wopts, &err) != 0 ||
+        (opts->spp_map && ropts.spp && main_spp_map(opts, &ropts, img.width, img.height, &err) != 0))
         goto fail_image;
     write_time = main_now() - write_time;
-    main_temp_path = NULL;
     if (opts->verbose) {
         fprintf(stderr, "raytrace: read the scene in %.3f s\n", read_time);
         if (scene.accel)
@@ -611,17 +778,19 @@ static int main_render(const Options *opts)
                     scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
         main_buffers(&scene);
         main_statistics(&img, &ropts, scene.model, threads, &counts, render_time);
+        if (ropts.spp)
+            main_noise_statistics(opts, &ropts, (size_t)img.width * (size_t)img.height);
         fprintf(stderr, "raytrace: wrote the image in %.3f s\n", write_time);
     } else if (!opts->quiet && isatty(STDERR_FILENO)) {
         fprintf(stderr,
-                "raytrace: wrote %s: %d x %d pixels, %zu object%s, %d sample%s per pixel, "
-                "%.2f s, %d thread%s\n",
+                "raytrace: wrote %s: %d x %d pixels, %zu object%s, %s, %.2f s, %d thread%s\n",
                 strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
                 img.width, img.height, scene_object_count(&scene),
-                scene_object_count(&scene) == 1 ? "" : "s", ropts.samples,
-                ropts.samples == 1 ? "" : "s", main_now() - start, threads,
+                scene_object_count(&scene) == 1 ? "" : "s", main_samples(&ropts),
+                main_now() - start, threads,
                 threads == 1 ? "" : "s");
     }
+    main_noise_free(&ropts);
     image_free(&img);
     scene_free(&scene);
     return 0;
@@ -629,6 +798,7 @@ static int main_render(const Options *opts)
 fail_image:
     main_temp_path = NULL;
 fail_image_only:
+    main_noise_free(&ropts);
     image_free(&img);
 fail_scene:
     main_report(&err);

@@ -10,6 +10,7 @@
 #include "image/tile.h"
 #include "image/writer.h"
 #include "math/number.h"
+#include "render/noise.h"
 #include "render/sampler.h"
 #include "render/tracer.h"
 #include "scene/scene.h"
@@ -38,6 +39,17 @@ const char *const *options_help(void)
         "                     (anti-aliasing; a lens: record blurs with them);\n"
         "                     default: the scene's samples: record, else 1 (MPL\n"
         "                     scenes: 4)\n"
+        "  --noise L          take as many samples a pixel as it needs for its\n"
+        "                     estimated error to be at most L levels (0 to 255;\n"
+        "                     one standard error: 68% of pixels within L of the\n"
+        "                     converged picture; 0: off), camera, lens, occlusion\n"
+        "                     and gathering rays together; wins over -s\n"
+        "  --min-spp N        under --noise, at least N samples a pixel (default\n"
+        "                     64 / L rounded up to a power of two, 16 to 256)\n"
+        "  --max-spp N        under --noise, at most N samples a pixel (default\n"
+        "                     4096; up to 1048576)\n"
+        "  --spp-map FILE     under --noise, also write a heat map of the samples\n"
+        "                     each pixel took (black: --min-spp, white: --max-spp)\n"
         "  --size WxH         render W x H pixels (1 to 32768 each) of the scene's\n"
         "                     view, its height kept (default: the scene's size)\n"
         "  --model M          light an MPL scene by M: seed001 (the default: seed\n"
@@ -230,6 +242,10 @@ static const OptionSpec options_table[] = {
     {"--ao-distance", OPT(NULL, OPTION_REAL, ao_distance), 0, 1e300, NULL, 0},
     {"--gi", OPT(NULL, OPTION_INT, gi), 0, SCENE_MAX_INDIRECT, NULL, 0},
     {"--gi-bounces", OPT(NULL, OPTION_INT, gi_bounces), 1, SCENE_MAX_BOUNCES, NULL, 0},
+    {"--noise", OPT(NULL, OPTION_REAL, noise), 0, 255, NULL, 0},
+    {"--min-spp", OPT(NULL, OPTION_INT, min_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
+    {"--max-spp", OPT(NULL, OPTION_INT, max_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
+    {"--spp-map", OPT(NULL, OPTION_TEXT, spp_map), 0, 0, NULL, 0},
 };
 #undef OPT
 
@@ -425,6 +441,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->cutoff = OPTIONS_DEFAULT_CUTOFF;
     opts->memory_limit = OPTIONS_DEFAULT_MEMORY_LIMIT;
     opts->ao = opts->gi = -1;
+    opts->noise = -1;
     opts->jpeg_quality = 90;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
@@ -479,5 +496,14 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
         return OPTIONS_USAGE;
     if (opts->size && options_image_size(opts, msg, msg_size) != 0)
         return OPTIONS_USAGE;
+    if (opts->min_spp && opts->max_spp && opts->min_spp > opts->max_spp) {
+        snprintf(msg, msg_size, "--min-spp %d is more than --max-spp %d", opts->min_spp,
+                 opts->max_spp);
+        return OPTIONS_USAGE;
+    }
+    if (opts->spp_map && !*opts->spp_map) {
+        snprintf(msg, msg_size, "--spp-map needs a file name");
+        return OPTIONS_USAGE;
+    }
     return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;
 }

@@ -1,6 +1,7 @@
 /* compare.c: loading and comparing renders (see compare.h). */
 #include "image/compare.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +13,43 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
+
+void picture_clamp(Picture *pic)
+{
+    size_t n = 3 * (size_t)pic->width * (size_t)pic->height;
+
+    for (size_t i = 0; i < n; i++)
+        pic->rgb[i] = pic->rgb[i] > 0 ? (pic->rgb[i] < 255 ? pic->rgb[i] : 255) : 0;
+}
+
+int picture_select(Picture *pic, const Picture *mask, Error *err)
+{
+    size_t n = (size_t)pic->width * (size_t)pic->height, kept = 0;
+    double *rgb;
+
+    for (size_t i = 0; i < n; i++)
+        kept += mask->rgb[3 * i] != 0 || mask->rgb[3 * i + 1] != 0 || mask->rgb[3 * i + 2] != 0;
+    if (kept == 0 || kept > (size_t)INT_MAX) {
+        error_set(err, "", kept ? "too many pixels" : "the mask is black: no pixel to compare");
+        return -1;
+    }
+    rgb = malloc(3 * kept * sizeof *rgb);
+    if (!rgb) {
+        error_set(err, "", "out of memory");
+        return -1;
+    }
+    kept = 0;
+    for (size_t i = 0; i < n; i++)
+        if (mask->rgb[3 * i] != 0 || mask->rgb[3 * i + 1] != 0 || mask->rgb[3 * i + 2] != 0) {
+            memcpy(rgb + 3 * kept, pic->rgb + 3 * i, 3 * sizeof *rgb);
+            kept++;
+        }
+    free(pic->rgb);
+    pic->rgb = rgb;
+    pic->width = (int)kept;
+    pic->height = 1;
+    return 0;
+}
 
 void picture_free(Picture *pic)
 {

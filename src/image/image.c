@@ -16,6 +16,7 @@ int image_init(Image *img, int width, int height)
     img->height = height;
     img->linear = NULL;
     img->encode = NULL;
+    img->gamma = 1;
     img->rgb = calloc(image_size(width, height), 1);
     if (!img->rgb) {
         img->width = img->height = 0;
@@ -46,6 +47,7 @@ int image_encode_gamma(Image *img, double gamma)
         t[b - 1] = 255 * power((b - 0.5) / 255, gamma);
     free(img->encode);
     img->encode = t;
+    img->gamma = gamma;
     return 0;
 }
 
@@ -57,5 +59,6 @@ void image_free(Image *img)
     img->rgb = NULL;
     img->linear = NULL;
     img->encode = NULL;
+    img->gamma = 1;
     img->width = img->height = 0;
 }

@@ -5,6 +5,7 @@
 
 #include "accel/bvh.h"
 #include "render/cut.h"
+#include "render/noise.h"
 #include "render/sampler.h"
 #include "render/seed001.h"
 #include "render/trace.h"
@@ -37,6 +38,25 @@ RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray)
     return t->scene->model == SCENE_MODEL_SEED001 ? seed001_trace(t, ray) : trace_ray(t, ray);
 }
 
+/* Returns the colour of sample k of pixel (x, y) (the grid's point k of
+ * the pixel, through its point k of the lens), traced by t. */
+RENDER_INLINE Colour render_sample(const Tracer *t, const SamplerGrid *g, int x, int y,
+                                   unsigned k)
+{
+    const Camera *cam = &t->scene->camera;
+    double p[2], l[2], disk[2] = {0, 0};
+    Ray ray;
+
+    sampler_sample(g, x, y, k, SAMPLER_DIM_PIXEL, p);
+    if (cam->aperture > 0) {
+        sampler_sample(g, x, y, k, SAMPLER_DIM_LENS, l);
+        sampler_disk(l, disk);
+    }
+    ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
+    t->sample->k = k;
+    return render_trace(t, &ray);
+}
+
 /* Returns the mean colour of the grid's samples of pixel (x, y) of row,
  * traced by t (leaving out what its cut-off allows). One sample is the
  * pixel's centre through the lens's centre. */
@@ -55,20 +75,51 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
                                : camera_ray(cam, x + 0.5, y + 0.5);
         return render_trace(t, &ray);
     }
-    for (unsigned k = 0; k < g->n; k++) {
-        double p[2], l[2], disk[2] = {0, 0};
-        Ray ray;
-
-        sampler_sample(g, x, y, k, SAMPLER_DIM_PIXEL, p);
-        if (cam->aperture > 0) {
-            sampler_sample(g, x, y, k, SAMPLER_DIM_LENS, l);
-            sampler_disk(l, disk);
-        }
-        ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
-        t->sample->k = k;
-        sum = colour_add(sum, render_trace(t, &ray));
-    }
+    for (unsigned k = 0; k < g->n; k++)
+        sum = colour_add(sum, render_sample(t, g, x, y, k));
     return colour(sum.r / g->n, sum.g / g->n, sum.b / g->n);
+}
+
+/* A pixel under --noise: what its samples are traced with. */
+typedef struct {
+    const Tracer *t;
+    const SamplerGrid *g; /* progressive */
+    int x, y;
+} RenderAdaptive;
+
+/* Returns the colour of sample k of the pixel ctx (a RenderAdaptive). */
+static Colour render_adaptive_sample(void *ctx, unsigned k)
+{
+    const RenderAdaptive *a = ctx;
+
+    return render_sample(a->t, a->g, a->x, a->y, k);
+}
+
+/* Returns pixel (x, y) sampled under opts->noise: rounds of samples of its
+ * sequences (g progressive) until its error on scale is within the level
+ * or it has taken the most (noise.h); stores in *spp the samples taken and
+ * in *error the error reached. */
+static Colour render_adaptive(const Tracer *t, const RenderOptions *opts, const SamplerGrid *g,
+                              NoiseScale scale, int x, int y, unsigned *spp, float *error)
+{
+    RenderAdaptive a = {t, g, x, y};
+    NoisePixel p = {{{0, 0, 0}}, 0};
+    unsigned n = noise_first(&opts->noise);
+    double e;
+
+    t->sample->x = x;
+    t->sample->y = y;
+    for (;;) {
+        t->counts->primary += n - p.n;
+        noise_take(&p, n, render_adaptive_sample, &a);
+        e = noise_error(&p, scale);
+        n = noise_next(&opts->noise, p.n, e);
+        if (n == p.n)
+            break;
+    }
+    *spp = p.n;
+    *error = (float)e;
+    return noise_mean(&p);
 }
 
 /* Says whether every value from x - eta to x + slack + eta quantises to the
@@ -151,6 +202,17 @@ RENDER_INLINE Colour render_pixel(const Tracer *t, const RenderOptions *opts,
  * by half, docs/log.md). */
 enum { RENDER_TILE = 32 };
 
+/* Returns the greatest common divisor of a and b (> 0). */
+static long long render_gcd(long long a, long long b)
+{
+    while (b) {
+        long long r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
+}
+
 /* Returns the number of tiles that cover n pixels in a line. */
 static int render_tiles_over(int n)
 {
@@ -167,15 +229,45 @@ static void render_tile(const Tracer *t, const RenderOptions *opts, const Sample
     int x0 = k % across * RENDER_TILE, y0 = k / across * RENDER_TILE;
     int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
+    NoiseScale scale = noise_scale_of(img);
 
     for (int y = y0; y < y1; y++) {
         /* The picture's row: the image's, or a tile's (tile.h). */
         int py = opts->row_step > 0 ? opts->row_first + y * opts->row_step : y;
         RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
 
-        for (int x = x0; x < x1; x++)
-            image_set(img, x, y, render_pixel(t, opts, g, &row, x, py));
+        for (int x = x0; x < x1; x++) {
+            size_t i = (size_t)y * (size_t)img->width + (size_t)x;
+            unsigned spp;
+            float error;
+
+            if (opts->noise.level > 0) {
+                image_set(img, x, y, render_adaptive(t, opts, g, scale, x, py, &spp, &error));
+                if (opts->spp)
+                    opts->spp[i] = spp;
+                if (opts->error)
+                    opts->error[i] = error;
+            } else {
+                image_set(img, x, y, render_pixel(t, opts, g, &row, x, py));
+            }
+        }
     }
+}
+
+/* Returns the tile rendered k-th of `tiles`: under --noise, tiles spread
+ * over the picture (a stride coprime with their number), so that those
+ * done are a fair sample of the work and the progress bar's share of
+ * tiles done that of the work; else k. */
+static int render_tile_order(int k, int tiles, int noise)
+{
+    long long stride;
+
+    if (!noise || tiles < 3)
+        return k;
+    stride = (long long)(tiles * 0.618) | 1;
+    while (render_gcd(stride, tiles) != 1)
+        stride += 2;
+    return (int)(k * stride % tiles);
 }
 
 /* Adds the counts of b to a. */
@@ -191,6 +283,13 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
     a->gather += b->gather;
 }
 
+/* Returns the grid of the `rays` indirect rays (occlusion or gathering,
+ * 0: none) a point casts for each of a pixel's samples laid out by g. */
+static SamplerGrid render_rays_grid(const SamplerGrid *g, int rays)
+{
+    return g->progressive ? *g : sampler_grid(g->n * (unsigned)(rays ? rays : 1));
+}
+
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts)
 {
     int done = 0, used = 1;
@@ -199,12 +298,13 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     /* Under global illumination a ray's colour has no bound the cut-off
      * could use, nor under seed 001's rules: it is off; its proof of the
      * bytes is for linear ones. */
+    int noise = opts->noise.level > 0;
     int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0 &&
-                  !img->encode && scene->model == SCENE_MODEL_PHYSICAL;
-    SamplerGrid g = sampler_grid((unsigned)opts->samples);
+                  !img->encode && scene->model == SCENE_MODEL_PHYSICAL && !noise;
+    SamplerGrid g = noise ? sampler_progressive() : sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
-    CameraStep *columns = g.n == 1 ? malloc((size_t)img->width * sizeof *columns) : NULL;
+    CameraStep *columns = g.n == 1 && !noise ? malloc((size_t)img->width * sizeof *columns) : NULL;
 
     if (cutting)
         cut_init(&proto, scene, opts->cutoff);
@@ -220,9 +320,9 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         TraceSample sample = {0, 0, 0, g.n};
         uint32_t occluders[TRACE_OCCLUDERS];
         Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
-                    sampler_grid(g.n * (unsigned)(opts->indirect.ao_samples ? opts->indirect.ao_samples : 1)),
-                    sampler_grid(g.n * (unsigned)(opts->indirect.gi_samples ? opts->indirect.gi_samples : 1)),
-                    g, occluders, opts->no_shadows};
+                    render_rays_grid(&g, opts->indirect.ao_samples),
+                    render_rays_grid(&g, opts->indirect.gi_samples), g, occluders,
+                    opts->no_shadows};
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;
@@ -233,7 +333,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (int k = 0; k < tiles; k++) {
-            render_tile(&t, opts, &g, img, k, columns);
+            render_tile(&t, opts, &g, img, render_tile_order(k, tiles, noise), columns);
             if (opts->progress) {
 #ifdef _OPENMP
 #pragma omp critical(render_progress)

@@ -57,6 +57,7 @@ SamplerGrid sampler_grid(unsigned n)
 {
     SamplerGrid g;
 
+    g.progressive = 0;
     g.n = n;
     g.cols = 1;
     for (unsigned d = 1; d * d <= n; d++)
@@ -64,6 +65,73 @@ SamplerGrid sampler_grid(unsigned n)
             g.cols = d;
     g.rows = n / g.cols;
     return g;
+}
+
+SamplerGrid sampler_progressive(void)
+{
+    SamplerGrid g = {1, 1, 1, 1};
+
+    return g;
+}
+
+/* Returns x with its 32 bits in reverse order. */
+static uint32_t sampler_reverse(uint32_t x)
+{
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+/* Returns x (a 32-bit binary fraction) scrambled by Owen's nested uniform
+ * scrambling for seed: each bit flipped or not by a hash of the bits
+ * above it. Done, after Laine and Karras and Burley ("Practical hash-based
+ * Owen scrambling", JCGT 2020), as a hash of the reversed bits in which
+ * each bit only changes those above it (multiplications by even numbers,
+ * an addition), reversed back. */
+static uint32_t sampler_owen(uint32_t x, uint32_t seed)
+{
+    x = sampler_reverse(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return sampler_reverse(x);
+}
+
+/* Returns the second dimension of Sobol's sequence at index k, as a 32-bit
+ * binary fraction: its direction numbers are those of the polynomial x + 1,
+ * v_1 = 1/2 and v_(i+1) = v_i xor v_i / 2 (the first dimension is the
+ * bits of k reversed). */
+static uint32_t sampler_sobol1(uint32_t k)
+{
+    uint32_t v = 1u << 31, r = 0;
+
+    for (; k; k >>= 1, v ^= v >> 1)
+        if (k & 1)
+            r ^= v;
+    return r;
+}
+
+void sampler_sobol(uint64_t seed, uint32_t k, double xy[2])
+{
+    uint64_t h = sampler_mix(seed);
+    /* The index shuffled by its own scrambling (whole aligned blocks of
+     * points stay together), then each dimension scrambled. */
+    uint32_t i = sampler_owen(k, (uint32_t)h);
+
+    h = sampler_mix(h);
+    xy[0] = sampler_owen(sampler_reverse(i), (uint32_t)h) * 0x1p-32;
+    xy[1] = sampler_owen(sampler_sobol1(i), (uint32_t)(h >> 32)) * 0x1p-32;
+}
+
+/* Returns the seed of pixel (px, py)'s sequence in dimension dim. */
+static uint64_t sampler_seed(int px, int py, uint64_t dim)
+{
+    return sampler_mix(((uint64_t)(uint32_t)py << 32 | (uint32_t)px) ^
+                       sampler_mix(sampler_mix(dim) + 0x9e3779b97f4a7c15u));
 }
 
 /* Stores in xy point k of pixel (px, py)'s multi-jittered pattern of g->n
@@ -97,6 +165,10 @@ static void sampler_jitter(const SamplerGrid *g, int px, int py, unsigned k, uin
 
 void sampler_sample(const SamplerGrid *g, int px, int py, unsigned k, unsigned dim, double xy[2])
 {
+    if (g->progressive) {
+        sampler_sobol(sampler_seed(px, py, dim), k, xy);
+        return;
+    }
     if (g->n == 1) {
         xy[0] = xy[1] = 0.5;
         return;
@@ -113,7 +185,10 @@ void sampler_square(const SamplerGrid *g, int px, int py, unsigned k, uint64_t k
                     double xy[2])
 {
     /* Past the pixel and lens dimensions, whatever the key. */
-    sampler_jitter(g, px, py, k, key | 0x8000000000000000u, xy);
+    if (g->progressive)
+        sampler_sobol(sampler_seed(px, py, key | 0x8000000000000000u), k, xy);
+    else
+        sampler_jitter(g, px, py, k, key | 0x8000000000000000u, xy);
 }
 
 void sampler_hemisphere(const SamplerGrid *g, int px, int py, unsigned k, uint64_t key,

@@ -43,6 +43,7 @@ typedef struct {
     int ao_line;         /* (c AO, c GI) */
     int gi_line;
     int model_line;
+    int noise_line;
     Names names;         /* the materials by name */
 } Mpl;
 
@@ -75,6 +76,9 @@ static const char *const mpl_ao_names[] = {"distance"};
 static const FieldKind mpl_ao_kinds[] = {FIELD_POSITIVE};
 static const RecordSpec mpl_ao_distance = {"the ambient occlusion", NULL, 1, 0, 0, mpl_ao_names,
                                            mpl_ao_kinds};
+static const char *const mpl_noise_names[] = {"level"};
+static const FieldKind mpl_noise_kinds[] = {FIELD_POSITIVE};
+static const RecordSpec mpl_noise = {"the noise", NULL, 1, 0, 0, mpl_noise_names, mpl_noise_kinds};
 static const char *const mpl_tri_names[] = {"size", "x", "y", "z"};
 static const FieldKind mpl_tri_kinds[] = {FIELD_POSITIVE, FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
@@ -517,6 +521,41 @@ static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
     return 0;
 }
 
+/* noise -> 'c' Noise level [min [max]]: adaptive sampling, each pixel
+ * until its estimated error is at most level levels (0..255), between min
+ * and max samples (render/noise.h). */
+static int mpl_noise_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    const char *syntax = "c Noise level [min-spp [max-spp]]";
+
+    if (lex_once(&M->lex, rec, &M->noise_line, "the noise") != 0 ||
+        mpl_need(M, rec, 2, "the noise level", syntax) != 0 ||
+        lex_number(&M->lex, rec, 2, &mpl_noise, 0, &scene->noise) != 0)
+        return -1;
+    if (scene->noise > 255) {
+        mpl_fail(M, &rec->line, rec->tok[2].column,
+                 "the noise level must be at most 255 levels (an error the size of the whole "
+                 "range)");
+        return -1;
+    }
+    if (rec->count > 5)
+        return lex_fail_extra(&M->lex, rec, 5, "the noise");
+    if ((rec->count > 3 &&
+         lex_whole_number_in(&M->lex, rec, 3, "the least samples a pixel", "samples", 1,
+                             SCENE_MAX_SPP, &scene->noise_min_spp) != 0) ||
+        (rec->count > 4 &&
+         lex_whole_number_in(&M->lex, rec, 4, "the most samples a pixel", "samples", 1,
+                             SCENE_MAX_SPP, &scene->noise_max_spp) != 0))
+        return -1;
+    if (rec->count > 4 && scene->noise_max_spp < scene->noise_min_spp) {
+        mpl_fail(M, &rec->line, rec->tok[4].column,
+                 "the most samples a pixel (%d) is fewer than the least (%d)",
+                 scene->noise_max_spp, scene->noise_min_spp);
+        return -1;
+    }
+    return 0;
+}
+
 /* model -> 'c' Model seed001 | 'c' Model physical: the rules the picture
  * is made by (scene.h). */
 static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
@@ -540,17 +579,20 @@ static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
 }
 
 /* setting -> 'c' Camera ... | Background r g b | Sky r g b r g b | Ambient r g b
- *          | Samples n | AO n [distance] | GI n [bounces] | Model name */
+ *          | Samples n | AO n [distance] | GI n [bounces] | Model name
+ *          | Noise level [min [max]] */
 static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
 {
     double v[6];
     char q[64];
 
     if (mpl_need(M, rec, 1, "the setting",
-                 "Camera, Background, Sky, Ambient, Samples, AO, GI or Model") != 0)
+                 "Camera, Background, Sky, Ambient, Samples, AO, GI, Model or Noise") != 0)
         return -1;
     if (mpl_word_is(&rec->tok[1], "Model"))
         return mpl_model_record(M, rec, scene);
+    if (mpl_word_is(&rec->tok[1], "Noise"))
+        return mpl_noise_record(M, rec, scene);
     if (mpl_word_is(&rec->tok[1], "AO") || mpl_word_is(&rec->tok[1], "GI"))
         return mpl_indirect_record(M, rec, scene, mpl_word_is(&rec->tok[1], "GI"));
     if (mpl_word_is(&rec->tok[1], "Camera"))
@@ -584,8 +626,8 @@ static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
                                 CAMERA_MAX_SAMPLES, &scene->samples);
     }
     mpl_fail(M, &rec->line, rec->tok[1].column,
-             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO, GI or "
-             "Model)",
+             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO, GI, "
+             "Model or Noise)",
              lex_quote(q, sizeof q, &rec->tok[1]));
     return -1;
 }
@@ -637,7 +679,7 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     scene->sky = colour(0.5 * 255, 0.7 * 255, 255);
     scene->background = colour(255, 255, 255);
     lex_init(&M.lex, name, text, len, err);
-    M.camera_line = M.background_line = M.ambient_line = M.samples_line = 0;
+    M.camera_line = M.background_line = M.ambient_line = M.samples_line = M.noise_line = 0;
     M.ao_line = M.gi_line = M.model_line = 0;
     names_init(&M.names);
     rc = mpl_lines(&M, scene);

@@ -239,6 +239,15 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
             fprintf(fp, " %d", scene->gi_bounces);
         fputc('\n', fp);
     }
+    if (scene->noise > 0) {
+        fputs("c Noise", fp);
+        save_numbers(fp, &scene->noise, 1);
+        if (scene->noise_min_spp > 0)
+            fprintf(fp, " %d", scene->noise_min_spp);
+        if (scene->noise_max_spp > 0)
+            fprintf(fp, " %d", scene->noise_max_spp);
+        fputc('\n', fp);
+    }
     for (i = 0; i < scene->named_count; i++) {
         const NamedMaterial *pm = &scene->named[i];
         double v[2] = {pm->index, pm->shininess};

@@ -2,8 +2,10 @@
 # trade.sh: the speed/accuracy trade of every knob, measured (`make trade`).
 #
 # For samples per pixel (1 to 256, against 1024), ambient occlusion and
-# global illumination rays (1 to 1024, against 4096), the maximum depth (0 to
-# 20, against 50) and the cut-off (against no cut-off), it renders example
+# global illumination rays (1 to 1024, against 4096), adaptive sampling
+# (--noise L against uniform N, four scenes, each against a converged
+# render), the maximum depth (0 to 20, against 50) and the cut-off
+# (against no cut-off), it renders example
 # scenes, times them (median of TRADE_RUNS, default 3) and measures the
 # error: on the 8-bit output, the share of channels that differ and the
 # largest difference; on the linear PFM, the root mean square difference
@@ -14,8 +16,8 @@
 #
 # Usage: sh tests/bench/trade.sh RAYTRACE RAYTRACE-DIFF RAYTRACE-FLOAT SCENEGEN [OUT.md]
 # Environment: TRADE_RUNS (runs per measure, default 3), TRADE_ONLY (a
-# subset of: spp indirect depth cut precision; the others keep their last
-# rows).
+# subset of: spp indirect noise depth cut precision; the others keep their
+# last rows).
 
 RT=$1
 DIFF=$2
@@ -23,7 +25,7 @@ RT_FLOAT=$3
 GEN=$4
 OUT=${5:-docs/trade.md}
 RUNS=${TRADE_RUNS:-3}
-ONLY=${TRADE_ONLY:-"spp indirect depth cut precision"}
+ONLY=${TRADE_ONLY:-"spp indirect noise depth cut precision"}
 DIR=build/trade
 PLOT=tests/bench/plot.awk
 DOCS=$(dirname "$OUT")
@@ -104,6 +106,92 @@ done
 awk -v title="Ambient occlusion and global illumination: error against time (indirect.txt, 200 x 200)" \
     -v xlabel="render time, s" -v ylabel="RMSE against 4096 rays, levels" -v logx=1 -v logy=1 \
     -f "$PLOT" "$DIR/indirect.plot" >"$DOCS/trade-indirect.svg"
+fi
+
+# --- adaptive sampling: --noise L against uniform N samples a pixel, four
+# scenes, each against a converged render (uniform, many samples). The
+# error is what the user sees: the 8-bit render against the reference's
+# colours clamped to 0..255 (its rounding, 0.29 levels RMS, included). ---
+# noise_scene NAME: sets $opts (size and options), $ref (the reference's
+# samples), $uniform (the N tried) for scene NAME.
+noise_scene() {
+    case $1 in
+    indirect) opts="--size 200x200 --gi 16" ref=256 uniform="2 4 8 16 32 64 128" ;;
+    focus) opts="--size 240x160" ref=4096 uniform="4 8 16 32 64 128 256 512" ;;
+    materials) opts="--size 240x150" ref=2048 uniform="1 2 4 8 16 32 64 128 256" ;;
+    course) opts="--size 200x200" ref=4096 uniform="1 2 4 8 16 32 64 128 256" ;;
+    esac
+}
+# rmse REF IMAGE [MASK]: the RMS difference, the 8-bit IMAGE against the
+# clamped REF (over MASK's pixels that are not black, when given).
+rmse() {
+    if [ -n "$3" ]; then "$DIFF" --clamp --only "$3" "$DIR/$1" "$DIR/$2"; else "$DIFF" --clamp "$DIR/$1" "$DIR/$2"; fi |
+        sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p'
+}
+if wanted noise; then
+echo "trade: adaptive sampling" >&2
+pfm=0
+: >"$DIR/noise.rows"
+: >"$DIR/honest.rows"
+for s in indirect focus materials course; do
+    noise_scene $s
+    # shellcheck disable=SC2086
+    "$RT" -q $opts -s "$ref" --format pfm "scenes/$s.txt" "$DIR/nz-$s-ref.pfm" || exit 1
+    : >"$DIR/noise-$s.plot"
+    for n in $uniform; do
+        # shellcheck disable=SC2086
+        t=$(timed "nz-$s-u$n" $opts -s "$n" "scenes/$s.txt") || exit 1
+        e=$(rmse "nz-$s-ref.pfm" "nz-$s-u$n.ppm")
+        printf '| %s | -s %d | %.3f s | %s | %d |\n' "$s" "$n" "$t" "$e" "$n" >>"$DIR/noise.rows"
+        echo "uniform $t $e $n" >>"$DIR/noise-$s.plot"
+    done
+    for l in 8 4 2 1 0.5; do
+        # shellcheck disable=SC2086
+        t=$(timed "nz-$s-n$l" $opts --noise "$l" "scenes/$s.txt") || exit 1
+        e=$(rmse "nz-$s-ref.pfm" "nz-$s-n$l.ppm")
+        # shellcheck disable=SC2086
+        "$RT" -v $opts --noise "$l" --spp-map "$DIR/nz-$s-map$l.ppm" "scenes/$s.txt" \
+            "$DIR/nz-$s-n$l.ppm" 2>"$DIR/v" || exit 1
+        spp=$(sed -n 's/.*samples a pixel .*: mean \([0-9.]*\), most.*/\1/p' "$DIR/v")
+        printf '| %s | --noise %s | %.3f s | %s | %s |\n' "$s" "$l" "$t" "$e" "$spp" >>"$DIR/noise.rows"
+        echo "adaptive $t $e L=$l" >>"$DIR/noise-$s.plot"
+        # Honesty: the estimate against the measured error, on the linear
+        # colours the estimate then speaks of (a PFM render), over the
+        # pixels that took more than the first round (the map's not black).
+        case $l in 8) continue ;; esac
+        # shellcheck disable=SC2086
+        "$RT" -q $opts --noise "$l" --spp-map "$DIR/nz-$s-pmap.ppm" --format pfm "scenes/$s.txt" \
+            "$DIR/nz-$s-p$l.pfm" || exit 1
+        sampled=$("$DIFF" --only "$DIR/nz-$s-pmap.ppm" "$DIR/nz-$s-ref.pfm" "$DIR/nz-$s-p$l.pfm" |
+            sed -n 's/^compared: *the \([0-9]*\) pixels.*/\1/p')
+        all=$("$DIFF" "$DIR/nz-$s-ref.pfm" "$DIR/nz-$s-p$l.pfm" |
+            sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p')
+        over=$("$DIFF" --only "$DIR/nz-$s-pmap.ppm" "$DIR/nz-$s-ref.pfm" "$DIR/nz-$s-p$l.pfm" |
+            sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p')
+        printf '| %s | %s | %s | %s | %s | %.2f |\n' "$s" "$l" "${sampled:-0}" "$all" "${over:--}" \
+            "$(echo "${over:-0} / $l" | bc -l)" >>"$DIR/honest.rows"
+    done
+    # The same RMSE by uniform sampling: its time there, log-log between
+    # the two uniform renders around it; the speed-up over adaptive.
+    awk -v scene=$s '$1 == "uniform" { n++; ut[n] = $2; ue[n] = $3 }
+        $1 == "adaptive" { m++; at[m] = $2; ae[m] = $3; al[m] = $4 }
+        END { for (j = 1; j <= m; j++) {
+            t = ""
+            for (i = 1; i < n; i++) if (ue[i] >= ae[j] && ue[i + 1] <= ae[j] && ue[i] > ue[i + 1]) {
+                f = (log(ue[i]) - log(ae[j])) / (log(ue[i]) - log(ue[i + 1]))
+                t = exp(log(ut[i]) + f * (log(ut[i + 1]) - log(ut[i]))) }
+            sub(/^L=/, "", al[j])
+            if (t == "") printf "| %s | %s | %.3f s | %s | outside uniform'"'"'s range | - |\n", scene, al[j], at[j], ae[j]
+            else printf "| %s | %s | %.3f s | %s | %.3f s | %.2f |\n", scene, al[j], at[j], ae[j], t, t / at[j] } }' \
+        "$DIR/noise-$s.plot" >>"$DIR/speedup.rows.$s"
+    awk -v title="--noise L against uniform N: $s.txt ($(echo "$opts" | sed 's/--size //'))" \
+        -v xlabel="render time, s" -v ylabel="RMSE against the converged render, levels" \
+        -v logx=1 -v logy=1 -f "$PLOT" "$DIR/noise-$s.plot" >"$DOCS/trade-noise-$s.svg"
+done
+cat "$DIR/speedup.rows.indirect" "$DIR/speedup.rows.focus" "$DIR/speedup.rows.materials" \
+    "$DIR/speedup.rows.course" >"$DIR/speedup.rows"
+rm -f "$DIR"/speedup.rows.*
+pfm=1
 fi
 
 # --- maximum depth: facing mirrors and a ring of mirror balls ---
@@ -286,6 +374,47 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "| knob | RMSE ≤ 1 level at N (time) | slope of log RMSE / log N |"
     echo "|------|----------------------------|---------------------------|"
     cat "$DIR/knee.rows"
+    echo
+    echo "## Adaptive sampling: --noise against uniform samples"
+    echo
+    echo "Four scenes, each against a converged render of its own (uniform"
+    echo "sampling, many samples a pixel): scenes/indirect.txt at 200 × 200 with"
+    echo "\`--gi 16\` (global illumination, one bounce, 16 gathering rays a"
+    echo "sample; reference 256 samples), scenes/focus.txt at 240 × 160 (its lens;"
+    echo "4096), scenes/materials.txt at 240 × 150 (textures, glass, metal;"
+    echo "2048) and scenes/course.txt at 200 × 200 (anti-aliased edges; 4096)."
+    echo "Uniform: \`-s N\` (the multi-jittered pattern); adaptive: \`--noise L\`"
+    echo "with its defaults (64 / L, 16 to 256, to 4096 samples a pixel, scrambled Sobol points,"
+    echo "docs/design.md). The error is what the user sees: the 8-bit render"
+    echo "against the reference's colours clamped to 0..255, its own rounding"
+    echo "(0.29 levels RMS) included; times are medians of $RUNS runs."
+    echo
+    echo "![indirect](trade-noise-indirect.svg)"
+    echo "![focus](trade-noise-focus.svg)"
+    echo "![materials](trade-noise-materials.svg)"
+    echo "![course](trade-noise-course.svg)"
+    echo
+    echo "| scene | sampling | time | RMSE | samples a pixel (mean) |"
+    echo "|-------|----------|------|------|------------------------|"
+    cat "$DIR/noise.rows"
+    echo
+    echo "At the RMSE each \`--noise L\` reached, the time uniform sampling takes"
+    echo "to reach it (log-log between the two uniform renders around it) and"
+    echo "the speed-up:"
+    echo
+    echo "| scene | L | adaptive time | RMSE | uniform time at that RMSE | speed-up |"
+    echo "|-------|---|---------------|------|---------------------------|----------|"
+    cat "$DIR/speedup.rows"
+    echo
+    echo "Honesty: the estimate is one standard error of each pixel's value; the"
+    echo "measured RMSE against the reference (linear colours, PFM renders, so"
+    echo "that rounding does not mix in) over the pixels that took more than"
+    echo "the first round (those whose estimate said they needed it), and over"
+    echo "the whole picture, whose pixels exact at the first round bring it down:"
+    echo
+    echo "| scene | L | pixels past the first round | RMSE, whole picture | RMSE, those pixels | that / L |"
+    echo "|-------|---|-----------------------------|---------------------|--------------------|----------|"
+    cat "$DIR/honest.rows"
     echo
     echo "## Maximum depth"
     echo
