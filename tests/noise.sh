@@ -89,6 +89,14 @@ expect_grep "--noise 0 over c Noise" "32 x 32 pixels, 4 samples per pixel" "$T/e
 "$RT" -q --size 32x32 --noise 3 --min-spp 32 --max-spp 128 scenes/indirect.txt "$T/cmd.ppm"
 cmp -s "$T/noisy.ppm" "$T/cmd.ppm" && pass || fail "c Noise 3 32 128 is not --noise 3 --min-spp 32 --max-spp 128"
 
+# --- README's map is the gallery render's (make check; golden.sh checks
+# the render) ---
+if full; then
+    "$RT" -q --noise 4 --max-spp 1024 --spp-map "$T/gmap.png" scenes/materials.txt "$T/g.png" &&
+        "$DIFF" -q docs/gallery/materials-noise4maxspp1024-spp.png "$T/gmap.png" && pass ||
+        fail "docs/gallery/materials-noise4maxspp1024-spp.png is not the map of its render (run make gallery)"
+fi
+
 # --- the estimate against the truth (make check) ---
 # indirect.txt with occlusion and gathering, 48 x 48: a converged render
 # (uniform, 256 samples of 16 rays), then --noise 2: over the pixels that
