@@ -77,7 +77,8 @@ endif
 # include/LAYER/NAME.h. The commands' own files are in src/cli.
 LIB_SRC := $(sort $(filter-out src/cli/%,$(wildcard src/*/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
-RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o
+RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o $(BUILD)/cli/adjust.o \
+	$(BUILD)/cli/summary.o
 
 # On x86, the hierarchy's queries are built a second time for processors
 # with AVX2 and FMA (src/accel/bvh_query.h), and run on those processors.

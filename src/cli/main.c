@@ -6,24 +6,22 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
-#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "accel/bvh.h"
-#include "accel/light_buffer.h"
 #include "base/error.h"
 #include "base/file.h"
-#include "base/hash.h"
 #include "base/outfile.h"
 #include "base/threads.h"
+#include "cli/adjust.h"
 #include "cli/options.h"
+#include "cli/summary.h"
 #include "image/image.h"
 #include "image/tile.h"
 #include "image/writer.h"
@@ -194,93 +192,6 @@ static void main_progress(void *ctx, int done, int total)
             frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
 }
 
-/* Returns the process's peak resident memory in bytes (0 if unknown). */
-static double main_peak_memory(void)
-{
-    struct rusage ru;
-
-    /* Linux reports ru_maxrss in kilobytes. */
-    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
-}
-
-
-/* Prints, for -v, light buffer lb (light_buffer.h), around `what`. */
-static void main_buffer(const char *what, const LightBuffer *lb)
-{
-    char b[NUMBER_FORMAT_MAX];
-
-    fprintf(stderr, "raytrace: light buffer of %s: 6 x %d x %d cells, %zu entries, %s\n", what,
-            lb->res, lb->res, lb->entry_count, number_bytes(b, light_buffer_memory(lb)));
-}
-
-/* Prints, for -v, the light buffers the scene was given. */
-static void main_buffers(const Scene *scene)
-{
-    char what[32];
-
-    if (scene->eye_buffer)
-        main_buffer("the eye", scene->eye_buffer);
-    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
-        if (scene->light_buffers[i].first) {
-            snprintf(what, sizeof what, "light %zu", i + 1);
-            main_buffer(what, &scene->light_buffers[i]);
-        }
-}
-
-/* Returns how ropts samples pixels, for a summary: "4 samples per pixel",
- * or under --noise its level and bounds (the text is overwritten by the
- * next call). */
-static const char *main_samples(const RenderOptions *ropts)
-{
-    static char text[96];
-
-    if (ropts->noise.level > 0)
-        snprintf(text, sizeof text, "--noise %g (%u to %u samples a pixel)", ropts->noise.level,
-                 ropts->noise.min_spp, ropts->noise.max_spp);
-    else
-        snprintf(text, sizeof text, "%d sample%s per pixel", ropts->samples,
-                 ropts->samples == 1 ? "" : "s");
-    return text;
-}
-
-/* Prints the -v summary: size, threads, rays by kind, the model when it
- * is seed 001's, time, speed, peak memory. */
-static void main_statistics(const Image *img, const RenderOptions *ropts, SceneModel model,
-                            int threads, const RayCounts *c, double seconds)
-{
-    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction +
-                             c->occlusion + c->gather;
-    char indirect[96] = "";
-
-    fprintf(stderr, "raytrace: %d x %d pixels, %s, %d thread%s\n", img->width, img->height,
-            main_samples(ropts), threads, threads == 1 ? "" : "s");
-    if (ropts->indirect.ao_samples > 0 || ropts->indirect.gi_samples > 0)
-        snprintf(indirect, sizeof indirect, "%llu occlusion, %llu gathering, ", c->occlusion,
-                 c->gather);
-    fprintf(stderr,
-            "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
-            "%s%llu in all\n",
-            c->primary, c->shadow, c->reflection, c->refraction, indirect, all);
-    if (model == SCENE_MODEL_SEED001)
-        fprintf(stderr, "raytrace: seed 001's model: its program's light, occlusion and "
-                        "gathering; gamma %g\n",
-                SEED001_GAMMA);
-    if (ropts->indirect.ao_samples > 0)
-        fprintf(stderr, "raytrace: ambient occlusion: %d rays a point, distance %g\n",
-                ropts->indirect.ao_samples, ropts->indirect.ao_distance);
-    if (ropts->indirect.gi_samples > 0)
-        fprintf(stderr, "raytrace: global illumination: %d rays a point, %d bounce%s\n",
-                ropts->indirect.gi_samples, ropts->indirect.gi_bounces,
-                ropts->indirect.gi_bounces == 1 ? "" : "s");
-    if (ropts->cutoff > 0)
-        fprintf(stderr,
-                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels refined\n",
-                ropts->cutoff, c->cut, c->refined);
-    fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
-            seconds > 0 ? all / seconds / 1e6 : 0.0);
-    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", main_peak_memory() / 1e6);
-}
-
 /* Reads opts' scene into *scene, reporting any fault; returns 0, or 1 (the
  * exit status) with *scene empty. */
 static int main_load(const Options *opts, Scene *scene)
@@ -437,148 +348,13 @@ static int main_trace(const Options *opts, RenderOptions *ropts, const Scene *sc
     return threads;
 }
 
-/* Sets *in from the command line, else from the scene, else from its
- * model's defaults: the rays, the occlusion distance (the scene file's
- * units, as the scene may have been enlarged; by default a tenth of the
- * scene's size, seed 001's 2) and the bounces. */
-static void main_indirect(const Options *opts, const Scene *scene, Indirect *in)
-{
-    int seed = scene->model == SCENE_MODEL_SEED001;
-    double d = opts->ao_distance > 0 ? opts->ao_distance : scene->ao_distance;
-
-    if (!(d > 0) && seed)
-        d = SEED001_AO_DISTANCE;
-    in->ao_samples = opts->ao >= 0               ? opts->ao
-                     : scene->ao_samples >= 0 ? scene->ao_samples
-                     : seed                   ? SEED001_AO_RAYS
-                                              : 0;
-    in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
-    in->gi_samples = opts->gi >= 0               ? opts->gi
-                     : scene->gi_samples >= 0 ? scene->gi_samples
-                     : seed                   ? SEED001_GI_RAYS
-                                              : 0;
-    in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
-                     : scene->gi_bounces > 0 ? scene->gi_bounces
-                                             : 1;
-}
-
-/* Says whether the physical model gives scene any ambient light for
- * ambient occlusion to darken. */
-static int main_has_ambient(const Scene *scene)
-{
-    return colour_max(scene->ambient) > 0 && (scene->has_ambient || scene->format != SCENE_COURSE);
-}
-
-/* Prints "raytrace: note: WHAT" on standard error, the one place that
- * says an option changes nothing here. */
-static void main_note(const Options *opts, const char *what)
-{
-    if (!opts->quiet)
-        fprintf(stderr, "raytrace: note: %s\n", what);
-}
-
-/* Sets ropts' adaptive sampling from the command line, else the scene
- * (noise.h); says when an option of it, or -s under it, changes nothing. */
-static void main_noise(const Options *opts, const Scene *scene, RenderOptions *ropts)
-{
-    NoiseOptions *n = &ropts->noise;
-    int most = opts->max_spp ? opts->max_spp : scene->noise_max_spp;
-    int least = opts->min_spp ? opts->min_spp : scene->noise_min_spp;
-
-    n->level = opts->noise >= 0 ? opts->noise : scene->noise;
-    n->max_spp = most ? (unsigned)most : NOISE_MAX_SPP;
-    n->min_spp = least ? (unsigned)least : noise_default_min(n->level);
-    /* A bound given alone moves the other's default out of its way. */
-    if (n->min_spp > n->max_spp) {
-        if (least)
-            n->max_spp = n->min_spp;
-        else
-            n->min_spp = n->max_spp;
-    }
-    if (n->level > 0 && opts->samples)
-        main_note(opts, "--spp changes nothing here: --noise takes as many samples a pixel as "
-                        "its error needs (bounded by --min-spp and --max-spp)");
-    if (n->level > 0)
-        return;
-    if (opts->min_spp || opts->max_spp)
-        main_note(opts, "--min-spp and --max-spp change nothing without --noise: every pixel "
-                        "takes the samples -s asks for");
-    if (opts->spp_map)
-        main_note(opts, "--spp-map writes nothing without --noise: every pixel takes the "
-                        "samples -s asks for");
-}
-
-/* Applies the command line's choices about the picture to scene (its
- * model and size) and sets ropts' depth, samples and indirect light from
- * them; says once, on standard error, of each option given that can
- * change nothing in this scene. */
-static void main_adjust(const Options *opts, Scene *scene, RenderOptions *ropts)
-{
-    int mpl = scene->format == SCENE_MPL, seed;
-
-    if (opts->model >= 0 && !mpl)
-        main_note(opts, "--model changes nothing here: it chooses how MPL scenes are lit; the "
-                        "course and keyword formats have one model");
-    else if (opts->model >= 0)
-        scene->model = (SceneModel)opts->model;
-    seed = scene->model == SCENE_MODEL_SEED001;
-    if (opts->width > 0)
-        camera_resize(&scene->camera, opts->width, opts->height);
-    ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
-    ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
-    ropts->no_shadows = opts->no_shadows;
-    main_noise(opts, scene, ropts);
-    main_indirect(opts, scene, &ropts->indirect);
-    if (opts->ao > 0 && !seed && !main_has_ambient(scene))
-        main_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
-                        "light, and this scene has none (add one: the course's ambient:, the "
-                        "MPL format's c Ambient)");
-    if (opts->ao_distance > 0 && ropts->indirect.ao_samples == 0)
-        main_note(opts, "--ao-distance changes nothing here: no ambient occlusion rays are cast "
-                        "(--ao N)");
-    if (opts->gi_bounces > 0 && seed && ropts->indirect.gi_samples > 0)
-        main_note(opts, "--gi-bounces changes nothing here: seed 001's model gathers the colours "
-                        "its rays meet, one bounce (--model physical gathers light)");
-    else if (opts->gi_bounces > 0 && ropts->indirect.gi_samples == 0)
-        main_note(opts, "--gi-bounces changes nothing here: no global illumination rays are "
-                        "cast (--gi N)");
-}
-
-/* Returns the fingerprint of a render of scene with ropts: what it was read
- * from and every option that changes its pixels, so that tiles of
- * different renders are never merged. */
-static uint64_t main_fingerprint(const Scene *scene, const RenderOptions *ropts)
-{
-    uint64_t h = hash_u64(HASH_START, scene->source_hash), distance;
-    double d = ropts->indirect.ao_distance;
-
-    memcpy(&distance, &d, sizeof distance);
-    h = hash_u64(h, (uint64_t)ropts->max_depth);
-    h = hash_u64(h, (uint64_t)ropts->samples);
-    h = hash_u64(h, (uint64_t)ropts->indirect.ao_samples);
-    h = hash_u64(h, ropts->indirect.ao_samples ? distance : 0);
-    h = hash_u64(h, (uint64_t)ropts->indirect.gi_samples);
-    h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
-    h = hash_u64(h, (uint64_t)scene->model);
-    h = hash_u64(h, (uint64_t)ropts->no_shadows);
-    if (ropts->noise.level > 0) { /* else the hash of earlier versions */
-        double level = ropts->noise.level;
-        uint64_t bits;
-        memcpy(&bits, &level, sizeof bits);
-        h = hash_u64(h, bits);
-        h = hash_u64(h, (uint64_t)ropts->noise.min_spp << 32 | ropts->noise.max_spp);
-    }
-    h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
-    return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
-}
-
 /* Makes *tile opts' tile of the scene's picture rendered with ropts;
  * returns 0, or -1 with *err when it would hold no row. */
 static int main_tile(const Options *opts, const Scene *scene, const RenderOptions *ropts,
                      Tile *tile, Error *err)
 {
     if (tile_make(tile, opts->tile_k, opts->tile_n, (TileLayout)opts->tile_layout,
-                  scene->camera.width, scene->camera.height, main_fingerprint(scene, ropts)) == 0)
+                  scene->camera.width, scene->camera.height, adjust_fingerprint(scene, ropts)) == 0)
         return 0;
     error_set(err, opts->scene_path,
               "--tile %d/%d: the picture has %d rows, so at most %d tiles (each holds whole rows)",
@@ -630,33 +406,6 @@ static void main_noise_free(RenderOptions *ropts)
     free(ropts->error);
     ropts->spp = NULL;
     ropts->error = NULL;
-}
-
-/* Prints, for -v, the samples n pixels took under --noise and the errors
- * they reached. */
-static void main_noise_statistics(const Options *opts, const RenderOptions *ropts, size_t n)
-{
-    NoiseSummary s;
-    size_t short_of = 0;
-
-    noise_summarise(ropts->spp, ropts->error, n, &s);
-    for (size_t i = 0; i < n; i++)
-        short_of += ropts->error[i] > ropts->noise.level;
-    fprintf(stderr,
-            "raytrace: --noise %g: samples a pixel %u to %u: mean %.1f, most %u; pixels by "
-            "samples:",
-            ropts->noise.level, ropts->noise.min_spp, ropts->noise.max_spp, s.mean_spp,
-            s.max_spp);
-    for (int b = 0; b < NOISE_BINS; b++)
-        if (s.bins[b])
-            fprintf(stderr, " %s%u %.1f%%", b == NOISE_BINS - 1 ? ">" : "<=",
-                    b == NOISE_BINS - 1 ? 2u << b : 4u << b, 100.0 * s.bins[b] / n);
-    fprintf(stderr, "\nraytrace: estimated error (one standard error, 68%% confidence): mean "
-                    "%.3f, worst %.3f levels; %zu pixel%s short of %g at --max-spp\n",
-            s.mean_error, s.worst_error, short_of, short_of == 1 ? "" : "s", ropts->noise.level);
-    if (opts->spp_map)
-        fprintf(stderr, "raytrace: map of samples: %s (black %u or fewer, white %u, log scale)\n",
-                opts->spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
 }
 
 /* Writes img to path as wopts say, replacing path only once the whole image
@@ -726,7 +475,7 @@ static int main_render(const Options *opts)
     if (main_load(opts, &scene) != 0)
         return 1;
     read_time = main_now() - start;
-    main_adjust(opts, &scene, &ropts);
+    adjust_render(opts, &scene, &ropts);
     if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
         goto fail_scene;
@@ -770,25 +519,11 @@ static int main_render(const Options *opts)
         goto fail_image;
     write_time = main_now() - write_time;
     if (opts->verbose) {
-        fprintf(stderr, "raytrace: read the scene in %.3f s\n", read_time);
-        if (scene.accel)
-            fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
-                            "%.3f s%s\n",
-                    scene.accel->node_count, scene.accel->depth, accel_time,
-                    scene.accel->avx2 ? ", box tests in AVX2 and FMA" : "");
-        main_buffers(&scene);
-        main_statistics(&img, &ropts, scene.model, threads, &counts, render_time);
-        if (ropts.spp)
-            main_noise_statistics(opts, &ropts, (size_t)img.width * (size_t)img.height);
-        fprintf(stderr, "raytrace: wrote the image in %.3f s\n", write_time);
+        SummaryTimes times = {read_time, accel_time, render_time, write_time};
+        summary_verbose(&scene, &img, &ropts, opts->spp_map, &times, threads, &counts);
     } else if (!opts->quiet && isatty(STDERR_FILENO)) {
-        fprintf(stderr,
-                "raytrace: wrote %s: %d x %d pixels, %zu object%s, %s, %.2f s, %d thread%s\n",
-                strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
-                img.width, img.height, scene_object_count(&scene),
-                scene_object_count(&scene) == 1 ? "" : "s", main_samples(&ropts),
-                main_now() - start, threads,
-                threads == 1 ? "" : "s");
+        summary_line(strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
+                     &scene, &img, &ropts, main_now() - start, threads);
     }
     main_noise_free(&ropts);
     image_free(&img);

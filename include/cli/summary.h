@@ -1,0 +1,37 @@
+/*
+ * summary.h: what raytrace tells the user of a render it has written: -v's
+ * statistics (times, the hierarchy and light buffers, rays by kind, the
+ * model, occlusion and gathering, the cut-off, --noise's samples and
+ * errors, speed, peak memory) and, on a terminal, the one-line summary.
+ * Everything goes to standard error; nothing here fails.
+ */
+#ifndef RAYTRACE_SUMMARY_H
+#define RAYTRACE_SUMMARY_H
+
+#include "image/image.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+/* Seconds each step of a render took. */
+typedef struct {
+    double read, accel, render, write;
+} SummaryTimes;
+
+/* Returns how ropts samples pixels: "4 samples per pixel", or under
+ * --noise its level and bounds (the text is overwritten by the next
+ * call). */
+const char *summary_samples_text(const RenderOptions *ropts);
+
+/* Prints -v's statistics of the render of scene into img with ropts on
+ * `threads` threads, which cast counts' rays (spp_map: --spp-map's file,
+ * or NULL). */
+void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,
+                     const char *spp_map, const SummaryTimes *times, int threads,
+                     const RayCounts *counts);
+
+/* Prints "raytrace: wrote OUTPUT: W x H pixels, N objects, SAMPLES, T s,
+ * N threads". */
+void summary_line(const char *output, const Scene *scene, const Image *img,
+                  const RenderOptions *ropts, double seconds, int threads);
+
+#endif

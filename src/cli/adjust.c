@@ -1,0 +1,148 @@
+/* adjust.c: the command line's choices applied to a scene and its render
+ * (see adjust.h). */
+#include "cli/adjust.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/hash.h"
+#include "render/noise.h"
+#include "render/seed001.h"
+#include "scene/camera.h"
+
+/* Sets *in from the command line, else from the scene, else from its
+ * model's defaults: the rays, the occlusion distance (the scene file's
+ * units, as the scene may have been enlarged; by default a tenth of the
+ * scene's size, seed 001's 2) and the bounces. */
+static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *in)
+{
+    int seed = scene->model == SCENE_MODEL_SEED001;
+    double d = opts->ao_distance > 0 ? opts->ao_distance : scene->ao_distance;
+
+    if (!(d > 0) && seed)
+        d = SEED001_AO_DISTANCE;
+    in->ao_samples = opts->ao >= 0               ? opts->ao
+                     : scene->ao_samples >= 0 ? scene->ao_samples
+                     : seed                   ? SEED001_AO_RAYS
+                                              : 0;
+    in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
+    in->gi_samples = opts->gi >= 0               ? opts->gi
+                     : scene->gi_samples >= 0 ? scene->gi_samples
+                     : seed                   ? SEED001_GI_RAYS
+                                              : 0;
+    in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
+                     : scene->gi_bounces > 0 ? scene->gi_bounces
+                                             : 1;
+}
+
+/* Says whether the physical model gives scene any ambient light for
+ * ambient occlusion to darken. */
+static int adjust_has_ambient(const Scene *scene)
+{
+    return colour_max(scene->ambient) > 0 && (scene->has_ambient || scene->format != SCENE_COURSE);
+}
+
+/* Prints "raytrace: note: WHAT" on standard error, the one place that
+ * says an option changes nothing here. */
+static void adjust_note(const Options *opts, const char *what)
+{
+    if (!opts->quiet)
+        fprintf(stderr, "raytrace: note: %s\n", what);
+}
+
+/* Sets ropts' adaptive sampling from the command line, else the scene
+ * (noise.h); says when an option of it, or -s under it, changes nothing. */
+static void adjust_noise(const Options *opts, const Scene *scene, RenderOptions *ropts)
+{
+    NoiseOptions *n = &ropts->noise;
+    int most = opts->max_spp ? opts->max_spp : scene->noise_max_spp;
+    int least = opts->min_spp ? opts->min_spp : scene->noise_min_spp;
+
+    n->level = opts->noise >= 0 ? opts->noise : scene->noise;
+    n->max_spp = most ? (unsigned)most : NOISE_MAX_SPP;
+    n->min_spp = least ? (unsigned)least : noise_default_min(n->level);
+    /* A bound given alone moves the other's default out of its way. */
+    if (n->min_spp > n->max_spp) {
+        if (least)
+            n->max_spp = n->min_spp;
+        else
+            n->min_spp = n->max_spp;
+    }
+    if (n->level > 0 && opts->samples)
+        adjust_note(opts, "--spp changes nothing here: --noise takes as many samples a pixel as "
+                        "its error needs (bounded by --min-spp and --max-spp)");
+    if (n->level > 0)
+        return;
+    if (opts->min_spp || opts->max_spp)
+        adjust_note(opts, "--min-spp and --max-spp change nothing without --noise: every pixel "
+                        "takes the samples -s asks for");
+    if (opts->spp_map)
+        adjust_note(opts, "--spp-map writes nothing without --noise: every pixel takes the "
+                        "samples -s asks for");
+}
+
+/* Applies the command line's choices about the picture to scene (its
+ * model and size) and sets ropts' depth, samples and indirect light from
+ * them; says once, on standard error, of each option given that can
+ * change nothing in this scene. */
+void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
+{
+    int mpl = scene->format == SCENE_MPL, seed;
+
+    if (opts->model >= 0 && !mpl)
+        adjust_note(opts, "--model changes nothing here: it chooses how MPL scenes are lit; the "
+                        "course and keyword formats have one model");
+    else if (opts->model >= 0)
+        scene->model = (SceneModel)opts->model;
+    seed = scene->model == SCENE_MODEL_SEED001;
+    if (opts->width > 0)
+        camera_resize(&scene->camera, opts->width, opts->height);
+    ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
+    ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
+    ropts->no_shadows = opts->no_shadows;
+    adjust_noise(opts, scene, ropts);
+    adjust_indirect(opts, scene, &ropts->indirect);
+    if (opts->ao > 0 && !seed && !adjust_has_ambient(scene))
+        adjust_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
+                        "light, and this scene has none (add one: the course's ambient:, the "
+                        "MPL format's c Ambient)");
+    if (opts->ao_distance > 0 && ropts->indirect.ao_samples == 0)
+        adjust_note(opts, "--ao-distance changes nothing here: no ambient occlusion rays are cast "
+                        "(--ao N)");
+    if (opts->gi_bounces > 0 && seed && ropts->indirect.gi_samples > 0)
+        adjust_note(opts, "--gi-bounces changes nothing here: seed 001's model gathers the colours "
+                        "its rays meet, one bounce (--model physical gathers light)");
+    else if (opts->gi_bounces > 0 && ropts->indirect.gi_samples == 0)
+        adjust_note(opts, "--gi-bounces changes nothing here: no global illumination rays are "
+                        "cast (--gi N)");
+}
+
+/* Returns the fingerprint of a render of scene with ropts: what it was read
+ * from and every option that changes its pixels, so that tiles of
+ * different renders are never merged. */
+uint64_t adjust_fingerprint(const Scene *scene, const RenderOptions *ropts)
+{
+    uint64_t h = hash_u64(HASH_START, scene->source_hash), distance;
+    double d = ropts->indirect.ao_distance;
+
+    memcpy(&distance, &d, sizeof distance);
+    h = hash_u64(h, (uint64_t)ropts->max_depth);
+    h = hash_u64(h, (uint64_t)ropts->samples);
+    h = hash_u64(h, (uint64_t)ropts->indirect.ao_samples);
+    h = hash_u64(h, ropts->indirect.ao_samples ? distance : 0);
+    h = hash_u64(h, (uint64_t)ropts->indirect.gi_samples);
+    h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
+    h = hash_u64(h, (uint64_t)scene->model);
+    h = hash_u64(h, (uint64_t)ropts->no_shadows);
+    if (ropts->noise.level > 0) { /* else the hash of earlier versions */
+        double level = ropts->noise.level;
+        uint64_t bits;
+        memcpy(&bits, &level, sizeof bits);
+        h = hash_u64(h, bits);
+        h = hash_u64(h, (uint64_t)ropts->noise.min_spp << 32 | ropts->noise.max_spp);
+    }
+    h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
+    return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
+}
+

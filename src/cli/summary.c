@@ -1,0 +1,151 @@
+/* summary.c: what raytrace tells the user of a render (see summary.h). */
+#include "cli/summary.h"
+
+#include <stdio.h>
+#include <sys/resource.h>
+
+#include "accel/bvh.h"
+#include "accel/light_buffer.h"
+#include "math/number.h"
+#include "render/seed001.h"
+
+/* Returns the process's peak resident memory in bytes (0 if unknown). */
+static double summary_peak_memory(void)
+{
+    struct rusage ru;
+
+    /* Linux reports ru_maxrss in kilobytes. */
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
+}
+
+
+/* Prints, for -v, light buffer lb (light_buffer.h), around `what`. */
+static void summary_buffer(const char *what, const LightBuffer *lb)
+{
+    char b[NUMBER_FORMAT_MAX];
+
+    fprintf(stderr, "raytrace: light buffer of %s: 6 x %d x %d cells, %zu entries, %s\n", what,
+            lb->res, lb->res, lb->entry_count, number_bytes(b, light_buffer_memory(lb)));
+}
+
+/* Prints, for -v, the light buffers the scene was given. */
+static void summary_buffers(const Scene *scene)
+{
+    char what[32];
+
+    if (scene->eye_buffer)
+        summary_buffer("the eye", scene->eye_buffer);
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        if (scene->light_buffers[i].first) {
+            snprintf(what, sizeof what, "light %zu", i + 1);
+            summary_buffer(what, &scene->light_buffers[i]);
+        }
+}
+
+/* Returns how ropts samples pixels, for a summary: "4 samples per pixel",
+ * or under --noise its level and bounds (the text is overwritten by the
+ * next call). */
+const char *summary_samples_text(const RenderOptions *ropts)
+{
+    static char text[96];
+
+    if (ropts->noise.level > 0)
+        snprintf(text, sizeof text, "--noise %g (%u to %u samples a pixel)", ropts->noise.level,
+                 ropts->noise.min_spp, ropts->noise.max_spp);
+    else
+        snprintf(text, sizeof text, "%d sample%s per pixel", ropts->samples,
+                 ropts->samples == 1 ? "" : "s");
+    return text;
+}
+
+/* Prints the -v summary: size, threads, rays by kind, the model when it
+ * is seed 001's, time, speed, peak memory. */
+static void summary_statistics(const Image *img, const RenderOptions *ropts, SceneModel model,
+                            int threads, const RayCounts *c, double seconds)
+{
+    unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction +
+                             c->occlusion + c->gather;
+    char indirect[96] = "";
+
+    fprintf(stderr, "raytrace: %d x %d pixels, %s, %d thread%s\n", img->width, img->height,
+            summary_samples_text(ropts), threads, threads == 1 ? "" : "s");
+    if (ropts->indirect.ao_samples > 0 || ropts->indirect.gi_samples > 0)
+        snprintf(indirect, sizeof indirect, "%llu occlusion, %llu gathering, ", c->occlusion,
+                 c->gather);
+    fprintf(stderr,
+            "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
+            "%s%llu in all\n",
+            c->primary, c->shadow, c->reflection, c->refraction, indirect, all);
+    if (model == SCENE_MODEL_SEED001)
+        fprintf(stderr, "raytrace: seed 001's model: its program's light, occlusion and "
+                        "gathering; gamma %g\n",
+                SEED001_GAMMA);
+    if (ropts->indirect.ao_samples > 0)
+        fprintf(stderr, "raytrace: ambient occlusion: %d rays a point, distance %g\n",
+                ropts->indirect.ao_samples, ropts->indirect.ao_distance);
+    if (ropts->indirect.gi_samples > 0)
+        fprintf(stderr, "raytrace: global illumination: %d rays a point, %d bounce%s\n",
+                ropts->indirect.gi_samples, ropts->indirect.gi_bounces,
+                ropts->indirect.gi_bounces == 1 ? "" : "s");
+    if (ropts->cutoff > 0)
+        fprintf(stderr,
+                "raytrace: cut-off %g levels: %llu rays left out, %llu pixels refined\n",
+                ropts->cutoff, c->cut, c->refined);
+    fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
+            seconds > 0 ? all / seconds / 1e6 : 0.0);
+    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", summary_peak_memory() / 1e6);
+}
+
+/* Prints, for -v, the samples n pixels took under --noise and the errors
+ * they reached. */
+static void summary_noise(const RenderOptions *ropts, size_t n, const char *spp_map)
+{
+    NoiseSummary s;
+    size_t short_of = 0;
+
+    noise_summarise(ropts->spp, ropts->error, n, &s);
+    for (size_t i = 0; i < n; i++)
+        short_of += ropts->error[i] > ropts->noise.level;
+    fprintf(stderr,
+            "raytrace: --noise %g: samples a pixel %u to %u: mean %.1f, most %u; pixels by "
+            "samples:",
+            ropts->noise.level, ropts->noise.min_spp, ropts->noise.max_spp, s.mean_spp,
+            s.max_spp);
+    for (int b = 0; b < NOISE_BINS; b++)
+        if (s.bins[b])
+            fprintf(stderr, " %s%u %.1f%%", b == NOISE_BINS - 1 ? ">" : "<=",
+                    b == NOISE_BINS - 1 ? 2u << b : 4u << b, 100.0 * s.bins[b] / n);
+    fprintf(stderr, "\nraytrace: estimated error (one standard error, 68%% confidence): mean "
+                    "%.3f, worst %.3f levels; %zu pixel%s short of %g at --max-spp\n",
+            s.mean_error, s.worst_error, short_of, short_of == 1 ? "" : "s", ropts->noise.level);
+    if (spp_map)
+        fprintf(stderr, "raytrace: map of samples: %s (black %u or fewer, white %u, log scale)\n",
+                spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
+}
+
+void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,
+                     const char *spp_map, const SummaryTimes *times, int threads,
+                     const RayCounts *counts)
+{
+    fprintf(stderr, "raytrace: read the scene in %.3f s\n", times->read);
+    if (scene->accel)
+        fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
+                        "%.3f s%s\n",
+                scene->accel->node_count, scene->accel->depth, times->accel,
+                scene->accel->avx2 ? ", box tests in AVX2 and FMA" : "");
+    summary_buffers(scene);
+    summary_statistics(img, ropts, scene->model, threads, counts, times->render);
+    if (ropts->spp)
+        summary_noise(ropts, (size_t)img->width * (size_t)img->height, spp_map);
+    fprintf(stderr, "raytrace: wrote the image in %.3f s\n", times->write);
+}
+
+void summary_line(const char *output, const Scene *scene, const Image *img,
+                  const RenderOptions *ropts, double seconds, int threads)
+{
+    size_t objects = scene_object_count(scene);
+
+    fprintf(stderr, "raytrace: wrote %s: %d x %d pixels, %zu object%s, %s, %.2f s, %d thread%s\n",
+            output, img->width, img->height, objects, objects == 1 ? "" : "s",
+            summary_samples_text(ropts), seconds, threads, threads == 1 ? "" : "s");
+}
