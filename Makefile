@@ -100,7 +100,8 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1 docs/raytrace-merge.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png \
-	docs/gallery/seed001-modelphysical.png docs/gallery/materials-noise4maxspp1024.png
+	docs/gallery/seed001-modelphysical.png docs/gallery/materials-noise4maxspp1024.png \
+	docs/gallery/horizon-texturefilterbilinear.png docs/gallery/materials-texturefilterbilinear.png
 
 .PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck seed001
 
@@ -222,6 +223,10 @@ docs/gallery/indirect-gi256.png: scenes/indirect.txt raytrace
 # it; tests/noise.sh checks that the map is the render's).
 docs/gallery/materials-noise4maxspp1024.png: scenes/materials.txt raytrace
 	./raytrace -q --noise 4 --max-spp 1024 --spp-map $(@:.png=-spp.png) $< $@
+# Texture filtering: the scenes as they were without it (bilinear lookups
+# at a point), beside their default renders.
+docs/gallery/%-texturefilterbilinear.png: scenes/%.txt raytrace
+	./raytrace -q --texture-filter bilinear $< $@
 # Seed 001's example by our physical model, beside its program's.
 docs/gallery/seed001-modelphysical.png: scenes/seed001.txt raytrace
 	./raytrace -q --model physical $< $@

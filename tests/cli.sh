@@ -222,6 +222,36 @@ printf 'm a PLASTIC 1 1 1 0 0.4 40 N 1.5\n' >"$T/old.txt"
 expect_exit "raytrace 0.1's layout" 1 "$RT" --check "$T/old.txt"
 expect_grep "raytrace 0.1's layout message" "old.txt:1:30: error: the material has an 11th field, '1.5'" "$T/err"
 
+# --- --texture-filter: what it changes, its note, the mip-maps' memory ---
+expect_exit "--texture-filter cubic" 2 "$RT" --texture-filter cubic scenes/horizon.txt "$T/x.ppm"
+expect_exit "--texture-filter on no texture" 0 "$RT" --texture-filter trilinear "$T/small.txt" "$T/tf.ppm"
+expect_grep "--texture-filter on no texture" \
+    "raytrace: note: --texture-filter changes nothing here: no object has a texture or stripes" "$T/err"
+"$RT" -q "$T/small.txt" "$T/tf0.ppm" && cmp -s "$T/tf.ppm" "$T/tf0.ppm" && pass ||
+    fail "--texture-filter changed a scene without textures"
+# A course scene keeps its bytes unless asked; asked, only its minified
+# texels change (the far floor), its magnified ones not at all.
+"$RT" -q scenes/textures.txt "$T/tex0.ppm" && "$RT" -q --texture-filter bilinear scenes/textures.txt "$T/texb.ppm"
+"$RT" -q --texture-filter trilinear scenes/textures.txt "$T/text.ppm" || fail "--texture-filter trilinear"
+"$DIFF" -t 1 "$T/texb.ppm" "$T/text.ppm" >"$T/out" 2>&1
+pct=$(sed -n 's/^over tolerance 1: [0-9]* of [0-9]* pixels (\([0-9.]*\)%).*/\1/p' "$T/out")
+echo "$pct" | awk '{ exit !($1 > 0 && $1 < 6) }' && pass ||
+    fail "textures.txt trilinear against bilinear: $pct% of pixels over 1 level (expected some, the far floor, under 6%)" "$(cat "$T/out")"
+# The MPL format filters by default; its line's word and the option win.
+grep -v '^#' scenes/horizon.txt | sed 's/carrelage.jpg$/carrelage.jpg bilinear/; s/^\(m candy .*\) N$/\1 N bilinear/' >"$T/hz-b.txt"
+mkdir -p "$T/textures" && cp scenes/textures/carrelage.jpg "$T/textures/"
+"$RT" -q "$T/hz-b.txt" "$T/hz-b.ppm" && "$RT" -q --texture-filter bilinear scenes/horizon.txt "$T/hz-o.ppm" &&
+    cmp -s "$T/hz-b.ppm" "$T/hz-o.ppm" && pass || fail "an MPL line's bilinear is not --texture-filter bilinear"
+"$RT" -q "$T/hz-b.txt" "$T/hz-b2.ppm" && "$RT" -q scenes/horizon.txt "$T/hz-t.ppm" &&
+    ! cmp -s "$T/hz-b2.ppm" "$T/hz-t.ppm" && pass || fail "horizon.txt renders the same filtered and not"
+"$RT" -q --save "$T/hz-saved.txt" "$T/hz-b.txt" && grep -q 'carrelage.jpg bilinear$' "$T/hz-saved.txt" &&
+    pass || fail "--save lost the material's filter" "$(cat "$T/hz-saved.txt")"
+expect_exit "mip-maps over the memory limit" 1 "$RT" --memory-limit 1200K scenes/horizon.txt "$T/mm.ppm"
+expect_grep "mip-maps over the memory limit" "the mip-maps of the scene's textures need 256.1 KiB" "$T/err"
+[ ! -e "$T/mm.ppm" ] && pass || fail "a refused render left an output"
+expect_exit "no mip-maps, no memory for them" 0 "$RT" --memory-limit 1200K --texture-filter bilinear \
+    scenes/horizon.txt "$T/mm.ppm"
+
 # --- --check and -v ---
 expect_exit "--check" 0 "$RT" --check scenes/glass.txt
 expect_line "--check report" 1 "scenes/glass.txt: OK: 480 x 320 pixels, 7 objects, 2 lights" "$T/out"

@@ -27,7 +27,7 @@ static int indirect_scene(const char *text, Scene *sc)
  * d, traced with indirect light `in`, one sample a pixel. */
 static Colour indirect_seen(const Scene *sc, Indirect in, Vec3 o, Vec3 d, RayCounts *counts)
 {
-    TraceSample s = {0, 0, 0, 1};
+    TraceSample s = {0, 0, 0, 1, NULL};
     Ray r = {o, vec3_normalize(d)};
     Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = counts, .indirect = in,
                 .sample = &s};

@@ -136,7 +136,10 @@ static const BadMpl mpl_bad[] = {
      "kind r g b stripes index glossiness texture); raytrace 0.1's --save wrote a highlight "
      "weight 7th and the index last: move the index to the 7th field and drop this one"},
     {"m a MATTE 1 1 1 0 0 0 N x\n", 1, 25,
-     "expected the end of the line after the material's texture, found 'x'"},
+     "unknown texture filter 'x' after the material's texture (expected nearest, bilinear, "
+     "trilinear or ewa)"},
+    {"m a MATTE 1 1 1 0 0 0 N ewa x\n", 1, 29,
+     "expected the end of the line after the material's filter, found 'x'"},
     {"c Model pbr\n", 1, 9,
      "unknown model 'pbr' (expected seed001, seed 001's program's rules, or physical)"},
     {"m a MATTE 1 1 1 0.5 0 0 N\n", 1, 17,

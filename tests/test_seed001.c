@@ -31,7 +31,7 @@ static Colour seed_seen(const Scene *sc, Vec3 o, Vec3 d, int ao, int gi, int no_
 {
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
-    TraceSample sample = {3, 5, 0, 1};
+    TraceSample sample = {3, 5, 0, 1, NULL};
     Tracer t = {.scene = sc, .max_depth = SEED001_MAX_DEPTH, .cut = NULL, .counts = &counts,
                 .sample = &sample, .no_shadows = no_shadows};
 

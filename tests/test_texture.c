@@ -165,7 +165,8 @@ static void texture_faults_are_positioned_in_the_scene(void)
         {"plane: 0 0 0 0 1 0 1 2 3 0\ntexture: tex-a.ppm nearest 0\n", 9, 28,
          "the plane's texture's tile size must be greater than 0, found '0'"},
         {"plane: 0 0 0 0 1 0 1 2 3 0\ntexture: tex-a.ppm cubic\n", 9, 20,
-         "unknown texture filter 'cubic' (expected 'nearest' or 'bilinear')"},
+         "unknown texture filter 'cubic' (expected 'nearest', 'bilinear', 'trilinear' or "
+         "'ewa')"},
         {"triangle: 0 0 3 1 0 3 0 1 3 1 2 3 0\ntexture: tex-a.ppm 0 0 1\n", 9, 20,
          "expected 0 or 6 numbers for the triangle's texture (path [filter] [u0 v0 u1 v1 u2 "
          "v2]), found 3"},

@@ -52,6 +52,8 @@ typedef struct {
                                 NOISE_MIN_SPP and NOISE_MAX_SPP */
     const char *spp_map;     /* --spp-map FILE: where the samples went, or
                                 NULL */
+    int texture_filter;      /* --texture-filter: a TextureFilter for every
+                                texture and stripes; -1: the scene's */
 } Options;
 
 /* What options_parse() found the command line asks for. */

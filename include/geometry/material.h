@@ -11,11 +11,25 @@
 
 #include "math/colour.h"
 
-/* How a texture is read between texel centres. */
+/* How a texture is read between texel centres, and over the footprint of
+ * a pixel (scene/texture.h). */
 typedef enum {
-    TEXTURE_NEAREST, /* the texel the point falls in */
-    TEXTURE_BILINEAR /* the four nearest texels, weighted by distance */
+    TEXTURE_NEAREST,   /* the texel the point falls in */
+    TEXTURE_BILINEAR,  /* the four nearest texels, weighted by distance */
+    TEXTURE_TRILINEAR, /* the mip-map's two levels around the footprint's
+                          width, each bilinear, blended; stripes filtered
+                          over the footprint */
+    TEXTURE_EWA        /* an elliptical Gaussian over the footprint (EWA),
+                          on the mip-map's levels around its minor axis;
+                          stripes as trilinear */
 } TextureFilter;
+
+/* Says whether filter averages over a pixel's footprint (the tracer then
+ * carries ray differentials to say what it is). */
+static inline int texture_filter_averages(int filter)
+{
+    return filter == TEXTURE_TRILINEAR || filter == TEXTURE_EWA;
+}
 
 typedef struct {
     Colour colour;         /* diffuse colour Ci, 0..255 per channel */

@@ -65,6 +65,42 @@ int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out);
 double ray_fresnel(Vec3 d, Vec3 n, real eta);
 
 /*
+ * Ray differentials (Igehy, "Tracing ray differentials", SIGGRAPH 1999):
+ * how a ray moves when its pixel moves one pixel right (x) or down (y),
+ * first derivatives of its origin and direction. They travel with a ray
+ * through mirrors and glass, and at a hit say the footprint of the pixel
+ * on the surface: what a texture lookup must average over. The functions
+ * below are the transfer, reflection and refraction rules, each in this
+ * one place.
+ */
+typedef struct {
+    Vec3 dodx, dody; /* the origin's derivatives */
+    Vec3 dddx, dddy; /* the direction's (of the direction as the ray has it,
+                        any length) */
+} RayDiff;
+
+/* Stores in dp[0] and dp[1] the derivatives of the point ray_at(ray, t)
+ * carried by diff onto the plane through it of normal n (the tangent
+ * plane of the surface it hits): d(O + t D) plus dt D, with dt keeping the
+ * point on the plane. Zero when the ray runs along the plane. */
+void ray_diff_transfer(const Ray *ray, const RayDiff *diff, real t, Vec3 n, Vec3 dp[2]);
+
+/* Stores in *out the differentials of the mirror ray ray_reflect(d, n)
+ * leaving the point whose derivatives are dp, where the unit normal n has
+ * derivatives dn, for an incoming direction d with differentials diff:
+ * dR = dD - 2 ((dD . n + d . dn) n + (d . n) dn). */
+void ray_diff_reflect(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], const Vec3 dp[2],
+                      RayDiff *out);
+
+/* Stores in *out the differentials of the refracted ray t (the unit
+ * direction ray_refract(d, n, eta) gave) leaving the point whose
+ * derivatives are dp, n and dn as for ray_diff_reflect(): with u the unit
+ * d, T = eta u + mu n and mu = eta cos_i - cos_t, dT = eta du + dmu n +
+ * mu dn, dmu = (eta - eta^2 cos_i / cos_t) dcos_i. */
+void ray_diff_refract(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], const Vec3 dp[2],
+                      real eta, Vec3 t, RayDiff *out);
+
+/*
  * Returns a start point for a ray leaving the surface point p in direction
  * w, safe from re-hitting the surface it leaves: p is moved along the unit
  * normal n, to the side w points to, by the projection of p's error bound

@@ -102,6 +102,8 @@ static inline int vec3_unit_exponent(real m)
 /* Returns a * 2^k, exactly (barring overflow and underflow). */
 static inline Vec3 vec3_ldexp(Vec3 a, int k)
 {
+    if (k == 0) /* the common case, without libm's three calls */
+        return a;
     return vec3(ldexp(a.x, k), ldexp(a.y, k), ldexp(a.z, k));
 }
 

@@ -32,6 +32,8 @@ typedef struct {
     real tmax;
     Colour weight;
     Colour lit;
+    int has_diff;  /* 1: the ray carries differentials (diff) */
+    RayDiff diff;
 } CutRay;
 
 typedef struct Cut {

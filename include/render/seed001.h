@@ -68,4 +68,9 @@ enum { SEED001_AO_RAYS = 10, SEED001_GI_RAYS = 10, SEED001_MAX_DEPTH = 99 };
  * down to t->max_depth. */
 Colour seed001_trace(const Tracer *t, const Ray *ray);
 
+/* seed001_trace() for a primary ray with differentials diff (NULL: none),
+ * followed through mirrors and glass for the textures and stripes whose
+ * filter averages over a footprint (trace.h). */
+Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
+
 #endif

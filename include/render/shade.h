@@ -29,6 +29,13 @@
 #include "render/tracer.h"
 #include "render/visibility.h"
 
+/* A pixel's footprint at a hit: how the point and its shading normal move
+ * when the pixel moves one pixel right ([0]) or down ([1]). */
+typedef struct {
+    Vec3 dp[2]; /* the point's derivatives, on the tangent plane */
+    Vec3 dn[2]; /* the unit shading normal's (outward, as sp.shading) */
+} ShadeFootprint;
+
 /* What shading needs to know about the point a ray hit. */
 typedef struct {
     SurfacePoint sp;          /* the point, its outward normal and error */
@@ -36,10 +43,18 @@ typedef struct {
     Colour colour;            /* Ci: the material's colour or its texture's */
     double ambient;           /* the share of the ambient light that reaches
                                  it: 1, or less under ambient occlusion */
+    const ShadeFootprint *footprint; /* the pixel's footprint there, or NULL
+                                 when the ray carries no differentials */
 } Shade;
 
 /* Returns the shading record of hit, crossed by ray, in scene. */
 Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit);
+
+/* shade_at() for a ray with differentials diff (NULL: none, as shade_at()):
+ * fills *fp with the footprint they give and points the record at it, and
+ * reads a texture or stripes whose filter averages over it (texture.h). */
+Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
+                         ShadeFootprint *fp);
 
 /* Returns the colour Ci of material m of scene at texture coordinates uv
  * (its texture's, v clamped when clamp_v is set) or stripe coordinate

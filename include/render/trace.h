@@ -34,6 +34,12 @@
  * counts the shadow, mirror and refracted rays it casts. */
 Colour trace_ray(const Tracer *t, const Ray *ray);
 
+/* trace_ray() for a primary ray with differentials diff (geometry/ray.h;
+ * NULL: none): they follow it through mirrors and glass (and, estimated,
+ * gathering rays), so that textures and stripes whose filter averages
+ * read over the pixel's footprint at every hit. */
+Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
+
 /* Returns the colour of the sky the ray sees: the scene's background, or
  * the blend of its sky and background by the direction's height. */
 Colour trace_background(const Scene *scene, const Ray *ray);

@@ -11,6 +11,7 @@
 #ifndef RAYTRACE_TRACER_H
 #define RAYTRACE_TRACER_H
 
+#include "geometry/ray.h"
 #include "render/sampler.h"
 #include "scene/scene.h"
 
@@ -49,6 +50,8 @@ typedef struct {
 typedef struct {
     int x, y;         /* the pixel */
     unsigned k, of;   /* sample k of `of` (progressive layout: of unused) */
+    const RayDiff *diff; /* the pixel's primary rays' differentials, or
+                            NULL (render.c) */
 } TraceSample;
 
 typedef struct {
@@ -69,6 +72,8 @@ typedef struct {
                             (visibility.h); NULL: none */
     int no_shadows;      /* 1: every light reaches every point facing it
                             (no shadow rays); 0: shadows */
+    double footprint_scale; /* a sample's primary ray differentials are the
+                            pixel's times this (render.c) */
 } Tracer;
 
 #endif

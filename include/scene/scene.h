@@ -173,6 +173,12 @@ typedef struct Scene {
     unsigned kinds;         /* bit k set: the scene holds shapes of ShapeKind
                                k (so the loops pass over absent kinds) */
     int has_transparency;   /* some object has T > 0 */
+    int filter_override;    /* the filter scene_set_texture_filter() gave
+                               every texture and stripes, or -1 */
+    int reads_footprint;    /* some material reads a texture or stripes by
+                               an averaging filter (material.h): the
+                               tracer then carries ray differentials
+                               (scene_filter.h sets it) */
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
     int ao_samples;         /* ambient occlusion rays the scene asks for

@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "base/error.h"
+#include "geometry/material.h"
 
 enum { LEX_MAX_TOKENS = 32 }; /* tokens kept per line: a keyword, 15 numbers
                                  (a transparent triangle), and room for an
@@ -124,6 +125,11 @@ int lex_whole_number_in(Lexer *L, const Record *rec, int k, const char *what, co
  * appeared before (on line *seen, 0 if not), then notes its line; returns
  * 0, or -1 with the fault recorded. */
 int lex_once(Lexer *L, const Record *rec, int *seen, const char *what);
+
+/* Says whether token t names a texture filter (nearest, bilinear,
+ * trilinear, ewa: material.h), the same words in every format, and stores
+ * it in *filter when so. */
+int lex_filter_word(const Token *t, TextureFilter *filter);
 
 /* Records that the input ends where `what` was expected (with syntax in
  * parentheses when not NULL): the position is just past the last byte. */

@@ -10,6 +10,7 @@
 #include "render/noise.h"
 #include "render/seed001.h"
 #include "scene/camera.h"
+#include "scene/scene_filter.h"
 
 /* Sets *in from the command line, else from the scene, else from its
  * model's defaults: the rays, the occlusion distance (the scene file's
@@ -86,6 +87,22 @@ static void adjust_noise(const Options *opts, const Scene *scene, RenderOptions 
  * model and size) and sets ropts' depth, samples and indirect light from
  * them; says once, on standard error, of each option given that can
  * change nothing in this scene. */
+/* Says whether some object of scene has a texture or stripes. */
+static int adjust_has_patterns(const Scene *scene)
+{
+    SceneWalk w;
+    ShapeKind kind;
+    size_t index;
+
+    scene_walk_start(&w);
+    while (scene_walk_next(scene, &w, &kind, &index)) {
+        Material m = scene_material(scene, kind, index);
+        if (m.texture >= 0 || m.stripes)
+            return 1;
+    }
+    return 0;
+}
+
 void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
 {
     int mpl = scene->format == SCENE_MPL, seed;
@@ -98,6 +115,11 @@ void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
     seed = scene->model == SCENE_MODEL_SEED001;
     if (opts->width > 0)
         camera_resize(&scene->camera, opts->width, opts->height);
+    if (opts->texture_filter >= 0 && !adjust_has_patterns(scene))
+        adjust_note(opts, "--texture-filter changes nothing here: no object has a texture or "
+                          "stripes");
+    else if (opts->texture_filter >= 0)
+        scene_set_texture_filter(scene, (TextureFilter)opts->texture_filter);
     ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
     ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
     ropts->no_shadows = opts->no_shadows;
@@ -135,6 +157,8 @@ uint64_t adjust_fingerprint(const Scene *scene, const RenderOptions *ropts)
     h = hash_u64(h, (uint64_t)ropts->indirect.gi_bounces);
     h = hash_u64(h, (uint64_t)scene->model);
     h = hash_u64(h, (uint64_t)ropts->no_shadows);
+    if (scene->filter_override >= 0) /* else the hash of earlier versions */
+        h = hash_u64(h, 0x100 + (uint64_t)scene->filter_override);
     if (ropts->noise.level > 0) { /* else the hash of earlier versions */
         double level = ropts->noise.level;
         uint64_t bits;

@@ -30,6 +30,7 @@
 #include "render/seed001.h"
 #include "scene/scene.h"
 #include "scene/scene_accel.h"
+#include "scene/scene_filter.h"
 #include "scenefile/load.h"
 #include "scenefile/save.h"
 
@@ -273,8 +274,9 @@ fail:
 }
 
 /* Sets aside from the memory limit what the image and its writing need
- * (and `extra` bytes more),
- * failing when the scene leaves less; then builds the scene's bounding
+ * (and `extra` bytes more), failing when the scene leaves less; builds the
+ * mip-maps its texture filters read (scene_filter.h), failing when they
+ * would pass the limit; then builds the scene's bounding
  * volume hierarchy (unless opts say not to), failing when it would pass
  * the limit and warning when memory runs out for it. Returns 0, or -1 with
  * *err set. */
@@ -292,6 +294,19 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t 
                   "more than the memory limit of %s (raise it with --memory-limit)",
                   scene->camera.width, scene->camera.height, number_bytes(a, need),
                   number_bytes(b, scene_memory(scene)), number_bytes(c, scene->memory_limit));
+        return -1;
+    }
+    rc = scene_prepare_filters(scene);
+    if (rc != 0) {
+        if (rc == SCENE_OVER_LIMIT)
+            error_set(err, opts->scene_path,
+                      "the mip-maps of the scene's textures need %s, more than the %s the memory "
+                      "limit leaves (--memory-limit; --texture-filter bilinear reads them "
+                      "without)",
+                      number_bytes(a, scene_filters_memory(scene)),
+                      number_bytes(b, scene_memory_left(scene)));
+        else
+            error_set(err, opts->scene_path, "out of memory for the textures' mip-maps");
         return -1;
     }
     rc = opts->no_accel ? 0 : scene_build_accel(scene, opts->threads);

@@ -50,6 +50,13 @@ const char *const *options_help(void)
         "                     4096; up to 1048576)\n"
         "  --spp-map FILE     under --noise, also write a heat map of the samples\n"
         "                     each pixel took (black: --min-spp, white: --max-spp)\n"
+        "  --texture-filter F read every texture and seed 001's stripes with F:\n"
+        "                     nearest, bilinear, trilinear (mip-maps: the pixel's\n"
+        "                     footprint averaged, followed by ray differentials\n"
+        "                     through mirrors and glass) or ewa (an elliptical\n"
+        "                     Gaussian over the footprint, sharper at grazing\n"
+        "                     angles); default: the scene's (course texture:\n"
+        "                     records bilinear, MPL materials trilinear)\n",
         "  --size WxH         render W x H pixels (1 to 32768 each) of the scene's\n"
         "                     view, its height kept (default: the scene's size)\n"
         "  --model M          light an MPL scene by M: seed001 (the default: seed\n"
@@ -203,6 +210,11 @@ static const OptionWord options_formats[] = {{"ppm", FORMAT_PPM},   {"png", FORM
                                              {"jpg", FORMAT_JPEG}, {NULL, 0}};
 static const OptionWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
 static const OptionWord options_layouts[] = {{"rows", TILE_ROWS}, {"bands", TILE_BANDS}, {NULL, 0}};
+static const OptionWord options_filters[] = {{"nearest", TEXTURE_NEAREST},
+                                            {"bilinear", TEXTURE_BILINEAR},
+                                            {"trilinear", TEXTURE_TRILINEAR},
+                                            {"ewa", TEXTURE_EWA},
+                                            {NULL, 0}};
 static const OptionWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
 static const OptionWord options_models[] = {{"seed001", SCENE_MODEL_SEED001},
                                            {"physical", SCENE_MODEL_PHYSICAL},
@@ -246,6 +258,7 @@ static const OptionSpec options_table[] = {
     {"--min-spp", OPT(NULL, OPTION_INT, min_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
     {"--max-spp", OPT(NULL, OPTION_INT, max_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
     {"--spp-map", OPT(NULL, OPTION_TEXT, spp_map), 0, 0, NULL, 0},
+    {"--texture-filter", OPT(NULL, OPTION_WORD, texture_filter), 0, 0, options_filters, 0},
 };
 #undef OPT
 
@@ -442,6 +455,7 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     opts->memory_limit = OPTIONS_DEFAULT_MEMORY_LIMIT;
     opts->ao = opts->gi = -1;
     opts->noise = -1;
+    opts->texture_filter = -1;
     opts->jpeg_quality = 90;
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];

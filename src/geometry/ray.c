@@ -38,6 +38,56 @@ int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out)
     return 1;
 }
 
+void ray_diff_transfer(const Ray *ray, const RayDiff *diff, real t, Vec3 n, Vec3 dp[2])
+{
+    real dn = vec3_dot(ray->dir, n);
+    Vec3 o[2] = {diff->dodx, diff->dody}, d[2] = {diff->dddx, diff->dddy};
+
+    for (int k = 0; k < 2; k++) {
+        Vec3 moved = vec3_add(o[k], vec3_scale(d[k], t));
+        dp[k] = dn != 0 ? vec3_sub(moved, vec3_scale(ray->dir, vec3_dot(moved, n) / dn))
+                        : vec3(0, 0, 0);
+    }
+}
+
+void ray_diff_reflect(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], const Vec3 dp[2],
+                      RayDiff *out)
+{
+    Vec3 dd[2] = {diff->dddx, diff->dddy}, r[2];
+    real dot = vec3_dot(d, n);
+
+    for (int k = 0; k < 2; k++) {
+        real ddot = vec3_dot(dd[k], n) + vec3_dot(d, dn[k]);
+        r[k] = vec3_sub(dd[k], vec3_scale(vec3_add(vec3_scale(n, ddot), vec3_scale(dn[k], dot)), 2));
+    }
+    out->dodx = dp[0];
+    out->dody = dp[1];
+    out->dddx = r[0];
+    out->dddy = r[1];
+}
+
+void ray_diff_refract(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], const Vec3 dp[2],
+                      real eta, Vec3 t, RayDiff *out)
+{
+    Vec3 dd[2] = {diff->dddx, diff->dddy}, r[2];
+    real len = vec3_length(d);
+    Vec3 u = vec3_scale(d, 1 / len);
+    real cos_i = -vec3_dot(u, n), cos_t = -vec3_dot(t, n);
+    real mu = eta * cos_i - cos_t;
+
+    for (int k = 0; k < 2; k++) {
+        /* The unit direction's derivative, then the cosine's. */
+        Vec3 du = vec3_scale(vec3_sub(dd[k], vec3_scale(u, vec3_dot(u, dd[k]))), 1 / len);
+        real dcos_i = -(vec3_dot(du, n) + vec3_dot(u, dn[k]));
+        real dmu = cos_t != 0 ? (eta - eta * eta * cos_i / cos_t) * dcos_i : 0;
+        r[k] = vec3_add(vec3_add(vec3_scale(du, eta), vec3_scale(n, dmu)), vec3_scale(dn[k], mu));
+    }
+    out->dodx = dp[0];
+    out->dody = dp[1];
+    out->dddx = r[0];
+    out->dddy = r[1];
+}
+
 double ray_fresnel(Vec3 d, Vec3 n, real eta)
 {
     double ci = -(double)vec3_dot(d, n) / (double)vec3_length(d), st2, ct, rs, rp;

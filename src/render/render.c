@@ -1,6 +1,7 @@
 /* render.c: the pixel loop (see render.h). */
 #include "render/render.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "accel/bvh.h"
@@ -33,13 +34,52 @@ typedef struct {
 /* Returns the colour seen along the primary ray `ray` by the rules of the
  * scene's model: the physical model's (trace.h) or seed 001's (seed001.h),
  * chosen here alone. */
-RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray)
+RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
-    return t->scene->model == SCENE_MODEL_SEED001 ? seed001_trace(t, ray) : trace_ray(t, ray);
+    return t->scene->model == SCENE_MODEL_SEED001 ? seed001_trace_diff(t, ray, diff)
+                                                  : trace_ray_diff(t, ray, diff);
+}
+
+/* Stores in *out the differentials of pixel (x, y)'s primary rays when
+ * the scene reads textures or stripes over a footprint, and returns out;
+ * else returns NULL. They are the centre ray's: the rays through the
+ * centres of the pixels right of and below it (through the lens's
+ * centre), as differences, times `scale`, which shrinks the footprint as
+ * the pixel's samples share it; every sample of the pixel takes them (a
+ * sample's own would differ by a second-order term, at three camera rays
+ * a sample). */
+RENDER_INLINE const RayDiff *render_pixel_diff(const Tracer *t, int x, int y, double scale,
+                                               RayDiff *out)
+{
+    static const double centre[2] = {0, 0};
+    const Camera *cam = &t->scene->camera;
+    Ray ray, right, down;
+
+    if (!t->scene->reads_footprint)
+        return NULL;
+    ray = camera_lens_ray(cam, x + 0.5, y + 0.5, centre);
+    right = camera_lens_ray(cam, x + 1.5, y + 0.5, centre);
+    down = camera_lens_ray(cam, x + 0.5, y + 1.5, centre);
+    out->dodx = vec3_scale(vec3_sub(right.origin, ray.origin), scale);
+    out->dody = vec3_scale(vec3_sub(down.origin, ray.origin), scale);
+    out->dddx = vec3_scale(vec3_sub(right.dir, ray.dir), scale);
+    out->dddy = vec3_scale(vec3_sub(down.dir, ray.dir), scale);
+    return out;
+}
+
+/* Returns the share of a pixel's width a sample's footprint spans when
+ * the pixel takes n samples: 1 / sqrt(n), at least 1/8 (as pbrt scales
+ * its differentials). */
+static double render_footprint_scale(unsigned n)
+{
+    double s = 1 / sqrt((double)n);
+
+    return s > 0.125 ? s : 0.125;
 }
 
 /* Returns the colour of sample k of pixel (x, y) (the grid's point k of
- * the pixel, through its point k of the lens), traced by t. */
+ * the pixel, through its point k of the lens), traced by t with the
+ * pixel's differentials t->sample->diff. */
 RENDER_INLINE Colour render_sample(const Tracer *t, const SamplerGrid *g, int x, int y,
                                    unsigned k)
 {
@@ -54,7 +94,7 @@ RENDER_INLINE Colour render_sample(const Tracer *t, const SamplerGrid *g, int x,
     }
     ray = camera_lens_ray(cam, x + p[0], y + p[1], disk);
     t->sample->k = k;
-    return render_trace(t, &ray);
+    return render_trace(t, &ray, t->sample->diff);
 }
 
 /* Returns the mean colour of the grid's samples of pixel (x, y) of row,
@@ -65,15 +105,17 @@ RENDER_INLINE Colour render_samples(const Tracer *t, const SamplerGrid *g, const
 {
     const Camera *cam = &t->scene->camera;
     Colour sum = colour(0, 0, 0);
+    RayDiff diff;
 
     t->counts->primary += g->n;
     t->sample->x = x;
     t->sample->y = y;
     t->sample->k = 0;
+    t->sample->diff = render_pixel_diff(t, x, y, t->footprint_scale, &diff);
     if (g->n == 1) {
         Ray ray = row->columns ? camera_ray_through(cam, row->columns[x], row->row)
                                : camera_ray(cam, x + 0.5, y + 0.5);
-        return render_trace(t, &ray);
+        return render_trace(t, &ray, t->sample->diff);
     }
     for (unsigned k = 0; k < g->n; k++)
         sum = colour_add(sum, render_sample(t, g, x, y, k));
@@ -107,8 +149,11 @@ static Colour render_adaptive(const Tracer *t, const RenderOptions *opts, const 
     unsigned n = noise_first(&opts->noise);
     double e;
 
+    RayDiff diff;
+
     t->sample->x = x;
     t->sample->y = y;
+    t->sample->diff = render_pixel_diff(t, x, y, t->footprint_scale, &diff);
     for (;;) {
         t->counts->primary += n - p.n;
         noise_take(&p, n, render_adaptive_sample, &a);
@@ -317,12 +362,13 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     {
         RayCounts mine = {0};
         Cut cut = proto; /* the thread's own: it keeps the rays left out */
-        TraceSample sample = {0, 0, 0, g.n};
+        TraceSample sample = {0, 0, 0, g.n, NULL};
         uint32_t occluders[TRACE_OCCLUDERS];
         Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
                     render_rays_grid(&g, opts->indirect.ao_samples),
                     render_rays_grid(&g, opts->indirect.gi_samples), g, occluders,
-                    opts->no_shadows};
+                    opts->no_shadows,
+                    render_footprint_scale(noise ? noise_first(&opts->noise) : g.n)};
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;

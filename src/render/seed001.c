@@ -64,21 +64,25 @@ static int seed001_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *h
     return found;
 }
 
-/* Returns the shading record of hit, crossed by ray: shade_at()'s, but on
- * an infinite cylinder the program's point (seed001_cylinder_t()) with its
- * normal, the point's offset from the axis (not of unit length), and the
- * colour there. */
-static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit)
+/* Returns the shading record of hit, crossed by ray with differentials
+ * diff (NULL: none; fp receives the footprint): shade_at_footprint()'s,
+ * but on an infinite cylinder the program's point (seed001_cylinder_t())
+ * with its normal, the point's offset from the axis (not of unit length),
+ * and the colour there, read at the point (no footprint: the point is off
+ * the surface). */
+static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
+                           ShadeFootprint *fp)
 {
     const Cylinder *c;
     Shade sh;
     double uv[2], stripe;
 
     if (hit->kind != SHAPE_CYLINDER)
-        return shade_at(scene, ray, hit);
+        return shade_at_footprint(scene, ray, hit, diff, fp);
     c = &scene->cylinders[hit->index];
     sh.material = c->material;
     sh.ambient = 1;
+    sh.footprint = NULL;
     sh.sp.point = ray_at(ray, hit->t);
     sh.sp.normal = vec3(sh.sp.point.x - c->centre.x, 0, sh.sp.point.z - c->centre.z);
     sh.sp.shading = sh.sp.normal;
@@ -166,7 +170,7 @@ static Colour seed001_gather(const Tracer *t, const Shade *sh, Vec3 n, uint64_t 
 
         t->counts->gather++;
         if (seed001_nearest(t->scene, &r, INFINITY, &hit))
-            sum = colour_add(sum, seed001_shade(t->scene, &r, &hit).colour);
+            sum = colour_add(sum, seed001_shade(t->scene, &r, &hit, NULL, NULL).colour);
     }
     return colour_scale(sum, 1.0 / (255.0 * rays));
 }
@@ -218,14 +222,20 @@ static Colour seed001_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v, C
     return sum;
 }
 
-/* Returns the colour (0..1) seen along ray, of depth `depth`, on path key. */
-static Colour seed001_path(const Tracer *t, const Ray *ray, int depth, uint64_t key);
+/* Returns the colour (0..1) seen along ray, with differentials diff
+ * (NULL: none), of depth `depth`, on path key. */
+static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
+                           uint64_t key);
 
 /* Returns the colour (0..1) along the ray of kind `kind` leaving sh (n its
- * normal facing the arriving ray) in direction dir, one deeper than depth. */
-static Colour seed001_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 dir, RayKind kind,
+ * normal facing the arriving ray `ray`, of unit direction v and
+ * differentials diff) in direction dir, bent by eta when refracted, one
+ * deeper than depth. */
+static Colour seed001_secondary(const Tracer *t, const Ray *ray, Vec3 v, const RayDiff *diff,
+                                const Shade *sh, Vec3 n, Vec3 dir, RayKind kind, real eta,
                                 int depth, uint64_t key)
 {
+    RayDiff unit, child;
     Ray r;
 
     r.dir = dir;
@@ -236,21 +246,40 @@ static Colour seed001_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 d
         t->counts->refraction++;
     else
         t->counts->reflection++;
-    return seed001_path(t, &r, depth + 1, sampler_branch(key, kind));
+    if (diff && sh->footprint) {
+        /* The program bends the unit direction v about the normal n facing
+         * it: the differentials of v, then the rules of ray.h. */
+        const ShadeFootprint *fp = sh->footprint;
+        int flip = vec3_dot(sh->sp.normal, n) < 0;
+        Vec3 dn[2] = {flip ? vec3_neg(fp->dn[0]) : fp->dn[0], flip ? vec3_neg(fp->dn[1]) : fp->dn[1]};
+        real len = vec3_length(ray->dir);
+        unit = *diff;
+        unit.dddx = vec3_scale(vec3_sub(diff->dddx, vec3_scale(v, vec3_dot(v, diff->dddx))), 1 / len);
+        unit.dddy = vec3_scale(vec3_sub(diff->dddy, vec3_scale(v, vec3_dot(v, diff->dddy))), 1 / len);
+        if (kind == RAY_REFRACTION)
+            ray_diff_refract(v, &unit, n, dn, fp->dp, eta, dir, &child);
+        else
+            ray_diff_reflect(v, &unit, n, dn, fp->dp, &child);
+    }
+    return seed001_path(t, &r, diff && sh->footprint ? &child : NULL, depth + 1,
+                        sampler_branch(key, kind));
 }
 
-static Colour seed001_path(const Tracer *t, const Ray *ray, int depth, uint64_t key)
+static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
+                           uint64_t key)
 {
     const Scene *scene = t->scene;
     const NamedMaterial *pm;
+    ShadeFootprint fp;
     Hit hit;
     Shade sh;
     Vec3 n, v;
     Colour a, c;
+    real eta;
 
     if (!seed001_nearest(scene, ray, INFINITY, &hit))
         return colour_scale(trace_background(scene, ray), 1.0 / 255);
-    sh = seed001_shade(scene, ray, &hit);
+    sh = seed001_shade(scene, ray, &hit, diff, &fp);
     pm = &scene->named[sh.material.named];
     v = vec3_normalize(ray->dir);
     n = ray_facing_normal(sh.sp.normal, v);
@@ -258,7 +287,8 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, int depth, uint64_t 
     switch (pm->model) {
     case MODEL_METALLIC:
     case MODEL_PLASTIC: {
-        Colour mirror = seed001_secondary(t, &sh, n, ray_reflect(v, n), RAY_REFLECTION, depth, key);
+        Colour mirror = seed001_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n),
+                                          RAY_REFLECTION, 1, depth, key);
         double f = pm->model == MODEL_PLASTIC
                        ? ray_fresnel(v, n, vec3_dot(v, sh.sp.normal) < 0 ? 1 / sh.material.ior
                                                                          : sh.material.ior)
@@ -270,10 +300,12 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, int depth, uint64_t 
     case MODEL_DIELECTRIC: {
         int entering = vec3_dot(v, sh.sp.normal) < 0;
         Vec3 bent;
-        if (ray_refract(v, n, entering ? 1 / sh.material.ior : sh.material.ior, &bent))
-            c = seed001_secondary(t, &sh, n, bent, RAY_REFRACTION, depth, key);
+        eta = entering ? 1 / sh.material.ior : sh.material.ior;
+        if (ray_refract(v, n, eta, &bent))
+            c = seed001_secondary(t, ray, v, diff, &sh, n, bent, RAY_REFRACTION, eta, depth, key);
         else
-            c = seed001_secondary(t, &sh, n, ray_reflect(v, n), RAY_REFLECTION, depth, key);
+            c = seed001_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n), RAY_REFLECTION, 1,
+                                  depth, key);
         break;
     }
     default: /* MATTE */
@@ -290,5 +322,10 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, int depth, uint64_t 
 
 Colour seed001_trace(const Tracer *t, const Ray *ray)
 {
-    return colour_scale(seed001_path(t, ray, 0, 0), 255);
+    return seed001_trace_diff(t, ray, NULL);
+}
+
+Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
+{
+    return colour_scale(seed001_path(t, ray, diff, 0, 0), 255);
 }

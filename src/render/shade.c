@@ -27,18 +27,128 @@ static inline Colour shade_colour(const Scene *scene, const Material *m, const d
     return m->colour;
 }
 
+/* The step, as a share of a pixel's footprint, at which texture
+ * coordinates and normals are read again to take their derivatives: a
+ * sixteenth, so that a repeating texture's seam seldom falls within it
+ * (a footprint 8 repeats wide would wrap) and single precision still has
+ * digits for it. */
+#define SHADE_STEP (1.0 / 16)
+
+/* Stores in sp and uv the surface point of hit's shape at p, a point of
+ * the tangent plane near hit's point (uv only when want_uv, by the
+ * shapes' own mapping; the caller applies seed 001's), sp0 being hit's. */
+static void shade_surface_near(const Scene *scene, const Hit *hit, const SurfacePoint *sp0,
+                               Vec3 p, int want_uv, SurfacePoint *sp, double uv[2])
+{
+    *sp = *sp0;
+    sp->point = p;
+    switch (hit->kind) {
+    case SHAPE_SPHERE:
+        *sp = sphere_surface_at(&scene->spheres[hit->index], p);
+        if (want_uv)
+            sphere_uv(sp->normal, uv);
+        break;
+    case SHAPE_PLANE:
+        if (want_uv)
+            plane_uv(&scene->planes[hit->index], p, uv);
+        break;
+    case SHAPE_TRIANGLE: {
+        /* The barycentric weights of p, seen along the normal. */
+        const Triangle *tri = &scene->triangles[hit->index];
+        Ray down = {vec3_add(p, sp0->normal), vec3_neg(sp0->normal)};
+        double uv_[2];
+        *sp = triangle_surface_at(tri, scene_shading_of(scene, tri), &down, want_uv ? uv : uv_);
+        sp->point = p;
+        break;
+    }
+    case SHAPE_CUBE: /* flat faces: the normal stays */
+        if (want_uv)
+            cube_uv(&scene->cubes[hit->index], p, sp->normal, uv);
+        break;
+    case SHAPE_SQUARE:
+        if (want_uv)
+            square_uv(&scene->squares[hit->index], p, uv);
+        break;
+    case SHAPE_CYLINDER:
+        *sp = cylinder_surface_at(&scene->cylinders[hit->index], p);
+        if (want_uv)
+            cylinder_uv(&scene->cylinders[hit->index], p, sp->normal, uv);
+        break;
+    default:
+        *sp = cone_surface_at(&scene->cones[hit->index], p);
+        if (want_uv)
+            cone_uv(&scene->cones[hit->index], p, uv);
+        break;
+    }
+}
+
+/* Returns d brought into [-1/2, 1/2) by whole periods of 1: the change of
+ * a repeating coordinate across a seam. */
+static double shade_unwrap(double d)
+{
+    return d - floor(d + 0.5);
+}
+
+/* Fills *fp, sh's footprint, from the differentials diff of ray, which
+ * met hit; when the colour averages over it (a texture or stripes read by
+ * an averaging filter), reads the colour again over it: texture
+ * coordinates (by the scene's mapping) and stripes at the footprint's
+ * ends, their derivatives by difference. uv and stripe are the point's,
+ * seed says whether seed 001's mapping lays them. */
+static void shade_footprint(const Scene *scene, const Ray *ray, const Hit *hit,
+                            const RayDiff *diff, ShadeFootprint *fp, Shade *sh, const double uv[2],
+                            double stripe, int want_uv, int seed, int clamp_v)
+{
+    const Material *m = &sh->material;
+    int averages = want_uv && texture_filter_averages(m->filter);
+    double d[4], ds[2];
+
+    ray_diff_transfer(ray, diff, hit->t, sh->sp.normal, fp->dp);
+    for (int k = 0; k < 2; k++) {
+        SurfacePoint near;
+        double nuv[2] = {0, 0}, nstripe = 0;
+        Vec3 p = vec3_add(sh->sp.point, vec3_scale(fp->dp[k], SHADE_STEP));
+
+        shade_surface_near(scene, hit, &sh->sp, p, averages && !seed, &near, nuv);
+        fp->dn[k] = vec3_scale(vec3_sub(near.shading, sh->sp.shading), 1 / SHADE_STEP);
+        if (!averages)
+            continue;
+        if (seed)
+            mapping_seed001(scene, hit->kind, hit->index, &near, nuv, &nstripe);
+        d[2 * k] = shade_unwrap(nuv[0] - uv[0]) / SHADE_STEP;
+        d[2 * k + 1] = (clamp_v ? nuv[1] - uv[1] : shade_unwrap(nuv[1] - uv[1])) / SHADE_STEP;
+        ds[k] = shade_unwrap(nstripe - stripe) / SHADE_STEP;
+    }
+    sh->footprint = fp;
+    if (!averages)
+        return;
+    if (m->texture >= 0)
+        sh->colour = texture_lookup_footprint(&scene->textures[m->texture], uv[0], uv[1], d,
+                                              m->filter, clamp_v);
+    else if (m->stripes)
+        sh->colour = colour_scale(m->colour,
+                                  texture_stripe_cover(stripe, fmax(fabs(ds[0]), fabs(ds[1]))));
+}
+
 Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
+{
+    return shade_at_footprint(scene, ray, hit, NULL, NULL);
+}
+
+Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
+                         ShadeFootprint *fp)
 {
     Shade sh;
     double uv[2] = {0, 0}, stripe = 0;
-    int clamp_v = 0, want_uv, seed;
+    int clamp_v = 0, want_uv, seed, mapped;
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
+    sh.footprint = NULL;
     /* Stripes are seed 001's, laid as its program laid them. */
-    want_uv = sh.material.texture >= 0 || sh.material.stripes;
-    seed = want_uv && (sh.material.stripes || scene->mapping == SCENE_MAPPING_SEED001);
-    want_uv = want_uv && !seed;
+    mapped = sh.material.texture >= 0 || sh.material.stripes;
+    seed = mapped && (sh.material.stripes || scene->mapping == SCENE_MAPPING_SEED001);
+    want_uv = mapped && !seed;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         const Sphere *s = &scene->spheres[hit->index];
@@ -92,6 +202,8 @@ Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
     if (seed)
         mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
     sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
+    if (diff)
+        shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, mapped, seed, clamp_v);
     return sh;
 }
 
@@ -153,6 +265,7 @@ static inline int shade_cut_shadow(Cut *cut, double most, Colour weight, Colour 
     d.ray = shade_shadow_ray(sh, n, light, to_light, &d.tmax);
     d.kind = RAY_SHADOW;
     d.depth = 0;
+    d.has_diff = 0;
     d.weight = weight;
     d.lit = lit;
     return cut_leave_out(cut, most, &d);

@@ -5,17 +5,20 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "math/angle.h"
 #include "render/cut.h"
 #include "render/sampler.h"
 #include "render/shade.h"
 #include "render/visibility.h"
 
 /* Where a ray is on its way from the camera: the key its indirect rays
- * draw their directions from (sampler.h; 0 when there are none) and the
- * diffuse bounces (gathering rays) taken so far. */
+ * draw their directions from (sampler.h; 0 when there are none), the
+ * diffuse bounces (gathering rays) taken so far, and its differentials
+ * (geometry/ray.h; NULL when the scene reads nothing over a footprint). */
 typedef struct {
     uint64_t key;
     int bounce;
+    const RayDiff *diff;
 } TracePath;
 
 /* The branches a path's key follows (sampler_branch()): a mirror or
@@ -68,47 +71,84 @@ static inline int trace_cut_secondary(const Tracer *t, CutRay *d, RayKind kind, 
     return cut_leave_out(t->cut, most * cut_bound(t->cut, t->max_depth - depth), d);
 }
 
+/* Stores in *out the differentials of the ray of kind `kind` leaving sh
+ * in direction dir, for the ray `ray` that met it with differentials
+ * diff: the mirror's about, or the refraction's through, sh's shading
+ * normal facing the ray (as the tracer bends them). */
+static void trace_child_diff(const Ray *ray, const Shade *sh, Vec3 n, RayKind kind, Vec3 dir,
+                             const RayDiff *diff, RayDiff *out)
+{
+    const ShadeFootprint *fp = sh->footprint;
+    int flip = vec3_dot(sh->sp.shading, n) < 0;
+    Vec3 ns = flip ? vec3_neg(sh->sp.shading) : sh->sp.shading;
+    Vec3 dn[2] = {flip ? vec3_neg(fp->dn[0]) : fp->dn[0], flip ? vec3_neg(fp->dn[1]) : fp->dn[1]};
+
+    if (kind == RAY_REFRACTION) {
+        int entering = vec3_dot(ray->dir, sh->sp.normal) < 0;
+        real eta = entering ? 1 / sh->material.ior : sh->material.ior;
+        ray_diff_refract(ray->dir, diff, ns, dn, fp->dp, eta, dir, out);
+    } else {
+        ray_diff_reflect(ray->dir, diff, ns, dn, fp->dp, out);
+    }
+}
+
 /* Returns share times the colour seen along the ray of kind `kind` leaving
- * sh (facing normal n) in direction dir at depth `depth`, reached with
- * weight times share, or 0 when the cut-off allows leaving it out. */
-static inline Colour trace_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 dir,
-                                     RayKind kind, double share, int depth, double weight,
-                                     TracePath path)
+ * sh (facing normal n; ray the ray that met it) in direction dir at depth
+ * `depth`, reached with weight times share, or 0 when the cut-off allows
+ * leaving it out. */
+static inline Colour trace_secondary(const Tracer *t, const Ray *ray, const Shade *sh, Vec3 n,
+                                     Vec3 dir, RayKind kind, double share, int depth,
+                                     double weight, TracePath path)
 {
     CutRay d;
+    TracePath next = trace_branch(t, path, kind);
 
     weight *= share;
     d.ray.dir = dir;
     d.ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    if (path.diff && sh->footprint) {
+        trace_child_diff(ray, sh, n, kind, dir, path.diff, &d.diff);
+        next.diff = &d.diff;
+    } else {
+        next.diff = NULL;
+    }
+    d.has_diff = next.diff != NULL;
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, colour(weight, weight, weight), weight))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);
-    return colour_scale(trace_path(t, &d.ray, depth, weight, trace_branch(t, path, kind)), share);
+    return colour_scale(trace_path(t, &d.ray, depth, weight, next), share);
 }
 
 /* trace_secondary() for a scene of named materials: the share and weight
  * channel by channel. */
-static inline Colour trace_named_secondary(const Tracer *t, const Shade *sh, Vec3 n, Vec3 dir,
-                                           RayKind kind, Colour share, int depth, Colour weight,
-                                           TracePath path)
+static inline Colour trace_named_secondary(const Tracer *t, const Ray *ray, const Shade *sh,
+                                           Vec3 n, Vec3 dir, RayKind kind, Colour share,
+                                           int depth, Colour weight, TracePath path)
 {
     CutRay d;
+    TracePath next = trace_branch(t, path, kind);
 
     weight = colour_mul(weight, share);
     d.ray.dir = dir;
     d.ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    if (path.diff && sh->footprint) {
+        trace_child_diff(ray, sh, n, kind, dir, path.diff, &d.diff);
+        next.diff = &d.diff;
+    } else {
+        next.diff = NULL;
+    }
+    d.has_diff = next.diff != NULL;
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, weight, colour_max(weight)))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);
-    return colour_mul(trace_named_path(t, &d.ray, depth, weight, trace_branch(t, path, kind)),
-                      share);
+    return colour_mul(trace_named_path(t, &d.ray, depth, weight, next), share);
 }
 
 Colour trace_deferred(const Tracer *t, CutRay d)
 {
     /* The cut-off is off under global illumination (render.c), so a
      * deferred ray's path draws nothing. */
-    TracePath none = {0, 0};
+    TracePath none = {0, 0, d.has_diff ? &d.diff : NULL};
 
     if (d.kind == RAY_SHADOW)
         return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax, NULL)));
@@ -121,7 +161,12 @@ Colour trace_deferred(const Tracer *t, CutRay d)
 
 Colour trace_ray(const Tracer *t, const Ray *ray)
 {
-    TracePath primary = {0, 0};
+    return trace_ray_diff(t, ray, NULL);
+}
+
+Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
+{
+    TracePath primary = {0, 0, diff};
 
     if (t->scene->named_count > 0)
         return trace_named_path(t, ray, 0, colour(1, 1, 1), primary);
@@ -160,6 +205,24 @@ static inline int trace_gathers(const Tracer *t, TracePath path)
     return t->indirect.gi_samples > 0 && path.bounce < t->indirect.gi_bounces;
 }
 
+/* Stores in *out the differentials given a gathering ray in direction dir
+ * (unit), one of `rays` leaving a point of footprint fp: an estimate, as
+ * its neighbours are no pixel's: it starts where the point's footprint
+ * spans, and spreads as the rays share the hemisphere, each the angle
+ * sqrt(pi / rays) apart from the next (Igehy's differentials are for
+ * mirrors; pbrt-v4 estimates diffuse rays' likewise). */
+static void trace_gather_diff(const ShadeFootprint *fp, Vec3 dir, unsigned rays, RayDiff *out)
+{
+    real spread = (real)sqrt(ANGLE_PI / rays);
+    Vec3 a = fabs((double)dir.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0);
+    Vec3 u = vec3_normalize(vec3_cross(dir, a)), v = vec3_cross(dir, u);
+
+    out->dodx = fp->dp[0];
+    out->dody = fp->dp[1];
+    out->dddx = vec3_scale(u, spread);
+    out->dddy = vec3_scale(v, spread);
+}
+
 /* Returns the mean colour seen from sh (n and ns its facing normals, the
  * ray at depth `depth` with weight) along its gathering rays: at the
  * first bounce t's gi_samples rays, after it one (a path), cosine-weighted
@@ -178,7 +241,8 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
     Colour sum = colour(0, 0, 0);
 
     for (unsigned i = 0; i < rays; i++) {
-        TracePath next = {sampler_branch(path.key, TRACE_GATHERED + i), path.bounce + 1};
+        TracePath next = {sampler_branch(path.key, TRACE_GATHERED + i), path.bounce + 1, NULL};
+        RayDiff spread;
         double d[3];
         Ray r;
 
@@ -187,6 +251,10 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
         if (!(vec3_dot(r.dir, n) > 0))
             continue;
         r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+        if (path.diff && sh->footprint) {
+            trace_gather_diff(sh->footprint, r.dir, rays, &spread);
+            next.diff = &spread;
+        }
         t->counts->gather++;
         sum = colour_add(sum, t->scene->named_count > 0
                                   ? trace_named_path(t, &r, depth, weight, next)
@@ -247,14 +315,14 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
                                                      colour_scale(weight, 1 - f), path, pm->kd));
         c = colour_scale(local, 1 - f);
         if (deeper && f > 0)
-            c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
+            c = colour_add(c, trace_named_secondary(t, ray, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
                                               colour(f, f, f), depth + 1, weight, path));
         return c;
     case MODEL_METALLIC:
         /* A mirror tinted by its colour, and the highlights. */
         c = shade_phong(t, sh, pm, n, ns, view, weight);
         if (deeper)
-            c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
+            c = colour_add(c, trace_named_secondary(t, ray, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
                                               tint, depth + 1, weight, path));
         return c;
     case MODEL_DIELECTRIC:
@@ -266,10 +334,10 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
             return c;
         f = ray_refract(ray->dir, ns, eta, &bent) ? ray_fresnel(ray->dir, ns, eta) : 1;
         if (f < 1)
-            c = colour_add(c, trace_named_secondary(t, sh, n, bent, RAY_REFRACTION,
+            c = colour_add(c, trace_named_secondary(t, ray, sh, n, bent, RAY_REFRACTION,
                                               colour_scale(tint, 1 - f), depth + 1, weight, path));
         if (f > 0)
-            c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
+            c = colour_add(c, trace_named_secondary(t, ray, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
                                               colour(f, f, f), depth + 1, weight, path));
         return c;
     default: { /* Blinn-Phong: Whitted's sum, the weights already scaling
@@ -282,13 +350,13 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
             return c;
         if (tr > 0) {
             if (ray_refract(ray->dir, ns, eta, &bent))
-                c = colour_add(c, trace_named_secondary(t, sh, n, bent, RAY_REFRACTION,
+                c = colour_add(c, trace_named_secondary(t, ray, sh, n, bent, RAY_REFRACTION,
                                                   colour(tr, tr, tr), depth + 1, weight, path));
             else
                 r += tr; /* total internal reflection: the share T is mirrored */
         }
         if (r > 0)
-            c = colour_add(c, trace_named_secondary(t, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
+            c = colour_add(c, trace_named_secondary(t, ray, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
                                               colour(r, r, r), depth + 1, weight, path));
         return c;
     }
@@ -299,15 +367,14 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
                                TracePath path)
 {
     const Scene *scene = t->scene;
+    ShadeFootprint fp;
     Hit hit;
     Shade sh;
-    Vec3 n;
-
-    Vec3 ns;
+    Vec3 n, ns;
 
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
-    sh = shade_at(scene, ray, &hit);
+    sh = shade_at_footprint(scene, ray, &hit, path.diff, &fp);
     n = ray_facing_normal(sh.sp.normal, ray->dir);
     ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
     /* Ambient occlusion at the points the camera sees, where there is
@@ -323,6 +390,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
                          TracePath path)
 {
     const Scene *scene = t->scene;
+    ShadeFootprint fp;
     Hit hit;
     Shade sh;
     Vec3 n, ns;
@@ -331,7 +399,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
 
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
-    sh = shade_at(scene, ray, &hit);
+    sh = shade_at_footprint(scene, ray, &hit, path.diff, &fp);
     /* n, the surface's normal facing the ray, decides where secondary rays
      * start; ns, the shading normal on n's side, how light and mirrors
      * behave. They are the same but on smooth triangles. */
@@ -359,14 +427,14 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
         Vec3 bent;
 
         if (ray_refract(ray->dir, ns, eta, &bent)) {
-            c = colour_add(c, trace_secondary(t, &sh, n, bent, RAY_REFRACTION, tr, depth + 1,
+            c = colour_add(c, trace_secondary(t, ray, &sh, n, bent, RAY_REFRACTION, tr, depth + 1,
                                               weight, path));
         } else {
             r += tr; /* total internal reflection: the share T is mirrored */
         }
     }
     if (r > 0)
-        c = colour_add(c, trace_secondary(t, &sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION, r,
+        c = colour_add(c, trace_secondary(t, ray, &sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION, r,
                                           depth + 1, weight, path));
     return c;
 }

@@ -24,6 +24,7 @@ void scene_init(Scene *scene)
     scene->meshes = NULL;
     scene->accel = NULL;
     scene->ao_samples = scene->gi_samples = -1;
+    scene->filter_override = -1;
 }
 
 /* Releases the scene's light buffers. */

@@ -329,16 +329,14 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
                    spec->what, spec->syntax);
         return -1;
     }
-    if (rec->count > 2 && lex_token_is(&rec->tok[2], "nearest")) {
-        filter = TEXTURE_NEAREST;
-        first = 3;
-    } else if (rec->count > 2 && lex_token_is(&rec->tok[2], "bilinear")) {
+    if (rec->count > 2 && lex_filter_word(&rec->tok[2], &filter)) {
         first = 3;
     } else if (rec->count > 2 &&
                number_parse(rec->tok[2].text, rec->tok[2].len, &v[0]) == NUMBER_SYNTAX) {
         char q[64];
         course_fail(P, &rec->line, rec->tok[2].column,
-                   "unknown texture filter %s (expected 'nearest' or 'bilinear')",
+                   "unknown texture filter %s (expected 'nearest', 'bilinear', 'trilinear' or "
+                   "'ewa')",
                    lex_quote(q, sizeof q, &rec->tok[2]));
         return -1;
     }

@@ -391,3 +391,17 @@ void lex_fail_file(Lexer *L, const Record *rec, const Token *t, const char *what
         lex_fail(L, &rec->line, t->column, "cannot use the %s %s: %s", what, q,
                  inner->message);
 }
+
+int lex_filter_word(const Token *t, TextureFilter *filter)
+{
+    static const char *const words[] = {"nearest", "bilinear", "trilinear", "ewa"};
+    static const TextureFilter filters[] = {TEXTURE_NEAREST, TEXTURE_BILINEAR, TEXTURE_TRILINEAR,
+                                            TEXTURE_EWA};
+
+    for (int k = 0; k < 4; k++)
+        if (lex_token_is(t, words[k])) {
+            *filter = filters[k];
+            return 1;
+        }
+    return 0;
+}

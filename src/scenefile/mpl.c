@@ -239,16 +239,17 @@ static void mpl_model(NamedMaterial *pm, ShadingModel model, double index, doubl
 }
 
 /* Checks the fields of material record rec past its texture (seed 001's
- * layout ends there); returns 0, or -1 with the fault recorded: a number
+ * layout ends there, ours may add the filter its texture or stripes are
+ * read with, stored in *filter); returns 0, or -1 with the fault recorded: a number
  * there is the layout raytrace's --save wrote before it followed the
  * seed's reader (a highlight weight 7th, the index 11th), which would be
  * misread. */
-static int mpl_material_end(Mpl *M, const Record *rec)
+static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
 {
     double ignored;
     char q[64];
 
-    if (rec->count <= 10)
+    if (rec->count <= 10 || (rec->count == 11 && lex_filter_word(&rec->tok[10], filter)))
         return 0;
     if (rec->count == 11 &&
         number_parse(rec->tok[10].text, rec->tok[10].len, &ignored) == NUMBER_OK) {
@@ -260,10 +261,17 @@ static int mpl_material_end(Mpl *M, const Record *rec)
                  lex_quote(q, sizeof q, &rec->tok[10]));
         return -1;
     }
-    return lex_fail_extra(&M->lex, rec, 10, "the material's texture");
+    if (rec->count == 11) {
+        mpl_fail(M, &rec->line, rec->tok[10].column,
+                 "unknown texture filter %s after the material's texture (expected nearest, "
+                 "bilinear, trilinear or ewa)",
+                 lex_quote(q, sizeof q, &rec->tok[10]));
+        return -1;
+    }
+    return lex_fail_extra(&M->lex, rec, 11, "the material's filter");
 }
 
-/* material -> 'm' name kind r g b stripes index glossiness texture */
+/* material -> 'm' name kind r g b stripes index glossiness texture [filter] */
 static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
 {
     const char *syntax = mpl_material.syntax;
@@ -272,6 +280,9 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
     NamedMaterial pm;
     char q[64];
     int model = -1, index;
+    /* Ours: textures and stripes read over each pixel's footprint unless
+     * the line says otherwise. */
+    TextureFilter filter = TEXTURE_TRILINEAR;
 
     if (mpl_need(M, rec, 1, "the material's name", syntax) != 0)
         return -1;
@@ -310,12 +321,13 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
         return -1;
     }
     if (mpl_need(M, rec, 9, "the material's texture, a file or N for none", syntax) != 0 ||
-        mpl_material_end(M, rec) != 0)
+        mpl_material_end(M, rec, &filter) != 0)
         return -1;
     tex = &rec->tok[9];
     memset(&pm, 0, sizeof pm);
     pm.base = material_plain(colour(v[0] * 255, v[1] * 255, v[2] * 255), 0);
     pm.base.stripes = v[3] == 1;
+    pm.base.filter = filter;
     pm.line = rec->line.number;
     mpl_model(&pm, (ShadingModel)model, v[4], v[5]);
     if (!(tex->len == 1 && (tex->text[0] == 'N' || tex->text[0] == 'n'))) {
@@ -333,7 +345,6 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
         if (t < 0)
             return mpl_fail_memory(M, rec, scene, t);
         pm.base.texture = t;
-        pm.base.filter = TEXTURE_BILINEAR;
         pm.texture = malloc(tex->len + 1);
         if (!pm.texture)
             return mpl_fail_memory(M, rec, scene, -1);

@@ -12,6 +12,10 @@
 #include "scenefile/shapes.h"
 
 /* Writes the numbers of v (n of them), each after a space. */
+/* The words of the texture filters (material.h), as the formats read
+ * them. */
+static const char *const save_filters[] = {"nearest", "bilinear", "trilinear", "ewa"};
+
 static void save_numbers(FILE *fp, const double *v, int n)
 {
     char buf[NUMBER_FORMAT_MAX];
@@ -261,6 +265,9 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
         else if (save_path(fp, pm->texture, scene->textures[pm->base.texture].path, "texture",
                            scene_name, out_name, err) != 0)
             return -1;
+        /* The filter when it is not the format's default (trilinear). */
+        if ((pm->texture || pm->base.stripes) && pm->base.filter != TEXTURE_TRILINEAR)
+            fprintf(fp, " %s", save_filters[pm->base.filter]);
         fputc('\n', fp);
     }
     for (i = 0; i < scene->light_count; i++) {

@@ -4,7 +4,8 @@
 # For samples per pixel (1 to 256, against 1024), ambient occlusion and
 # global illumination rays (1 to 1024, against 4096), adaptive sampling
 # (--noise L against uniform N, four scenes, each against a converged
-# render), the maximum depth (0 to 20, against 50) and the cut-off
+# render), texture filtering (mip-maps and ray differentials against
+# unfiltered lookups, on the floor beyond ten units), the maximum depth (0 to 20, against 50) and the cut-off
 # (against no cut-off), it renders example
 # scenes, times them (median of TRADE_RUNS, default 3) and measures the
 # error: on the 8-bit output, the share of channels that differ and the
@@ -16,8 +17,8 @@
 #
 # Usage: sh tests/bench/trade.sh RAYTRACE RAYTRACE-DIFF RAYTRACE-FLOAT SCENEGEN [OUT.md]
 # Environment: TRADE_RUNS (runs per measure, default 3), TRADE_ONLY (a
-# subset of: spp indirect noise depth cut precision; the others keep their
-# last rows).
+# subset of: spp indirect noise texture depth cut precision; the others
+# keep their last rows).
 
 RT=$1
 DIFF=$2
@@ -25,7 +26,7 @@ RT_FLOAT=$3
 GEN=$4
 OUT=${5:-docs/trade.md}
 RUNS=${TRADE_RUNS:-3}
-ONLY=${TRADE_ONLY:-"spp indirect noise depth cut precision"}
+ONLY=${TRADE_ONLY:-"spp indirect noise texture depth cut precision"}
 DIR=build/trade
 PLOT=tests/bench/plot.awk
 DOCS=$(dirname "$OUT")
@@ -191,6 +192,94 @@ done
 cat "$DIR/speedup.rows.indirect" "$DIR/speedup.rows.focus" "$DIR/speedup.rows.materials" \
     "$DIR/speedup.rows.course" >"$DIR/speedup.rows"
 rm -f "$DIR"/speedup.rows.*
+pfm=1
+fi
+
+# --- texture filtering: materials.txt and horizon.txt, their floors far
+# and near, at 1 and 4 samples a pixel, against 1024 unfiltered ---
+# mask_scene SCENE FLOOR MODE [X Y Z R]: SCENE (MPL) with FLOOR white and
+# every other material black, no lights: lit by ambient light alone (MODE
+# floor: the floor's pixels white), or by a light at X Y Z reaching R
+# units (MODE near: the floor within R of it lit, beyond it black).
+mask_scene() {
+    awk -v floor="$2" -v mode="$3" -v x="$4" -v y="$5" -v z="$6" -v r="$7" '
+        /^[ \t]*#/ || !/[^ \t]/ { next }
+        $1 == "l" { next }
+        $1 == "c" && ($2 == "Ambient" || $2 == "Sky" || $2 == "Background" || $2 == "Samples" ||
+                      $2 == "Noise") { next }
+        $1 == "m" { print "m", $2, "MATTE", ($2 == floor ? "1 1 1" : "0 0 0"), "0 0 0 N"; next }
+        { print }
+        END {
+            print "c Background 0 0 0"
+            print "c Samples 1"
+            if (mode == "floor") print "c Ambient 1 1 1"
+            else print "l PointLight", x, y, z, "1 1 1 1000000", r
+        }' "$1"
+}
+# floor_mask SCENE FLOOR X Y Z R OUT SIZE: OUT, a P3 image white where
+# SCENE's FLOOR is seen farther than R from the camera at X Y Z (R
+# negative: nearer than -R), black elsewhere.
+floor_mask() {
+    mask_scene "$1" "$2" floor >"$DIR/mask-floor.txt"
+    mask_scene "$1" "$2" near "$3" "$4" "$5" "${6#-}" >"$DIR/mask-near.txt"
+    "$RT" -q --ascii --size "$8" "$DIR/mask-floor.txt" "$DIR/mask-floor.ppm" || exit 1
+    "$RT" -q --ascii --size "$8" "$DIR/mask-near.txt" "$DIR/mask-near.ppm" || exit 1
+    awk -v far="$([ "${6#-}" = "$6" ] && echo 1 || echo 0)" '
+        FNR == 1 { file++ }
+        { for (i = 1; i <= NF; i++) { if ($i ~ /^#/) break; n[file]++; v[file, n[file]] = $i } }
+        END {
+            w = v[1, 2]; h = v[1, 3]
+            print "P3"; print w, h; print 255
+            for (p = 0; p < w * h; p++) {
+                f = v[1, 5 + 3 * p]; l = v[2, 5 + 3 * p]
+                on = f > 128 && (far ? l == 0 : l > 0)
+                print on ? "255 255 255" : "0 0 0"
+            }
+        }' "$DIR/mask-floor.ppm" "$DIR/mask-near.ppm" >"$7"
+}
+# only REF IMAGE MASK: "RMSE max" of IMAGE against REF over MASK's pixels.
+only() {
+    "$DIFF" --only "$DIR/$3" "$DIR/$1" "$DIR/$2" >"$DIR/do" 2>&1
+    echo "$(sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p' "$DIR/do")" \
+        "$(sed -n 's/^max error: \([0-9.e+-]*\).*/\1/p' "$DIR/do")"
+}
+if wanted texture; then
+echo "trade: texture filtering" >&2
+pfm=0
+: >"$DIR/texture.rows"
+: >"$DIR/texture-time.rows"
+for s in materials horizon; do
+    case $s in
+    materials) size=320x200 floor=floor cam="0 2.2 -6.5" near=5 ;;
+    horizon) size=320x180 floor=tiles cam="0 1.1 -6" near=3 ;;
+    esac
+    # shellcheck disable=SC2086
+    floor_mask "scenes/$s.txt" $floor $cam 10 "$DIR/tx-$s-far.ppm" "$size"
+    # shellcheck disable=SC2086
+    floor_mask "scenes/$s.txt" $floor $cam "-$near" "$DIR/tx-$s-near.ppm" "$size"
+    "$RT" -q --size "$size" -s 1024 --texture-filter bilinear "scenes/$s.txt" "$DIR/tx-$s-ref.ppm" ||
+        exit 1
+    for n in 1 4; do
+        tb=$(timed "tx-$s-b$n" --size "$size" -s "$n" --texture-filter bilinear "scenes/$s.txt") || exit 1
+        tt=$(timed "tx-$s-t$n" --size "$size" -s "$n" --texture-filter trilinear "scenes/$s.txt") || exit 1
+        te=$(timed "tx-$s-e$n" --size "$size" -s "$n" --texture-filter ewa "scenes/$s.txt") || exit 1
+        set -- $(only "tx-$s-ref.ppm" "tx-$s-b$n.ppm" "tx-$s-far.ppm")
+        fb=$1
+        set -- $(only "tx-$s-ref.ppm" "tx-$s-t$n.ppm" "tx-$s-far.ppm")
+        ft=$1
+        set -- $(only "tx-$s-ref.ppm" "tx-$s-e$n.ppm" "tx-$s-far.ppm")
+        fe=$1
+        set -- $(only "tx-$s-b$n.ppm" "tx-$s-t$n.ppm" "tx-$s-near.ppm")
+        nt=$2
+        set -- $(only "tx-$s-b$n.ppm" "tx-$s-e$n.ppm" "tx-$s-near.ppm")
+        ne=$2
+        printf '| %s | %d | %s | %s (%.2f) | %s (%.2f) | %s | %s |\n' "$s" "$n" "$fb" "$ft" \
+            "$(echo "$ft / $fb" | bc -l)" "$fe" "$(echo "$fe / $fb" | bc -l)" "$nt" "$ne" \
+            >>"$DIR/texture.rows"
+        printf '| %s | %d | %.3f s | %.3f s (%.2f) | %.3f s (%.2f) |\n' "$s" "$n" "$tb" "$tt" \
+            "$(echo "$tt / $tb" | bc -l)" "$te" "$(echo "$te / $tb" | bc -l)" >>"$DIR/texture-time.rows"
+    done
+done
 pfm=1
 fi
 
@@ -415,6 +504,31 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "| scene | L | pixels past the first round | RMSE, whole picture | RMSE, those pixels | that / L |"
     echo "|-------|---|-----------------------------|---------------------|--------------------|----------|"
     cat "$DIR/honest.rows"
+    echo
+    echo "## Texture filtering: mip-maps and ray differentials"
+    echo
+    echo "scenes/materials.txt at 320 × 200 and scenes/horizon.txt at 320 × 180,"
+    echo "at 1 and 4 samples a pixel, against 1024 samples a pixel read without"
+    echo "a filter over the footprint (bilinear, the texel's neighbours only)."
+    echo "The error is the RMSE over the floor farther than ten units from the"
+    echo "camera (its pixels found by rendering the scene with the floor white,"
+    echo "everything else black, and a light at the camera reaching ten units),"
+    echo "for bilinear lookups, trilinear mip-maps (the MPL format's default) and"
+    echo "EWA, with their ratio to bilinear's; then the largest difference from"
+    echo "bilinear on the near floor (within five units of materials.txt's camera,"
+    echo "3.2 above it; three of horizon.txt's), where the texture is magnified"
+    echo "and filtering should change nothing."
+    echo
+    echo "| scene | samples | far floor, bilinear | trilinear (ratio) | EWA (ratio) | near floor: trilinear's largest difference | EWA's |"
+    echo "|-------|---------|---------------------|-------------------|-------------|--------------------------------------------|-------|"
+    cat "$DIR/texture.rows"
+    echo
+    echo "Render times (whole command, medians of $RUNS runs), and their ratio to"
+    echo "bilinear's:"
+    echo
+    echo "| scene | samples | bilinear | trilinear | EWA |"
+    echo "|-------|---------|----------|-----------|-----|"
+    cat "$DIR/texture-time.rows"
     echo
     echo "## Maximum depth"
     echo
