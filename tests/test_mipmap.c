@@ -95,7 +95,9 @@ static void footprint_of_a_texel_reads_as_bilinear(void)
         double d[4] = {0.8 / 32, 0.1 / 16, -0.2 / 32, 0.9 / 16};
         Colour a = texture_lookup(&t, u, v, TEXTURE_BILINEAR, 0);
         Colour b = texture_lookup_footprint(&t, u, v, d, TEXTURE_TRILINEAR, 0);
+        Colour e = texture_lookup_footprint(&t, u, v, d, TEXTURE_EWA, 0);
         CHECK(memcmp(&a, &b, sizeof a) == 0);
+        CHECK(memcmp(&a, &e, sizeof a) == 0);
     }
     texture_free(&t);
 }

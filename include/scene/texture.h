@@ -68,8 +68,8 @@ Colour texture_lookup(const Texture *tex, double u, double v, TextureFilter filt
  * vectors in texels (OpenGL's rho), picks levels k and k + 1 with 2^k <= w
  * < 2^(k+1), blended by w / 2^k - 1; EWA: a Gaussian over the ellipse the derivatives span,
  * its eccentricity at most 8, on the levels around its minor axis); a
- * footprint within one texel, or a texture without a mip-map, reads as
- * bilinear. The others read the point. */
+ * footprint within one texel (both derivative vectors at most a texel
+ * long), or a texture without a mip-map, reads as bilinear. The others read the point. */
 Colour texture_lookup_footprint(const Texture *tex, double u, double v, const double d[4],
                                 TextureFilter filter, int clamp_v);
 

@@ -366,7 +366,8 @@ static Colour texture_ewa(const Texture *tex, double u, double v, const double d
      * stretched, so that the level it picks is not too fine. */
     major = minor_first ? l1 : l0;
     minor = minor_first ? l0 : l1;
-    if (!(minor > 0))
+    /* Within a texel (a magnified texture), bilinear's, as trilinear's. */
+    if (!(minor > 0) || !(major > 1))
         return texture_bilinear(tex, 0, u, v, clamp_v);
     if (minor * 8 < major) {
         double g = major / (minor * 8);
