@@ -278,21 +278,24 @@ bench: raytrace raytrace-diff $(BUILD)/scenegen
 race: raytrace raytrace-diff $(BUILD)/scenegen
 	sh tests/bench/anchor.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
 
-# The course report: its class diagram drawn again from the code
-# (report/classes.sh), both diagrams by Graphviz, the PDF by pandoc and
-# XeLaTeX (SVG figures through rsvg-convert). Without those tools it says
-# which are missing and fails.
+# The course report: its class diagram checked against the code
+# (report/classes.sh), the module graph of docs/design.md written again
+# from the code (docs/modules.sh), the diagrams drawn by Graphviz, the PDF
+# (A4, at most 6 pages) by pandoc and XeLaTeX (SVG figures through
+# rsvg-convert). Without those tools it says which are missing and fails.
 REPORT_TOOLS := pandoc:pandoc xelatex:texlive-xetex rsvg-convert:librsvg2-bin dot:graphviz
 report:
 	@missing=; for t in $(REPORT_TOOLS); do command -v $${t%%:*} >/dev/null 2>&1 || \
 		missing="$$missing $${t%%:*} (Debian: $${t#*:})"; done; \
 	if [ -n "$$missing" ]; then echo "make report: missing:$$missing" >&2; exit 1; fi
-	sh report/classes.sh >report/classes.dot
+	sh report/classes.sh
+	sh docs/modules.sh >docs/modules.dot
+	dot -Tsvg docs/modules.dot -o docs/modules.svg
 	dot -Tsvg report/classes.dot -o report/classes.svg
 	dot -Tsvg report/activity.dot -o report/activity.svg
-	cd report && pandoc report.md --pdf-engine=xelatex -V geometry:margin=2cm \
-		-V fontsize=10pt -V mainfont="DejaVu Serif" -V sansfont="DejaVu Sans" \
-		-V monofont="DejaVu Sans Mono" -o report.pdf
+	cd report && pandoc report.md --pdf-engine=xelatex -V papersize=a4 \
+		-V geometry:margin=1.8cm -V fontsize=10pt -V mainfont="DejaVu Serif" \
+		-V sansfont="DejaVu Sans" -V monofont="DejaVu Sans Mono" -o report.pdf
 	@echo "make report: wrote report/report.pdf"
 
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.

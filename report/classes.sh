@@ -1,69 +1,89 @@
 #!/bin/sh
-# classes.sh: writes the report's class diagram (Graphviz DOT) from the code
-# itself, on standard output: one box per module (a .c file and its header,
-# src/LAYER/NAME.c and include/LAYER/NAME.h or src/LAYER/NAME.h), grouped by
-# layer, listing the structures its header declares (its main types), and
-# an arrow from each module to each module it uses (includes), with the
-# arrows another path of arrows already implies left out (the transitive
-# reduction), so that the picture shows the direct dependencies only.
+# classes.sh: checks the report's class diagram (report/classes.dot, drawn
+# by hand) against the code, so that it cannot drift: each class (a node)
+# must be a structure its header (the node's comment) declares with
+# "typedef struct ... } NAME;", each field listed in its second box a
+# member of that structure (a field "a, b, ..." names a and b), each
+# function of its third box ("name()") declared in include/, and each
+# solid arrow A -> B a member of A whose type is B. Prints what does not
+# hold, one line each, and exits 1 if anything does not.
 #
-# Usage: sh report/classes.sh >report/classes.dot   (from the repository root)
-# tests/report.sh fails when report/classes.dot is not what this writes.
+# Usage: sh report/classes.sh [DOT]   (from the repository root; DOT
+# defaults to report/classes.dot)
 
-# LAYERS and module_edges.
-. "$(dirname "$0")/../tests/lib.sh"
-# One order on every machine, whatever its locale.
+dot=${1:-report/classes.dot}
 LC_ALL=C
 export LC_ALL
-
-# Every module "LAYER/NAME", once.
-modules() {
-    find src include -name '*.[ch]' | sed 's|^[a-z]*/\([a-z]*\)/\([A-Za-z0-9_]*\)\.[ch]$|\1/\2|' | sort -u
-}
-
-# The structures a module's headers declare: "MODULE TYPE" lines, in the
-# order of the header.
-types() {
-    for h in include/*/*.h src/*/*.h; do
-        m=$(printf '%s\n' "$h" | awk -F/ '{ n = $3; sub(/\.h$/, "", n); print $2 "/" n }')
-        awk -v m="$m" '/^typedef struct[^;]*$/ { s = 1; next }
-            s && /^} *[A-Za-z_][A-Za-z0-9_]* *;/ { t = $2; sub(/;.*/, "", t); print m, t; s = 0 }' "$h"
-    done
-}
-
-T=${TMPDIR:-/tmp}/classes.$$
+T=${TMPDIR:-/tmp}/classes-check.$$
 mkdir -p "$T" || exit 2
 trap 'rm -rf "$T"' EXIT
-modules >"$T/modules"
-module_edges . >"$T/edges"
-types >"$T/types"
 
-echo "// The modules of raytrace, their structures and who uses whom: written by"
-echo "// report/classes.sh from the code's includes (do not edit; rerun it)."
-echo "digraph classes {"
-echo "    rankdir=RL; nodesep=0.12; ranksep=0.3;"
-echo "    node [shape=plaintext, fontname=\"Helvetica\", fontsize=9];"
-echo "    edge [color=\"#555555\", arrowsize=0.5];"
-for layer in $LAYERS; do
-    echo "    subgraph cluster_$layer {"
-    echo "        label=\"$layer\"; fontname=\"Helvetica-Bold\"; fontsize=11; style=rounded; color=\"#888888\";"
-    grep "^$layer/" "$T/modules" | while read -r m; do
-        rows=$(awk -v m="$m" '$1 == m { printf "<TR><TD ALIGN=\"LEFT\">%s</TD></TR>", $2 }' "$T/types")
-        echo "        \"$m\" [label=<<TABLE BORDER=\"1\" CELLBORDER=\"0\" CELLSPACING=\"0\" BGCOLOR=\"#f4f4f4\"><TR><TD><B>${m#*/}</B></TD></TR>$rows</TABLE>>];"
-    done
-    echo "    }"
-done
-# The transitive reduction: an arrow A -> B stays unless some other arrow
-# A -> C leads on to B.
-awk 'NR == FNR { id[$1] = ++n; name[n] = $1; next }
-    { a = id[$1]; b = id[$2]; if (a && b) { e[a, b] = 1; r[a, b] = 1 } }
-    END {
-        for (k = 1; k <= n; k++) for (i = 1; i <= n; i++) if (r[i, k])
-            for (j = 1; j <= n; j++) if (r[k, j]) r[i, j] = 1
-        for (i = 1; i <= n; i++) for (j = 1; j <= n; j++) if (e[i, j]) {
-            keep = 1
-            for (k = 1; k <= n && keep; k++) if (k != i && k != j && e[i, k] && r[k, j]) keep = 0
-            if (keep) printf "    \"%s\" -> \"%s\";\n", name[i], name[j]
+# The classes: "NAME HEADER" lines, then "NAME field F" and "NAME func F".
+awk '
+    /^ *[A-Za-z_][A-Za-z0-9_]* \[comment="/ {
+        name = $1
+        header = $0; sub(/.*comment="/, "", header); sub(/".*/, "", header)
+        print name, "header", header
+        n = split($0, cells, /<td[^>]*>/)
+        for (i = 3; i <= n; i++) {
+            cell = cells[i]; sub(/<\/td>.*/, "", cell)
+            m = split(cell, items, /<br\/>/)
+            for (j = 1; j <= m; j++) {
+                item = items[j]
+                gsub(/<[^>]*>/, "", item)
+                if (item ~ /\(\)$/) { sub(/\(\)$/, "", item); print name, "func", item; continue }
+                k = split(item, parts, /, */)
+                for (q = 1; q <= k; q++)
+                    if (parts[q] != "..." && parts[q] != "") print name, "field", parts[q]
+            }
         }
-    }' "$T/modules" "$T/edges"
-echo "}"
+    }' "$dot" >"$T/items"
+# The solid arrows: "A B".
+awk '/^ *[A-Za-z_][A-Za-z0-9_]* -> [A-Za-z_][A-Za-z0-9_]*/ && !/style=dashed/ {
+        print $1, $3 }' "$dot" >"$T/edges"
+
+faults=0
+fault() {
+    echo "$dot: $*"
+    faults=$((faults + 1))
+}
+
+# body NAME HEADER: the lines of the structure NAME in HEADER, from its
+# "typedef struct" to its "} NAME;".
+body() {
+    awk -v name="$1" '/^typedef struct/ { n = 0; inside = 1 }
+        inside { line[++n] = $0 }
+        inside && $0 ~ "^} *" name " *;" { for (i = 1; i <= n; i++) print line[i]; exit }
+        inside && /^} *[A-Za-z_]/ { inside = 0 }' "$2"
+}
+
+[ -s "$T/items" ] || fault "no class found"
+while read -r name kind value; do
+    case $kind in
+    header)
+        header=$value
+        if [ ! -f "$header" ]; then
+            fault "$name: its header $header does not exist"
+            : >"$T/body.$name"
+            continue
+        fi
+        body "$name" "$header" >"$T/body.$name"
+        [ -s "$T/body.$name" ] || fault "$name: $header declares no structure $name"
+        ;;
+    field)
+        # A member: the name, then an array bound, a comma or a semicolon.
+        grep -v '^ */\?\*' "$T/body.$name" | sed 's|/\*.*||' |
+            grep -Eq "[ *]$value(\[[^]]*\])*[;,]" ||
+            fault "$name has no member $value"
+        ;;
+    func)
+        grep -rEq "(^|[ *])$value\(" include/ || fault "no function $value() is declared in include/"
+        ;;
+    esac
+done <"$T/items"
+while read -r from to; do
+    [ -f "$T/body.$from" ] || { fault "$from -> $to: $from is not a class"; continue; }
+    sed 's|/\*.*||' "$T/body.$from" | grep -Eq "(^|[^A-Za-z0-9_])$to([^A-Za-z0-9_]|$)" ||
+        fault "$from -> $to: $from has no member of type $to"
+done <"$T/edges"
+[ "$faults" -eq 0 ]

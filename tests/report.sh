@@ -1,38 +1,54 @@
 #!/bin/sh
 # report.sh: the course report (report/) still matches the code.
 #
-#  1. report/classes.dot is what report/classes.sh writes from the code's
-#     modules and includes today, and the check sees a planted include (a
-#     copy of the tree with one more arrow gives another diagram);
+#  1. report/classes.dot, the class diagram drawn by hand, names only
+#     classes, fields, functions and arrows the code has (report/classes.sh),
+#     and the check sees one that is not there; docs/modules.dot, the module
+#     graph, is what docs/modules.sh writes from the code's includes today,
+#     and that check sees a planted include;
 #  2. each drawing (classes.svg, activity.svg) has exactly the nodes of its
 #     DOT source, and every module activity.dot names in brackets exists;
-#  3. report.md holds 2,500 to 5,000 words of prose (tables and code
-#     aside), and every picture it shows is under report/;
+#  3. report.md holds 1,200 to 3,200 words of prose (tables and code aside:
+#     about five pages with its figures, as the brief asks), every picture
+#     it shows is under report/, and it names no file outside the
+#     repository;
 #  4. every picture of report/figures is the renderer's own: the same bytes
 #     as docs/gallery/ (which tests/cli.sh renders again) or docs/trade-*.svg
-#     (which make trade draws) or docs/bench-*.svg (make bench, make race).
+#     (which make trade draws) or docs/bench-*.svg (make bench, make race);
+#  5. report/report.pdf, once make report has built it, is at most 6 pages
+#     of A4 (pdfinfo, from poppler-utils, when installed;
+#     RAYTRACE_REPORT_PDF=required makes both the PDF and pdfinfo a must).
 #
 # Usage: sh tests/report.sh   (from the repository root)
 
 SUITE=report
 . "$(dirname "$0")/check.sh"
 
-# 1. The class diagram is the code's.
-sh report/classes.sh >"$T/classes.dot" 2>"$T/err"
-if cmp -s "$T/classes.dot" report/classes.dot; then
+# 1. The class diagram names what the code has; the module graph is the code's.
+sh report/classes.sh >"$T/out" 2>&1 && pass ||
+    fail "report/classes.dot names what the code does not have" "$(cat "$T/out")"
+sed 's/<br\/>depth</<br\/>height_of_tree</' report/classes.dot >"$T/planted-class.dot"
+if sh report/classes.sh "$T/planted-class.dot" >"$T/out" 2>&1; then
+    fail "report/classes.sh does not see a field the code lacks"
+else
+    grep -q "Bvh has no member height_of_tree" "$T/out" && pass ||
+        fail "report/classes.sh misnames a field the code lacks" "$(cat "$T/out")"
+fi
+sh docs/modules.sh >"$T/modules.dot" 2>"$T/err"
+if cmp -s "$T/modules.dot" docs/modules.dot; then
     pass
 else
-    fail "report/classes.dot does not match the code: run sh report/classes.sh >report/classes.dot and make report" \
-        "$(diff report/classes.dot "$T/classes.dot" | head -20)"
+    fail "docs/modules.dot does not match the code: run make report (or sh docs/modules.sh >docs/modules.dot)" \
+        "$(diff docs/modules.dot "$T/modules.dot" | head -20)"
 fi
 mkdir -p "$T/tree/tests"
-cp -R src include report "$T/tree/"
+cp -R src include docs "$T/tree/"
 cp tests/lib.sh "$T/tree/tests/"
 echo '#include "render/trace.h"' >>"$T/tree/src/base/grow.c" 2>/dev/null ||
     echo '#include "render/trace.h"' >"$T/tree/src/base/grow.c"
-(cd "$T/tree" && sh report/classes.sh >"$T/planted.dot" 2>/dev/null)
+(cd "$T/tree" && sh docs/modules.sh >"$T/planted.dot" 2>/dev/null)
 grep -q '"base/grow" -> "render/trace"' "$T/planted.dot" && pass ||
-    fail "report/classes.sh does not see an include planted in a copy of the tree"
+    fail "docs/modules.sh does not see an include planted in a copy of the tree"
 
 # 2. The drawings have their sources' nodes.
 # nodes DOT: the node names a DOT file declares (lines "NAME [...]" or
@@ -66,8 +82,10 @@ done
 
 # 3. The text: its length and its pictures.
 words=$(awk '/^```/ { code = !code; next } !code && !/^\|/ && !/^!\[/' report/report.md | wc -w)
-[ "$words" -ge 2500 ] && [ "$words" -le 5000 ] && pass ||
-    fail "report/report.md has $words words of prose, not 2,500 to 5,000"
+[ "$words" -ge 1200 ] && [ "$words" -le 3200 ] && pass ||
+    fail "report/report.md has $words words of prose, not 1,200 to 3,200"
+grep -n '\.\./\|/work/\|/home/\|/tmp/' report/report.md >"$T/outside" && \
+    fail "report/report.md names files outside the repository" "$(cat "$T/outside")" || pass
 bad=""
 for f in $(sed -n 's/.*!\[[^]]*\](\([^) ]*\).*/\1/p' report/report.md); do
     case $f in
@@ -89,5 +107,18 @@ for f in report/figures/*; do
     cmp -s "$f" "$ref" || bad="$bad $name (not $ref)"
 done
 [ -z "$bad" ] && pass || fail "report/figures holds pictures that are not the renderer's:$bad"
+
+# 5. The PDF: at most 6 pages of A4.
+need=${RAYTRACE_REPORT_PDF:-}
+if [ -f report/report.pdf ] && command -v pdfinfo >/dev/null 2>&1; then
+    pdfinfo report/report.pdf >"$T/info" 2>&1
+    pages=$(sed -n 's/^Pages: *//p' "$T/info")
+    [ -n "$pages" ] && [ "$pages" -le 6 ] && pass ||
+        fail "report/report.pdf has ${pages:-no} pages, more than 6" "$(cat "$T/info")"
+    grep -q '^Page size:.*(A4)' "$T/info" && pass ||
+        fail "report/report.pdf is not on A4 paper" "$(grep '^Page size' "$T/info")"
+elif [ "$need" = required ]; then
+    fail "report/report.pdf or pdfinfo (poppler-utils) is missing: run make report, install poppler-utils"
+fi
 
 finish
