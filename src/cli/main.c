@@ -48,7 +48,7 @@ static void main_on_signal(int sig)
     static const char msg[] = "raytrace: interrupted\n", erase[] = "\r\033[K";
     const char *temp = main_temp_path;
 
-    if (temp)
+    if (temp && *temp)
         unlink(temp);
     if ((main_bar_shown && write(STDERR_FILENO, erase, sizeof erase - 1) < 0) ||
         write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
@@ -63,7 +63,7 @@ static void main_at_exit(void)
 {
     const char *temp = main_temp_path;
 
-    if (temp)
+    if (temp && *temp)
         unlink(temp);
 }
 
@@ -101,9 +101,15 @@ static int main_open_output(OutFile *out, const char *path, Error *err)
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
     sigprocmask(SIG_BLOCK, &set, &old);
+    /* Named from the start: an exit from within outfile_open() (a failed
+     * allocation in the C library's stream, after the named temporary is
+     * made) still finds it; until it is made, the name is a template that
+     * names no file. */
+    out->temp[0] = '\0';
+    main_temp_path = out->temp;
     rc = outfile_open(out, path, err);
-    if (rc == 0 && out->temp[0])
-        main_temp_path = out->temp;
+    if (rc != 0 || !out->temp[0])
+        main_temp_path = NULL;
     sigprocmask(SIG_SETMASK, &old, NULL);
     return rc;
 }

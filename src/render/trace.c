@@ -92,6 +92,24 @@ static void trace_child_diff(const Ray *ray, const Shade *sh, Vec3 n, RayKind ki
     }
 }
 
+/* Stores in d the ray of kind `kind` leaving sh (facing normal n; ray the
+ * ray that met it, on path) in direction dir, with its differentials when
+ * path carries some, and returns the new ray's path (its differentials
+ * d's). */
+static inline TracePath trace_child(const Tracer *t, const Ray *ray, const Shade *sh, Vec3 n,
+                                    Vec3 dir, RayKind kind, TracePath path, CutRay *d)
+{
+    TracePath next = trace_branch(t, path, kind);
+
+    d->ray.dir = dir;
+    d->ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    d->has_diff = path.diff && sh->footprint;
+    if (d->has_diff)
+        trace_child_diff(ray, sh, n, kind, dir, path.diff, &d->diff);
+    next.diff = d->has_diff ? &d->diff : NULL;
+    return next;
+}
+
 /* Returns share times the colour seen along the ray of kind `kind` leaving
  * sh (facing normal n; ray the ray that met it) in direction dir at depth
  * `depth`, reached with weight times share, or 0 when the cut-off allows
@@ -101,18 +119,9 @@ static inline Colour trace_secondary(const Tracer *t, const Ray *ray, const Shad
                                      double weight, TracePath path)
 {
     CutRay d;
-    TracePath next = trace_branch(t, path, kind);
+    TracePath next = trace_child(t, ray, sh, n, dir, kind, path, &d);
 
     weight *= share;
-    d.ray.dir = dir;
-    d.ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
-    if (path.diff && sh->footprint) {
-        trace_child_diff(ray, sh, n, kind, dir, path.diff, &d.diff);
-        next.diff = &d.diff;
-    } else {
-        next.diff = NULL;
-    }
-    d.has_diff = next.diff != NULL;
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, colour(weight, weight, weight), weight))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);
@@ -126,18 +135,9 @@ static inline Colour trace_named_secondary(const Tracer *t, const Ray *ray, cons
                                            int depth, Colour weight, TracePath path)
 {
     CutRay d;
-    TracePath next = trace_branch(t, path, kind);
+    TracePath next = trace_child(t, ray, sh, n, dir, kind, path, &d);
 
     weight = colour_mul(weight, share);
-    d.ray.dir = dir;
-    d.ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
-    if (path.diff && sh->footprint) {
-        trace_child_diff(ray, sh, n, kind, dir, path.diff, &d.diff);
-        next.diff = &d.diff;
-    } else {
-        next.diff = NULL;
-    }
-    d.has_diff = next.diff != NULL;
     if (t->cut && trace_cut_secondary(t, &d, kind, depth, weight, colour_max(weight)))
         return colour(0, 0, 0);
     trace_count_secondary(kind, t->counts);

@@ -91,29 +91,22 @@ static double texture_at(const Texture *tex, int k, int i, int j, int c)
                                           (size_t)i) + (size_t)c];
 }
 
-/* Stores in out (w' x h x 3, w' = texture_half(w)) the rows of the w x h
- * image `get` reads (channel c of texel (i, j)) halved across: texel i of a
- * row is the mean of the source texels over [i w / w', (i + 1) w / w'),
- * those partly inside weighted by their share. Done in exact arithmetic
- * on the ends: the ends are multiples of 1 / w'. */
-static void texture_halve_rows(const Texture *tex, int k, int w, int h, double *out)
+/* Returns the mean of the n values line[0], line[stride], ... over box i
+ * of texture_half(n) boxes: [i n / half, (i + 1) n / half), the values
+ * partly inside weighted by their share. Exact on the ends: in units of
+ * 1 / half they are the whole numbers i n and (i + 1) n. */
+static double texture_box_mean(const double *line, size_t stride, int n, int i)
 {
-    int half = texture_half(w);
+    long half = texture_half(n), lo = (long)i * n, hi = (long)(i + 1) * n;
+    double sum = 0;
 
-    for (int j = 0; j < h; j++)
-        for (int i = 0; i < half; i++)
-            for (int c = 0; c < 3; c++) {
-                /* Source texel x spans [x, x + 1); the box, in units of
-                 * 1 / half, spans [i w, (i + 1) w). */
-                long lo = (long)i * w, hi = (long)(i + 1) * w;
-                double sum = 0;
-                for (long x = lo / half; x * half < hi; x++) {
-                    long a = x * half > lo ? x * half : lo;
-                    long b = (x + 1) * half < hi ? (x + 1) * half : hi;
-                    sum += (double)(b - a) * texture_at(tex, k, (int)x, j, c);
-                }
-                out[3 * ((size_t)j * (size_t)half + (size_t)i) + (size_t)c] = sum / w;
-            }
+    /* Value x spans [x half, (x + 1) half) in those units. */
+    for (long x = lo / half; x * half < hi; x++) {
+        long a = x * half > lo ? x * half : lo;
+        long b = (x + 1) * half < hi ? (x + 1) * half : hi;
+        sum += (double)(b - a) * line[(size_t)x * stride];
+    }
+    return sum / n;
 }
 
 int texture_build_mipmap(Texture *t)
@@ -137,30 +130,33 @@ int texture_build_mipmap(Texture *t)
     for (int k = 0; k < count; k++) {
         int hw = texture_half(w), hh = texture_half(h);
         double *rows = malloc(3 * (size_t)hw * (size_t)h * sizeof *rows);
+        double *line = malloc(3 * (size_t)w * sizeof *line);
         float *next = malloc(3 * (size_t)hw * (size_t)hh * sizeof *next);
-        if (!rows || !next) {
+        if (!rows || !line || !next) {
             free(rows);
+            free(line);
             free(next);
             t->level_count = k;
             texture_drop_mipmap(t);
             return -1;
         }
         t->level_count = k; /* the levels below are readable */
-        texture_halve_rows(t, k, w, h, rows);
-        /* Then the columns, the same way. */
+        /* Each row halved across, then each column down. */
+        for (int j = 0; j < h; j++) {
+            for (int x = 0; x < w; x++)
+                for (int c = 0; c < 3; c++)
+                    line[3 * (size_t)x + (size_t)c] = texture_at(t, k, x, j, c);
+            for (int i = 0; i < hw; i++)
+                for (int c = 0; c < 3; c++)
+                    rows[3 * ((size_t)j * (size_t)hw + (size_t)i) + (size_t)c] =
+                        texture_box_mean(line + c, 3, w, i);
+        }
         for (int i = 0; i < hw; i++)
             for (int j = 0; j < hh; j++)
-                for (int c = 0; c < 3; c++) {
-                    long lo = (long)j * h, hi = (long)(j + 1) * h;
-                    double sum = 0;
-                    for (long y = lo / hh; y * hh < hi; y++) {
-                        long a = y * hh > lo ? y * hh : lo;
-                        long b = (y + 1) * hh < hi ? (y + 1) * hh : hi;
-                        sum += (double)(b - a) * rows[3 * ((size_t)y * (size_t)hw + (size_t)i) +
-                                                      (size_t)c];
-                    }
-                    next[3 * ((size_t)j * (size_t)hw + (size_t)i) + (size_t)c] = (float)(sum / h);
-                }
+                for (int c = 0; c < 3; c++)
+                    next[3 * ((size_t)j * (size_t)hw + (size_t)i) + (size_t)c] =
+                        (float)texture_box_mean(rows + 3 * (size_t)i + (size_t)c, 3 * (size_t)hw, h, j);
+        free(line);
         free(rows);
         levels[k].width = hw;
         levels[k].height = hh;
