@@ -57,6 +57,10 @@ run "a fault in a large field" 1 "$RT" -q -j 2 "$T/field-bad.txt" "$T/field.ppm"
 run "save a keyword scene" 0 "$RT" --save "$T/saved.txt" scenes/keyword.txt
 run "MPL scene, JPEG textures, every material, JPEG out" 0 "$RT" -q -j 2 \
     scenes/.memcheck-materials.txt "$T/materials.jpg"
+run "mip-maps and ray differentials, EWA, through glass and mirrors" 0 "$RT" -q -j 2 \
+    --texture-filter ewa -s 2 scenes/.memcheck-materials.txt "$T/materials-ewa.ppm"
+run "--noise, -v and the map of samples" 0 "$RT" -q -j 2 -v --noise 4 --max-spp 64 \
+    --spp-map "$T/map.png" scenes/.memcheck-materials.txt "$T/materials-noise.png"
 run "ambient occlusion and global illumination" 0 "$RT" -q -j 2 --ao 4 --gi 3 --gi-bounces 2 \
     scenes/.memcheck-indirect.txt "$T/indirect.ppm"
 run "seed 001's model: its example, textures, occlusion, gathering" 0 "$RT" -q -j 2 \
