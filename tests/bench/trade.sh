@@ -527,6 +527,13 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "|-------|---------|---------------------|-------------------|-------------|"
     cat "$DIR/texture.rows"
     echo
+    echo "Part of what remains is the reference's own moiré: 1024 samples a pixel"
+    echo "average the checkered floor over each pixel's square, and a box filter"
+    echo "lets a checker's fine frequencies through as beats, so the reference"
+    echo "shows moiré toward the horizon that a mip-map's mean (grey) does not"
+    echo "reproduce; the rest is the isotropic filter's blur at grazing angles,"
+    echo "which EWA halves."
+    echo
     echo "Both scenes' floors (256 texels a unit) are minified even near the"
     echo "camera at these sizes, so filtering rightly changes them there too."
     echo "Where a texture is magnified (a texel wider than the pixel) a filtered"
