@@ -85,6 +85,10 @@ typedef struct {
  * point on the plane. Zero when the ray runs along the plane. */
 void ray_diff_transfer(const Ray *ray, const RayDiff *diff, real t, Vec3 n, Vec3 dp[2]);
 
+/* Stores in *out diff with its direction's derivatives made those of the
+ * unit direction d / |d|: (dD - (u . dD) u) / |d|, u = d / |d|. */
+void ray_diff_unit(Vec3 d, const RayDiff *diff, RayDiff *out);
+
 /* Stores in *out the differentials of the mirror ray ray_reflect(d, n)
  * leaving the point whose derivatives are dp, where the unit normal n has
  * derivatives dn, for an incoming direction d with differentials diff:

@@ -36,6 +36,14 @@ typedef struct {
     Vec3 dn[2]; /* the unit shading normal's (outward, as sp.shading) */
 } ShadeFootprint;
 
+/* Stores in dn fp's normal derivatives, negated when flip is set (for the
+ * normal turned to face the ray). */
+static inline void shade_footprint_dn(const ShadeFootprint *fp, int flip, Vec3 dn[2])
+{
+    for (int k = 0; k < 2; k++)
+        dn[k] = flip ? vec3_neg(fp->dn[k]) : fp->dn[k];
+}
+
 /* What shading needs to know about the point a ray hit. */
 typedef struct {
     SurfacePoint sp;          /* the point, its outward normal and error */

@@ -396,11 +396,18 @@ static int main_spp_map_target(const Options *opts, Error *err)
     return 0;
 }
 
+/* Says whether a render with ropts records each pixel's samples and
+ * error: under --noise, when -v or --spp-map will show them. */
+static int main_noise_shown(const Options *opts, const RenderOptions *ropts)
+{
+    return ropts->noise.level > 0 && (opts->verbose || opts->spp_map);
+}
+
 /* Returns the bytes main_noise_record() will take for scene's image. */
 static size_t main_noise_memory(const Options *opts, const RenderOptions *ropts,
                                 const Scene *scene)
 {
-    if (!(ropts->noise.level > 0) || !(opts->verbose || opts->spp_map))
+    if (!main_noise_shown(opts, ropts))
         return 0;
     return (size_t)scene->camera.width * (size_t)scene->camera.height *
            (sizeof *ropts->spp + sizeof *ropts->error);
@@ -413,7 +420,7 @@ static int main_noise_record(const Options *opts, const Image *img, RenderOption
 {
     size_t n = (size_t)img->width * (size_t)img->height;
 
-    if (!(ropts->noise.level > 0) || !(opts->verbose || opts->spp_map))
+    if (!main_noise_shown(opts, ropts))
         return 0;
     ropts->spp = malloc(n * sizeof *ropts->spp);
     ropts->error = malloc(n * sizeof *ropts->error);

@@ -66,21 +66,32 @@ void ray_diff_reflect(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], con
     out->dddy = r[1];
 }
 
+void ray_diff_unit(Vec3 d, const RayDiff *diff, RayDiff *out)
+{
+    real len = vec3_length(d);
+    Vec3 u = vec3_scale(d, 1 / len);
+
+    *out = *diff;
+    out->dddx = vec3_scale(vec3_sub(diff->dddx, vec3_scale(u, vec3_dot(u, diff->dddx))), 1 / len);
+    out->dddy = vec3_scale(vec3_sub(diff->dddy, vec3_scale(u, vec3_dot(u, diff->dddy))), 1 / len);
+}
+
 void ray_diff_refract(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], const Vec3 dp[2],
                       real eta, Vec3 t, RayDiff *out)
 {
-    Vec3 dd[2] = {diff->dddx, diff->dddy}, r[2];
-    real len = vec3_length(d);
-    Vec3 u = vec3_scale(d, 1 / len);
+    RayDiff unit;
+    Vec3 u = vec3_scale(d, 1 / vec3_length(d)), r[2], du[2];
     real cos_i = -vec3_dot(u, n), cos_t = -vec3_dot(t, n);
     real mu = eta * cos_i - cos_t;
 
+    ray_diff_unit(d, diff, &unit);
+    du[0] = unit.dddx;
+    du[1] = unit.dddy;
     for (int k = 0; k < 2; k++) {
         /* The unit direction's derivative, then the cosine's. */
-        Vec3 du = vec3_scale(vec3_sub(dd[k], vec3_scale(u, vec3_dot(u, dd[k]))), 1 / len);
-        real dcos_i = -(vec3_dot(du, n) + vec3_dot(u, dn[k]));
+        real dcos_i = -(vec3_dot(du[k], n) + vec3_dot(u, dn[k]));
         real dmu = cos_t != 0 ? (eta - eta * eta * cos_i / cos_t) * dcos_i : 0;
-        r[k] = vec3_add(vec3_add(vec3_scale(du, eta), vec3_scale(n, dmu)), vec3_scale(dn[k], mu));
+        r[k] = vec3_add(vec3_add(vec3_scale(du[k], eta), vec3_scale(n, dmu)), vec3_scale(dn[k], mu));
     }
     out->dodx = dp[0];
     out->dody = dp[1];

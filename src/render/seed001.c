@@ -250,12 +250,10 @@ static Colour seed001_secondary(const Tracer *t, const Ray *ray, Vec3 v, const R
         /* The program bends the unit direction v about the normal n facing
          * it: the differentials of v, then the rules of ray.h. */
         const ShadeFootprint *fp = sh->footprint;
-        int flip = vec3_dot(sh->sp.normal, n) < 0;
-        Vec3 dn[2] = {flip ? vec3_neg(fp->dn[0]) : fp->dn[0], flip ? vec3_neg(fp->dn[1]) : fp->dn[1]};
-        real len = vec3_length(ray->dir);
-        unit = *diff;
-        unit.dddx = vec3_scale(vec3_sub(diff->dddx, vec3_scale(v, vec3_dot(v, diff->dddx))), 1 / len);
-        unit.dddy = vec3_scale(vec3_sub(diff->dddy, vec3_scale(v, vec3_dot(v, diff->dddy))), 1 / len);
+        Vec3 dn[2];
+
+        shade_footprint_dn(fp, vec3_dot(sh->sp.normal, n) < 0, dn);
+        ray_diff_unit(ray->dir, diff, &unit);
         if (kind == RAY_REFRACTION)
             ray_diff_refract(v, &unit, n, dn, fp->dp, eta, dir, &child);
         else

@@ -81,8 +81,9 @@ static void trace_child_diff(const Ray *ray, const Shade *sh, Vec3 n, RayKind ki
     const ShadeFootprint *fp = sh->footprint;
     int flip = vec3_dot(sh->sp.shading, n) < 0;
     Vec3 ns = flip ? vec3_neg(sh->sp.shading) : sh->sp.shading;
-    Vec3 dn[2] = {flip ? vec3_neg(fp->dn[0]) : fp->dn[0], flip ? vec3_neg(fp->dn[1]) : fp->dn[1]};
+    Vec3 dn[2];
 
+    shade_footprint_dn(fp, flip, dn);
     if (kind == RAY_REFRACTION) {
         int entering = vec3_dot(ray->dir, sh->sp.normal) < 0;
         real eta = entering ? 1 / sh->material.ior : sh->material.ior;

@@ -30,15 +30,21 @@ size_t texture_memory(const Texture *t)
            (t->levels ? texture_mipmap_memory(t) : 0);
 }
 
+/* Releases t's mip-map (its first level_count levels). */
+static void texture_drop_mipmap(Texture *t)
+{
+    for (int k = 0; k < t->level_count; k++)
+        free(t->levels[k].texels);
+    free(t->levels);
+    t->levels = NULL;
+    t->level_count = 0;
+}
+
 void texture_free(Texture *tex)
 {
-    for (int k = 0; k < tex->level_count; k++)
-        free(tex->levels[k].texels);
-    free(tex->levels);
+    texture_drop_mipmap(tex);
     free(tex->texels);
     free(tex->path);
-    tex->levels = NULL;
-    tex->level_count = 0;
     tex->texels = NULL;
     tex->path = NULL;
 }
@@ -69,16 +75,6 @@ static Colour texture_texel(const Texture *tex, int i, int j)
     const unsigned short *s = tex->texels + 3 * ((size_t)j * (size_t)tex->width + (size_t)i);
 
     return colour(s[0] * tex->scale, s[1] * tex->scale, s[2] * tex->scale);
-}
-
-/* Releases t's mip-map (its first level_count levels). */
-static void texture_drop_mipmap(Texture *t)
-{
-    for (int k = 0; k < t->level_count; k++)
-        free(t->levels[k].texels);
-    free(t->levels);
-    t->levels = NULL;
-    t->level_count = 0;
 }
 
 /* Returns channel c of texel (i, j) of level k of tex (0: its texels). */
