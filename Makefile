@@ -324,7 +324,8 @@ $(BUILD)/fuzz/%.o: src/%.c $(wildcard include/*/*.h src/*/*.h)
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_scene.h $(FUZZ_OBJ)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_OBJ) -lm
 
-$(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h $(LIB_OBJ)
+$(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h $(LIB_OBJ) \
+		$(wildcard include/*/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests/fuzz $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ \
 		$< tests/fuzz/replay.c $(LIB_OBJ) $(RT_LDLIBS) $(LDLIBS)

@@ -17,7 +17,7 @@ static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)
     Error err;
     Image img;
     RayCounts counts = {0};
-    RenderOptions opts = {4, 1, 0.001, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0};
+    RenderOptions opts = {.max_depth = 4, .samples = 1, .cutoff = 0.001, .threads = 1};
 
     scene_init(&scene);
     if (load_scene_text("fuzz", (const char *)data, size, format, 0, &scene, &err) == 0 &&
