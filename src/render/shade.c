@@ -201,7 +201,9 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     }
     if (seed)
         mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
-    sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
+    /* A colour averaged over the footprint is read there alone. */
+    if (!(diff && mapped && texture_filter_averages(sh.material.filter)))
+        sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
     if (diff)
         shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, mapped, seed, clamp_v);
     return sh;

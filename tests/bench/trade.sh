@@ -117,10 +117,10 @@ fi
 # samples), $uniform (the N tried) for scene NAME.
 noise_scene() {
     case $1 in
-    indirect) opts="--size 200x200 --gi 16" ref=256 uniform="2 4 8 16 32 64 128" ;;
-    focus) opts="--size 240x160" ref=4096 uniform="4 8 16 32 64 128 256 512" ;;
-    materials) opts="--size 240x150" ref=2048 uniform="1 2 4 8 16 32 64 128 256" ;;
-    course) opts="--size 200x200" ref=4096 uniform="1 2 4 8 16 32 64 128 256" ;;
+    indirect) opts="--size 200x200 --gi 16" ref=1024 uniform="2 4 8 16 32 64 128" ;;
+    focus) opts="--size 240x160" ref=16384 uniform="4 8 16 32 64 128 256 512" ;;
+    materials) opts="--size 240x150" ref=8192 uniform="1 2 4 8 16 32 64 128 256" ;;
+    course) opts="--size 200x200" ref=16384 uniform="1 2 4 8 16 32 64 128 256" ;;
     esac
 }
 # rmse REF IMAGE [MASK]: the RMS difference, the 8-bit IMAGE against the
@@ -134,10 +134,20 @@ echo "trade: adaptive sampling" >&2
 pfm=0
 : >"$DIR/noise.rows"
 : >"$DIR/honest.rows"
+: >"$DIR/refnoise.rows"
 for s in indirect focus materials course; do
     noise_scene $s
     # shellcheck disable=SC2086
     "$RT" -q $opts -s "$ref" --format pfm "scenes/$s.txt" "$DIR/nz-$s-ref.pfm" || exit 1
+    # The reference's own error: against a quarter of its samples, whose
+    # error is at least twice its own (RMSE falls at least as N^-0.5), the
+    # difference d is at least sqrt(5) times it: d / sqrt(5) bounds it.
+    # shellcheck disable=SC2086
+    "$RT" -q $opts -s $((ref / 4)) --format pfm "scenes/$s.txt" "$DIR/nz-$s-refq.pfm" || exit 1
+    d=$("$DIFF" "$DIR/nz-$s-ref.pfm" "$DIR/nz-$s-refq.pfm" |
+        sed -n 's/^mean error: .*, RMS error: \([0-9.e+-]*\),.*/\1/p')
+    printf '| %s | %d | %.3f | %.3f |\n' "$s" "$ref" "$d" "$(echo "$d / sqrt(5)" | bc -l)" \
+        >>"$DIR/refnoise.rows"
     : >"$DIR/noise-$s.plot"
     for n in $uniform; do
         # shellcheck disable=SC2086
@@ -250,17 +260,22 @@ pfm=0
 : >"$DIR/texture-time.rows"
 for s in materials horizon; do
     case $s in
-    materials) size=320x200 floor=floor cam="0 2.2 -6.5" ;;
-    horizon) size=320x180 floor=tiles cam="0 1.1 -6" ;;
+    materials) size=320x200 tsize=1280x800 floor=floor cam="0 2.2 -6.5" ;;
+    horizon) size=320x180 tsize=1280x720 floor=tiles cam="0 1.1 -6" ;;
     esac
     # shellcheck disable=SC2086
     floor_mask "scenes/$s.txt" $floor $cam 10 "$DIR/tx-$s-far.ppm" "$size"
     "$RT" -q --size "$size" -s 1024 --texture-filter bilinear "scenes/$s.txt" "$DIR/tx-$s-ref.ppm" ||
         exit 1
     for n in 1 4; do
-        tb=$(timed "tx-$s-b$n" --size "$size" -s "$n" --texture-filter bilinear "scenes/$s.txt") || exit 1
-        tt=$(timed "tx-$s-t$n" --size "$size" -s "$n" --texture-filter trilinear "scenes/$s.txt") || exit 1
-        te=$(timed "tx-$s-e$n" --size "$size" -s "$n" --texture-filter ewa "scenes/$s.txt") || exit 1
+        for f in b:bilinear t:trilinear e:ewa; do
+            "$RT" -q --size "$size" -s "$n" --texture-filter "${f#*:}" "scenes/$s.txt" \
+                "$DIR/tx-$s-${f%%:*}$n.ppm" || exit 1
+        done
+        # Times at a size where the render, not the start, is measured.
+        tb=$(timed "tm-$s" --size "$tsize" -s "$n" --texture-filter bilinear "scenes/$s.txt") || exit 1
+        tt=$(timed "tm-$s" --size "$tsize" -s "$n" --texture-filter trilinear "scenes/$s.txt") || exit 1
+        te=$(timed "tm-$s" --size "$tsize" -s "$n" --texture-filter ewa "scenes/$s.txt") || exit 1
         set -- $(only "tx-$s-ref.ppm" "tx-$s-b$n.ppm" "tx-$s-far.ppm")
         fb=$1
         set -- $(only "tx-$s-ref.ppm" "tx-$s-t$n.ppm" "tx-$s-far.ppm")
@@ -476,9 +491,9 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "Four scenes, each against a converged render of its own (uniform"
     echo "sampling, many samples a pixel): scenes/indirect.txt at 200 × 200 with"
     echo "\`--gi 16\` (global illumination, one bounce, 16 gathering rays a"
-    echo "sample; reference 256 samples), scenes/focus.txt at 240 × 160 (its lens;"
-    echo "4096), scenes/materials.txt at 240 × 150 (textures, glass, metal;"
-    echo "2048) and scenes/course.txt at 200 × 200 (anti-aliased edges; 4096)."
+    echo "sample; reference 1024 samples), scenes/focus.txt at 240 × 160 (its lens;"
+    echo "16384), scenes/materials.txt at 240 × 150 (textures, glass, metal;"
+    echo "8192) and scenes/course.txt at 200 × 200 (anti-aliased edges; 16384)."
     echo "Uniform: \`-s N\` (the multi-jittered pattern); adaptive: \`--noise L\`"
     echo "with its defaults (64 / L, 16 to 256, to 4096 samples a pixel, scrambled Sobol points,"
     echo "docs/design.md). The error is what the user sees: the 8-bit render"
@@ -489,6 +504,15 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "![focus](trade-noise-focus.svg)"
     echo "![materials](trade-noise-materials.svg)"
     echo "![course](trade-noise-course.svg)"
+    echo
+    echo "The references' own error bounds what can be measured below it: each"
+    echo "against a render of a quarter of its samples (RMSE, linear), whose"
+    echo "error is at least twice its own, so that the difference over"
+    echo "sqrt(5) bounds the reference's error from above:"
+    echo
+    echo "| scene | reference samples | against a quarter of them | reference's error, at most |"
+    echo "|-------|-------------------|---------------------------|----------------------------|"
+    cat "$DIR/refnoise.rows"
     echo
     echo "| scene | sampling | time | RMSE | samples a pixel (mean) |"
     echo "|-------|----------|------|------|------------------------|"
@@ -546,8 +570,9 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "|---------|--------|---------------------|"
     cat "$DIR/magnified.rows"
     echo
-    echo "Render times (whole command, medians of $RUNS runs), and their ratio to"
-    echo "bilinear's:"
+    echo "Render times (whole command, medians of $RUNS runs, materials.txt at"
+    echo "1280 × 800 and horizon.txt at 1280 × 720, so that the render and not"
+    echo "the start is timed), and their ratio to bilinear's:"
     echo
     echo "| scene | samples | bilinear | trilinear | EWA |"
     echo "|-------|---------|----------|-----------|-----|"
