@@ -68,23 +68,24 @@ static void noise_blocks_follow_the_rounds(void)
 static void noise_error_is_the_blocks_standard_error(void)
 {
     NoiseScale linear = {1, 1}, raw = {1, 0}, gamma = {2.2, 1};
-    NoisePixel p = {{{0, 0, 0}}, 8};
-    /* Block means 10, 12, 14, 16 in every channel (2 samples a block):
-     * deviations -3 -1 1 3, sum of squares 20, 20 / (4 x 3) = 5/3. */
-    double means[NOISE_BLOCKS] = {10, 12, 14, 16}, run = 0;
+    NoisePixel p = {{{0, 0, 0}}, 2 * NOISE_BLOCKS};
+    /* Block means 10, 12, ..., 24 in every channel (2 samples a block):
+     * deviations -7 -5 ... 5 7, sum of squares 168, 168 / (8 x 7) = 3. */
+    double run = 0;
 
+    CHECK_INT(8, NOISE_BLOCKS);
     for (int r = 0; r < NOISE_BLOCKS; r++) {
-        run += 2 * means[r];
+        run += 2 * (10 + 2 * r);
         p.ends[r + 1] = colour(run, run, run);
     }
-    CHECK_NEAR(sqrt(20.0 / 12), noise_error(&p, linear), 1e-12);
-    CHECK_NEAR(13, noise_mean(&p).g, 1e-12);
+    CHECK_NEAR(sqrt(3.0), noise_error(&p, linear), 1e-12);
+    CHECK_NEAR(17, noise_mean(&p).g, 1e-12);
     /* Far above white, the displayed value does not move: no error; the
      * unclamped one (PFM) still does. */
     for (int r = 1; r <= NOISE_BLOCKS; r++)
         p.ends[r] = colour_add(p.ends[r], colour(2000.0 * r, 2000.0 * r, 2000.0 * r));
     CHECK_NEAR(0, noise_error(&p, linear), 0);
-    CHECK_NEAR(sqrt(20.0 / 12), noise_error(&p, raw), 1e-9);
+    CHECK_NEAR(sqrt(3.0), noise_error(&p, raw), 1e-9);
     for (int r = 1; r <= NOISE_BLOCKS; r++)
         p.ends[r] = colour_add(p.ends[r], colour(-2000.0 * r, -2000.0 * r, -2000.0 * r));
     /* Gamma 2.2 stretches dark levels: the error on the display is larger
@@ -96,8 +97,8 @@ static void noise_error_is_the_blocks_standard_error(void)
  * 0.6 is 200 levels, the rest 0) sampled by Owen-scrambled Sobol points,
  * over many independent scramblings. The estimate must not fall short of
  * the true standard error (it errs on the safe side, noise.h), and not
- * exceed it by more than noise.h says (some 1.4 times at an edge; 2 is
- * the bound tested). */
+ * exceed it by more than noise.h says (some 2 times at an edge, 1.6 to
+ * 1.9 measured here; 2 is the bound tested). */
 static void noise_estimate_errs_safe_but_not_far(void)
 {
     NoiseScale raw = {1, 0};

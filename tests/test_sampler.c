@@ -144,7 +144,7 @@ static void sampler_sobol_prefixes_and_their_blocks_are_nets(void)
                           (unsigned)seed, k);
         }
         /* Every prefix of 2^m points, and every aligned block of 2^m
-         * (noise.h's quarters), one point a box. */
+         * (noise.h's eighths), one point a box. */
         for (unsigned m = 0; m <= 10; m++)
             for (unsigned start = 0; start + (1u << m) <= 1024; start += 1u << m) {
                 int f = sobol_net_faults(xy + start, m);

@@ -18,7 +18,7 @@
  * too, so that dimensions are not correlated). Its points 2^m j to
  * 2^m (j + 1) - 1, for any m and j, fill the square one to each of its
  * 2^m elementary boxes of every shape (a (0, m, 2)-net): the first 2^m
- * points, and each quarter of them, which noise.h compares.
+ * points, and each eighth of them, which noise.h compares.
  */
 #ifndef RAYTRACE_SAMPLER_H
 #define RAYTRACE_SAMPLER_H
