@@ -69,7 +69,10 @@ RENDER_INLINE const RayDiff *render_pixel_diff(const Tracer *t, int x, int y, do
 
 /* Returns the share of a pixel's width a sample's footprint spans when
  * the pixel takes n samples: 1 / sqrt(n), at least 1/8 (as pbrt scales
- * its differentials). */
+ * its differentials). Under --noise n is the most a pixel may take, so
+ * that its value tends to the converged picture's: a first round's wider
+ * footprint would blur a far texture by more than the estimate sees
+ * (a bias, not noise: docs/log.md). */
 static double render_footprint_scale(unsigned n)
 {
     double s = 1 / sqrt((double)n);
@@ -368,7 +371,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
                     render_rays_grid(&g, opts->indirect.ao_samples),
                     render_rays_grid(&g, opts->indirect.gi_samples), g, occluders,
                     opts->no_shadows,
-                    render_footprint_scale(noise ? noise_first(&opts->noise) : g.n)};
+                    render_footprint_scale(noise ? noise_most(&opts->noise) : g.n)};
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;

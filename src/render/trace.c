@@ -206,25 +206,30 @@ static inline int trace_gathers(const Tracer *t, TracePath path)
     return t->indirect.gi_samples > 0 && path.bounce < t->indirect.gi_bounces;
 }
 
-/* Returns the differentials the hit of a ray on path (at depth `depth`) on
- * a surface of material m takes its footprint from: path's when its colour
+/* Returns the differentials the hit `hit` of a ray on path (at depth
+ * `depth`) takes its footprint from: path's when the surface's colour
  * averages over the footprint or it sends rays that carry differentials
  * on (gathering, mirror, refraction), else NULL, so that a plain matte
- * surface in a scene that filters elsewhere pays nothing for it. */
-static inline const RayDiff *trace_footprint_diff(const Tracer *t, const Material *m, int depth,
+ * surface in a scene that filters elsewhere pays nothing for it (and a
+ * scene that filters nothing, not even the material's lookup). */
+static inline const RayDiff *trace_footprint_diff(const Tracer *t, const Hit *hit, int depth,
                                                   TracePath path)
 {
+    Material m;
     int sends;
 
-    if (!path.diff || (texture_filter_averages(m->filter) && (m->texture >= 0 || m->stripes)) ||
+    if (!path.diff)
+        return NULL;
+    m = scene_material(t->scene, hit->kind, hit->index);
+    if ((texture_filter_averages(m.filter) && (m.texture >= 0 || m.stripes)) ||
         trace_gathers(t, path))
         return path.diff;
     if (depth + 1 > t->max_depth)
         return NULL;
-    if (m->named >= 0 && t->scene->named[m->named].model != MODEL_PHONG)
-        sends = t->scene->named[m->named].model != MODEL_MATTE;
+    if (m.named >= 0 && t->scene->named[m.named].model != MODEL_PHONG)
+        sends = t->scene->named[m.named].model != MODEL_MATTE;
     else
-        sends = m->reflection > 0 || m->transparency > 0;
+        sends = m.reflection > 0 || m.transparency > 0;
     return sends ? path.diff : NULL;
 }
 
@@ -394,12 +399,10 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     Hit hit;
     Shade sh;
     Vec3 n, ns;
-    Material m;
 
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
-    m = scene_material(scene, hit.kind, hit.index);
-    sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &m, depth, path), &fp);
+    sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     n = ray_facing_normal(sh.sp.normal, ray->dir);
     ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
     /* Ambient occlusion at the points the camera sees, where there is
@@ -421,12 +424,10 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     Vec3 n, ns;
     Colour c;
     double r, tr, own;
-    Material m;
 
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
-    m = scene_material(scene, hit.kind, hit.index);
-    sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &m, depth, path), &fp);
+    sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     /* n, the surface's normal facing the ray, decides where secondary rays
      * start; ns, the shading normal on n's side, how light and mirrors
      * behave. They are the same but on smooth triangles. */
