@@ -536,6 +536,15 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "|-------|---|-----------------------------|---------------------|--------------------|----------|"
     cat "$DIR/honest.rows"
     echo
+    echo "Reading these (design.md §6): a bound on every pixel's error costs, in"
+    echo "plain Monte Carlo, what uniform sampling pays for the same RMSE, so"
+    echo "\`--noise\` wins on RMSE where pixels converge at different rates — flat"
+    echo "walls and sky exact at the first round, filtered textures, edges —"
+    echo "and cannot where a lens blurs every pixel alike (focus.txt), where it"
+    echo "pays the doubling rounds' overshoot. Below 0.5 L the estimate errs on"
+    echo "the safe side (smooth integrands on a net, the first round's floor of"
+    echo "64 / L samples); the references' own error bounds the lowest rows."
+    echo
     echo "## Texture filtering: mip-maps and ray differentials"
     echo
     echo "scenes/materials.txt at 320 × 200 and scenes/horizon.txt at 320 × 180,"
