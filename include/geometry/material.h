@@ -74,6 +74,13 @@ typedef struct {
                             owned by the scene */
 } NamedMaterial;
 
+/* Says whether m's colour is read over a pixel's footprint: a texture or
+ * stripes under an averaging filter. */
+static inline int material_averages(const Material *m)
+{
+    return texture_filter_averages(m->filter) && (m->texture >= 0 || m->stripes);
+}
+
 /* Returns the opaque, untextured material of colour c and mirror weight r. */
 static inline Material material_plain(Colour c, double r)
 {

@@ -90,17 +90,16 @@ static double shade_unwrap(double d)
 }
 
 /* Fills *fp, sh's footprint, from the differentials diff of ray, which
- * met hit; when the colour averages over it (a texture or stripes read by
- * an averaging filter), reads the colour again over it: texture
+ * met hit; when the colour averages over it (averages: material_averages()),
+ * reads sh's colour over it, its only reading: texture
  * coordinates (by the scene's mapping) and stripes at the footprint's
  * ends, their derivatives by difference. uv and stripe are the point's,
  * seed says whether seed 001's mapping lays them. */
 static void shade_footprint(const Scene *scene, const Ray *ray, const Hit *hit,
                             const RayDiff *diff, ShadeFootprint *fp, Shade *sh, const double uv[2],
-                            double stripe, int want_uv, int seed, int clamp_v)
+                            double stripe, int averages, int seed, int clamp_v)
 {
     const Material *m = &sh->material;
-    int averages = want_uv && texture_filter_averages(m->filter);
     double d[4], ds[2];
 
     ray_diff_transfer(ray, diff, hit->t, sh->sp.normal, fp->dp);
@@ -140,7 +139,7 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
 {
     Shade sh;
     double uv[2] = {0, 0}, stripe = 0;
-    int clamp_v = 0, want_uv, seed, mapped;
+    int clamp_v = 0, want_uv, seed, mapped, averages;
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
@@ -202,10 +201,11 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     if (seed)
         mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
     /* A colour averaged over the footprint is read there alone. */
-    if (!(diff && mapped && texture_filter_averages(sh.material.filter)))
+    averages = diff && material_averages(&sh.material);
+    if (!averages)
         sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
     if (diff)
-        shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, mapped, seed, clamp_v);
+        shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, averages, seed, clamp_v);
     return sh;
 }
 

@@ -221,8 +221,7 @@ static inline const RayDiff *trace_footprint_diff(const Tracer *t, const Hit *hi
     if (!path.diff)
         return NULL;
     m = scene_material(t->scene, hit->kind, hit->index);
-    if ((texture_filter_averages(m.filter) && (m.texture >= 0 || m.stripes)) ||
-        trace_gathers(t, path))
+    if (material_averages(&m) || trace_gathers(t, path))
         return path.diff;
     if (depth + 1 > t->max_depth)
         return NULL;

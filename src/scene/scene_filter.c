@@ -52,7 +52,7 @@ static void scene_filter_note(Material *m, void *ctx)
 {
     SceneFilterNeeds *n = ctx;
 
-    if (!texture_filter_averages(m->filter) || (m->texture < 0 && !m->stripes))
+    if (!material_averages(m))
         return;
     n->averages = 1;
     if (m->texture >= 0 && n->wants)
