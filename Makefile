@@ -38,13 +38,52 @@ LTO_PROBE := $(shell printf 'int main(void){return 0;}\n' \
 	| $(CC) -flto=auto -x c - -o /dev/null >/dev/null 2>&1 && echo -flto=auto)
 CFLAGS ?= -O3 -g $(LTO_PROBE)
 
-BUILD := build
+BUILD ?= build
 
-# Probe: can $(CC) compile, link and run-time-link an OpenMP program?
+# The system the programs are for (src/base/ has a POSIX and a Windows
+# implementation of each platform call): Windows when $(CC) makes Windows
+# programs (MinGW-w64, from Linux or in MSYS2), else POSIX. Windows
+# programs are named NAME.exe and linked statically, so that they run
+# without the toolchain's DLLs; its C library's printf and strtod are
+# MinGW-w64's own, which round exactly as glibc's and musl's do.
+TARGET := $(shell $(CC) -dumpmachine 2>/dev/null)
+ifneq ($(filter %mingw32 %windows %cygwin %msys,$(TARGET)),)
+PLATFORM := win32
+EXE := .exe
+RT_PLATFORM := -D__USE_MINGW_ANSI_STDIO=1
+RT_PLATFORM_LDFLAGS := -static
+RT_PLATFORM_LIBS := -lpsapi -lshell32
+# A Windows program is run by the probes below only on Windows itself.
+CROSS := $(if $(filter MINGW% MSYS% CYGWIN%,$(shell uname -s 2>/dev/null)),,1)
+else
+PLATFORM := posix
+EXE :=
+RT_PLATFORM :=
+RT_PLATFORM_LDFLAGS :=
+RT_PLATFORM_LIBS :=
+CROSS :=
+endif
+OTHER_PLATFORM := $(if $(filter win32,$(PLATFORM)),posix,win32)
+
+# Probe: can $(CC) compile and link an OpenMP program, and (unless it is a
+# cross-build) does that program start? A toolchain whose OpenMP library
+# cannot be loaded (musl-gcc finds glibc's libgomp) gives a serial build.
 HASH := \#
-OPENMP_PROBE := $(shell printf '$(HASH)include <omp.h>\nint main(void){return omp_get_max_threads() < 1;}\n' \
-	| $(CC) -fopenmp -x c - -o /dev/null >/dev/null 2>&1 && echo 1 || echo 0)
+OPENMP_PROBE_EXE := $(BUILD)/.openmp-probe-$$$$$(EXE)
+OPENMP_PROBE := $(shell mkdir -p $(BUILD) && \
+	printf '$(HASH)include <omp.h>\nint main(void){return omp_get_max_threads() < 1;}\n' \
+	| $(CC) -fopenmp $(RT_PLATFORM_LDFLAGS) -x c - -o $(OPENMP_PROBE_EXE) >/dev/null 2>&1 \
+	&& { [ -n '$(CROSS)' ] || $(OPENMP_PROBE_EXE) >/dev/null 2>&1; } && echo 1 || echo 0; \
+	rm -f $(OPENMP_PROBE_EXE))
+ifeq ($(origin OPENMP),undefined)
+ifeq ($(OPENMP_PROBE),0)
+ifeq ($(filter clean,$(MAKECMDGOALS)),)
+$(info make: $(CC) has no OpenMP that links and runs: building serial programs (one thread; OPENMP=1 forces it))
+endif
+endif
+endif
 OPENMP ?= $(OPENMP_PROBE)
+export OPENMP # the suites' own makes need not probe again
 ifeq ($(OPENMP),1)
 RT_OMP := -fopenmp
 else
@@ -63,31 +102,38 @@ $(error REAL must be double or float, not '$(REAL)')
 endif
 
 RT_CFLAGS := -std=c11 -Wall -Wextra -pedantic -ffp-contract=off $(RT_OMP) $(RT_REAL)
-RT_CPPFLAGS := -Iinclude -MMD -MP
-RT_LDLIBS := -lm
-
-# Objects are rebuilt when the flags change (say, OPENMP=0 or a sanitizer).
-FLAGS_STAMP := $(BUILD)/flags
-FLAGS_NOW := $(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) $(LDLIBS)
-ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
-$(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
-endif
+RT_CPPFLAGS := -Iinclude -MMD -MP $(RT_PLATFORM)
+RT_LDFLAGS := $(RT_PLATFORM_LDFLAGS)
+RT_LDLIBS := -lm $(RT_PLATFORM_LIBS)
 
 # One folder per layer (docs/design.md): src/LAYER/NAME.c, its header
 # include/LAYER/NAME.h. The commands' own files are in src/cli.
-LIB_SRC := $(sort $(filter-out src/cli/%,$(wildcard src/*/*.c)))
+LIB_SRC := $(sort $(filter-out src/cli/% src/base/%_$(OTHER_PLATFORM).c,$(wildcard src/*/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o $(BUILD)/cli/adjust.o \
 	$(BUILD)/cli/summary.o
 
 # On x86, the hierarchy's queries are built a second time for processors
 # with AVX2 and FMA (src/accel/bvh_query.h), and run on those processors.
-X86 := $(if $(filter x86_64-% i386-% i486-% i586-% i686-%,$(shell $(CC) -dumpmachine)),1)
+X86 := $(if $(filter x86_64-% i386-% i486-% i586-% i686-%,$(TARGET)),1)
 ifeq ($(X86),1)
 RT_CPPFLAGS += -DRAYTRACE_AVX2
 LIB_OBJ += $(BUILD)/accel/bvh_query_avx2.o
 endif
 AVX2_FLAGS := -mavx2 -mfma -DBVH_QUERY_AVX2
+# GCC aligns no Windows stack to the 32 bytes AVX's aligned moves need
+# (GCC bug 54412): the assembler makes them unaligned moves, as fast.
+ifeq ($(PLATFORM),win32)
+AVX2_FLAGS += -Wa,-muse-unaligned-vector-move
+endif
+
+# Objects are rebuilt when the flags change (say, OPENMP=0 or a sanitizer).
+FLAGS_STAMP := $(BUILD)/flags
+FLAGS_NOW := $(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) $(LDLIBS) $(AVX2_FLAGS)
+ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
+$(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
+endif
+
 TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
 FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg tile
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
@@ -105,23 +151,32 @@ GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.
 
 .PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck seed001
 
-all: raytrace raytrace-diff raytrace-merge
+# The programs go to OUT (default: here), named NAME.exe on Windows; NAME
+# stands for them in the rules. make test-musl builds its own in a folder
+# of the build (OUT=$(BUILD)/musl).
+OUT ?= .
+all: $(OUT)/raytrace$(EXE) $(OUT)/raytrace-diff$(EXE) $(OUT)/raytrace-merge$(EXE)
 
-raytrace: $(RAYTRACE_OBJ) $(LIB_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+ifneq ($(OUT)/$(EXE),./)
+.PHONY: raytrace raytrace-diff raytrace-merge
+raytrace raytrace-diff raytrace-merge: %: $(OUT)/%$(EXE)
+endif
 
-$(BUILD)/unit: $(TEST_OBJ) $(LIB_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+$(OUT)/raytrace$(EXE): $(RAYTRACE_OBJ) $(LIB_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+
+$(BUILD)/unit$(EXE): $(TEST_OBJ) $(LIB_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # raytrace-diff and raytrace-merge need images alone: the layers below
 # geometry (link-time optimisation then reads a third of the objects).
 TOOL_OBJ := $(filter $(BUILD)/base/% $(BUILD)/math/% $(BUILD)/image/%,$(LIB_OBJ))
 
-raytrace-diff: $(BUILD)/cli/diff_main.o $(TOOL_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+$(OUT)/raytrace-diff$(EXE): $(BUILD)/cli/diff_main.o $(TOOL_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-raytrace-merge: $(BUILD)/cli/merge_main.o $(TOOL_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+$(OUT)/raytrace-merge$(EXE): $(BUILD)/cli/merge_main.o $(TOOL_OBJ)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The fault injector tests/faults.sh preloads (test-only, glibc): built with
 # flags of its own, since a sanitizer's runtime cannot be preloaded.
@@ -168,8 +223,8 @@ check:
 # One suite each (make test-NAME runs it alone, in full unless
 # TEST_LEVEL=quick).
 SUITE_ENV = RAYTRACE_TEST_LEVEL=$(TEST_LEVEL)
-test-unit: $(BUILD)/unit
-	$(BUILD)/unit
+test-unit: $(BUILD)/unit$(EXE)
+	$(BUILD)/unit$(EXE)
 test-replay: $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || exit 1; done
@@ -193,6 +248,24 @@ test-noise: raytrace raytrace-diff raytrace-merge
 	$(SUITE_ENV) sh tests/noise.sh ./raytrace ./raytrace-diff ./raytrace-merge
 test-faults: raytrace $(BUILD)/inject.so
 	$(SUITE_ENV) sh tests/faults.sh ./raytrace $(BUILD)/inject.so
+
+# The programs of another system and another C library, against this
+# build's bytes (tests/platform.sh): Windows's, cross-built by MinGW-w64
+# (Debian: gcc-mingw-w64-x86-64) and run under Wine (Debian: wine64), and
+# musl's (Debian: musl-tools). Not in make test or make check, which stay
+# on this system: CI runs both. Each is built by a make of its own, which
+# probes its compiler's OpenMP again.
+MINGW_CC ?= x86_64-w64-mingw32-gcc
+MUSL_CC ?= musl-gcc
+.PHONY: test-windows test-musl
+test-windows: raytrace
+	env -u OPENMP $(MAKE) --no-print-directory CC=$(MINGW_CC) BUILD=$(BUILD)/windows all \
+		$(BUILD)/windows/unit.exe
+	$(SUITE_ENV) sh tests/platform.sh windows . $(BUILD)/windows/unit.exe ./raytrace
+test-musl: raytrace
+	env -u OPENMP $(MAKE) --no-print-directory CC=$(MUSL_CC) BUILD=$(BUILD)/musl OUT=$(BUILD)/musl \
+		all $(BUILD)/musl/unit
+	$(SUITE_ENV) sh tests/platform.sh musl $(BUILD)/musl $(BUILD)/musl/unit ./raytrace
 
 install: $(PROGRAMS)
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
@@ -244,12 +317,12 @@ $(BUILD)/float/accel/bvh_query_avx2.o: src/accel/bvh_query.c $(FLAGS_STAMP)
 		-c -o $@ $<
 
 $(BUILD)/raytrace-float: $(FLOAT_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The benchmark (not a test): generated scenes, medians, docs/benchmarks.md.
 $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tests/bench/scenegen.c $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ tests/bench/scenegen.c $(RT_LDLIBS) $(LDLIBS)
 
 # raytrace with Embree 3's traversal in place of ours (tests/bench/embree_bvh.c),
 # which the benchmark races against ours when libembree-dev is installed.
@@ -262,7 +335,7 @@ $(BUILD)/embree/embree_bvh.o: tests/bench/embree_bvh.c $(FLAGS_STAMP)
 	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 $(BUILD)/raytrace-embree: $(EMBREE_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $^ -lembree3 $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ -lembree3 $(RT_LDLIBS) $(LDLIBS)
 
 bench: raytrace raytrace-diff $(BUILD)/scenegen
 	@if $(EMBREE_PROBE); then $(MAKE) --no-print-directory $(BUILD)/raytrace-embree; \
@@ -342,6 +415,6 @@ memcheck: raytrace raytrace-diff raytrace-merge
 	sh tests/memcheck.sh ./raytrace ./raytrace-diff ./raytrace-merge
 
 clean:
-	rm -rf $(BUILD) raytrace raytrace-diff raytrace-merge
+	rm -rf $(BUILD) raytrace raytrace-diff raytrace-merge raytrace.exe raytrace-diff.exe raytrace-merge.exe
 
 -include $(wildcard $(BUILD)/*/*.d $(BUILD)/tests/*.d $(BUILD)/float/*/*.d $(BUILD)/embree/*.d)

@@ -331,7 +331,17 @@ for s in seed002 keyword materials; do
     [ "$("$RT" "$T/elsewhere/$s.txt" - | sha256sum | cut -d' ' -f1)" = "$hash" ] && pass ||
         fail "the saved $s renders differently" "$(cat "$T/elsewhere/$s.txt")"
 done
-expect_grep "--save writes the mesh's absolute path from elsewhere" "mesh $(pwd)/scenes/models/torus-smooth.obj gold" "$T/elsewhere/keyword.txt"
+# From another folder, a mesh's path is relative to the saved file, so that
+# the saved scene and its files may move together.
+mkdir -p "$T/project/saved"
+cp -R scenes "$T/project/scenes"
+expect_exit "--save into another folder" 0 "$RT" --save "$T/project/saved/keyword.txt" "$T/project/scenes/keyword.txt"
+expect_grep "--save writes the mesh's path from the saved file's folder" "mesh ../scenes/models/torus-smooth.obj gold" "$T/project/saved/keyword.txt"
+mv "$T/project" "$T/moved"
+hash=$(grep " scenes/keyword.txt\$" "$T/golden" | cut -d' ' -f1)
+[ "$("$RT" "$T/moved/saved/keyword.txt" - 2>"$T/err" | sha256sum | cut -d' ' -f1)" = "$hash" ] && pass ||
+    fail "a saved scene moved with its files renders differently" "$(cat "$T/err")"
+rm -rf "$T/moved"
 expect_exit "--save beside the scene" 0 "$RT" --save scenes/.saved-by-cli.txt scenes/keyword.txt
 expect_grep "--save keeps a relative mesh path beside the scene" "mesh models/torus-smooth.obj gold" scenes/.saved-by-cli.txt
 rm -f scenes/.saved-by-cli.txt

@@ -16,12 +16,13 @@
 extern const TestCase sphere_tests[], shape_tests[], parse_tests[], trace_tests[],
     sampler_tests[], angle_tests[], texture_tests[], render_tests[], ppm_tests[], png_tests[],
     bvh_tests[], obj_tests[], keyword_tests[], limits_tests[], solid_tests[], mpl_tests[],
-    indirect_tests[], light_buffer_tests[], seed001_tests[], bmp_tests[], noise_tests[], mipmap_tests[];
+    indirect_tests[], light_buffer_tests[], seed001_tests[], bmp_tests[], noise_tests[], mipmap_tests[], number_tests[],
+    path_tests[];
 static const TestCase *const unit_suites[] = {
     sphere_tests, shape_tests,   parse_tests,  trace_tests, sampler_tests,
     angle_tests,  texture_tests, render_tests, ppm_tests,   png_tests, bvh_tests, obj_tests,
     keyword_tests, limits_tests, solid_tests, mpl_tests, indirect_tests, light_buffer_tests,
-    seed001_tests, bmp_tests, noise_tests, mipmap_tests};
+    seed001_tests, bmp_tests, noise_tests, mipmap_tests, number_tests, path_tests};
 
 int test_failed_checks;
 static const char *unit_current; /* name of the running test */

@@ -39,20 +39,26 @@ typedef struct {
 size_t error_escape(char *dst, size_t size, const char *src, size_t len, int keep_tabs,
                     size_t *used);
 
+/* Lets the compiler check a printf-style format: C99's printf (MinGW-w64's
+ * own, which the Windows build uses, not Microsoft's). */
+#if defined(__MINGW32__)
+#define ERROR_FORMAT(fmt, args) __attribute__((format(gnu_printf, fmt, args)))
+#elif defined(__GNUC__)
+#define ERROR_FORMAT(fmt, args) __attribute__((format(printf, fmt, args)))
+#else
+#define ERROR_FORMAT(fmt, args)
+#endif
+
 /* Records an error about file (may be NULL) with no position in it. */
 void error_set(Error *err, const char *file, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
+    ERROR_FORMAT(3, 4)
     ;
 
 /* Records an error at line:column of file, keeping an excerpt of the len
  * bytes of that line starting at text (which need not be NUL-terminated). */
 void error_set_at(Error *err, const char *file, int line, int column, const char *text,
                   size_t len, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 7, 8)))
-#endif
+    ERROR_FORMAT(7, 8)
     ;
 
 #endif

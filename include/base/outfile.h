@@ -1,18 +1,22 @@
 /*
  * outfile.h: writing an output file all at once or not at all.
  *
- * A regular output file is written to a new file without a name (Linux's
- * O_TMPFILE) in its directory, which is given the output's name (linkat,
+ * On Linux a regular output file is written to a new file without a name
+ * (O_TMPFILE) in its directory, which is given the output's name (linkat,
  * and rename over an existing file) only when everything was written and
  * synced, then the directory synced: a failed, interrupted or killed
  * render leaves an existing file untouched and nothing beside it. Where
- * unnamed files are not possible, a named temporary file beside the
- * output takes their place (removed on failure, and by the command on
- * SIGINT, SIGTERM and any exit it did not choose; a SIGKILL leaves it);
- * when even its removal fails, the message names it. "-" means
- * standard output, and an existing file that is not a regular file (a
- * device such as /dev/null, a FIFO) is written in place, since it cannot be
- * replaced.
+ * unnamed files are not possible (other POSIX systems, some file
+ * systems), a named temporary file beside the output takes their place;
+ * on Windows too, where it is flushed to the disk and moved over the
+ * output with MoveFileEx's replace. A temporary file is removed on
+ * failure, and by the command on an interrupt and any exit it did not
+ * choose (base/interrupt.h); a SIGKILL or a killed Windows process leaves
+ * it; when even its removal fails, the message names it. "-" means
+ * standard output, written in binary mode, and an existing file that is
+ * not a regular file (a device such as /dev/null or NUL, a FIFO) is
+ * written in place, since it cannot be replaced. outfile_posix.c and
+ * outfile_win32.c hold the two ways.
  */
 #ifndef RAYTRACE_OUTFILE_H
 #define RAYTRACE_OUTFILE_H
@@ -33,7 +37,7 @@ typedef struct {
     int unnamed;                 /* 1: fp is an unnamed file (O_TMPFILE)
                                     that commit links to dest */
     int fd;                      /* fp's descriptor when it is a new file,
-                                    else -1 */
+                                    else -1 (always -1 on Windows) */
     int is_stdout;               /* 1 when writing to standard output */
 } OutFile;
 

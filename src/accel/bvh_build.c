@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/aligned.h"
+
 #include "bvh_box.h"
 #include "bvh_collapse.h"
 #include "bvh_sah.h"
@@ -117,7 +119,7 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
             nodes = fit;
     }
     bvh->node_count = bvh_collapsed_count(nodes, 0);
-    bvh->nodes = aligned_alloc(_Alignof(BvhNode), bvh->node_count * sizeof *bvh->nodes);
+    bvh->nodes = aligned_new(_Alignof(BvhNode), bvh->node_count * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);
         bvh_free(bvh);
@@ -206,7 +208,7 @@ size_t bvh_memory(const Bvh *bvh)
 
 void bvh_free(Bvh *bvh)
 {
-    free(bvh->nodes);
+    aligned_free(bvh->nodes);
     free(bvh->prims);
     memset(bvh, 0, sizeof *bvh);
 }

@@ -1,4 +1,5 @@
-/* file.c: reading whole files (see file.h). */
+/* file.c: reading whole files (see file.h); the calls that differ between
+ * systems are in file_posix.c and file_win32.c. */
 #define _XOPEN_SOURCE 700 /* POSIX.1-2008: fileno, fstat */
 
 #include "base/file.h"
@@ -62,6 +63,7 @@ static int file_slurp(FILE *f, char **data, size_t *len)
 }
 
 #define FILE_TOO_LARGE "larger than 1 GiB, the most any input may be"
+#define FILE_IS_DIR "it is a directory, not a file"
 
 /* Says why the open file f cannot be read as a whole (a directory, a
  * device), or NULL when it can: a regular file, a pipe or a terminal
@@ -73,7 +75,7 @@ static const char *file_unreadable(FILE *f, int is_stdin)
     if (fstat(fileno(f), &st) != 0)
         return NULL; /* reading will say what is wrong */
     if (S_ISDIR(st.st_mode))
-        return "it is a directory, not a file";
+        return FILE_IS_DIR;
     if (S_ISREG(st.st_mode) && st.st_size > FILE_MAX)
         return FILE_TOO_LARGE;
     if (S_ISREG(st.st_mode) || S_ISFIFO(st.st_mode) || is_stdin)
@@ -85,11 +87,17 @@ int file_read_all(const char *path, char **data, size_t *len, Error *err)
 {
     const char *name = file_display_name(path);
     int is_stdin = strcmp(path, "-") == 0, rc;
-    FILE *f = is_stdin ? stdin : fopen(path, "rb");
+    FILE *f = is_stdin ? stdin : file_open(path, "rb");
     const char *why;
 
+    if (is_stdin)
+        file_binary(stdin);
+
     if (!f) {
-        error_set(err, name, "cannot open: %s", strerror(errno));
+        if (errno == EISDIR) /* where a folder cannot be opened (Windows) */
+            error_set(err, name, "cannot read: %s", FILE_IS_DIR);
+        else
+            error_set(err, name, "cannot open: %s", strerror(errno));
         return -1;
     }
     why = file_unreadable(f, is_stdin);

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "base/outfile.h"
+#include "base/process.h"
 #include "image/compare.h"
 #include "image/writer.h"
 
@@ -153,6 +154,7 @@ int main(int argc, char **argv)
     Comparison c;
     Error err;
 
+    process_init(&argc, &argv);
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {

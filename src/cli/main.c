@@ -3,21 +3,17 @@
  * -> renderer -> Image -> writer (PPM, PNG or PFM) -> output file. The only
  * module that prints or exits.
  */
-#define _POSIX_C_SOURCE 200809L
-
 #include <errno.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "accel/bvh.h"
 #include "base/error.h"
 #include "base/file.h"
+#include "base/interrupt.h"
 #include "base/outfile.h"
+#include "base/process.h"
 #include "base/threads.h"
 #include "cli/adjust.h"
 #include "cli/options.h"
@@ -36,81 +32,26 @@
 
 #define RAYTRACE_VERSION "0.2.0"
 
-/* The temporary output file, for the signal handler to remove. */
-static const char *volatile main_temp_path;
-
-/* Set while a progress bar is on the terminal, for the handler to erase. */
-static volatile sig_atomic_t main_bar_shown;
-
-/* On SIGINT or SIGTERM: remove the temporary file, say so, exit 128 + sig. */
-static void main_on_signal(int sig)
-{
-    static const char msg[] = "raytrace: interrupted\n", erase[] = "\r\033[K";
-    const char *temp = main_temp_path;
-
-    if (temp && *temp)
-        unlink(temp);
-    if ((main_bar_shown && write(STDERR_FILENO, erase, sizeof erase - 1) < 0) ||
-        write(STDERR_FILENO, msg, sizeof msg - 1) < 0) {
-        /* Nothing more can be done. */
-    }
-    _exit(128 + sig);
-}
-
-/* At any exit raytrace did not choose (the OpenMP runtime's fatal errors
- * call exit() from its threads): remove the temporary file. */
-static void main_at_exit(void)
-{
-    const char *temp = main_temp_path;
-
-    if (temp && *temp)
-        unlink(temp);
-}
-
-/* Arranges, once, for SIGINT, SIGTERM and any exit to remove the
- * temporary output file and for the signals to say so. */
-static void main_catch_signals(void)
-{
-    static int caught;
-    struct sigaction sa;
-
-    if (caught)
-        return;
-    caught = 1;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = main_on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    atexit(main_at_exit);
-}
-
 /*
- * Opens the output like outfile_open() and arranges for SIGINT and SIGTERM to
- * remove its temporary file. Signals are held while the file is created, so
- * none can strike between its creation and its registration; no other
- * thread exists yet, so the mask of this one is enough.
+ * Opens the output like outfile_open(), its temporary file watched from
+ * before it exists (base/interrupt.h): an exit from within outfile_open()
+ * (a failed allocation in the C library's stream, after the named
+ * temporary is made) still finds it; until it is made, the name is a
+ * template that names no file. Interrupts are held while the file is
+ * created, so none can strike between its creation and its watch.
  */
 static int main_open_output(OutFile *out, const char *path, Error *err)
 {
-    sigset_t set, old;
     int rc;
 
-    main_catch_signals();
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    sigprocmask(SIG_BLOCK, &set, &old);
-    /* Named from the start: an exit from within outfile_open() (a failed
-     * allocation in the C library's stream, after the named temporary is
-     * made) still finds it; until it is made, the name is a template that
-     * names no file. */
+    interrupt_catch("raytrace: interrupted\n");
+    interrupt_hold();
     out->temp[0] = '\0';
-    main_temp_path = out->temp;
+    interrupt_watch(out->temp);
     rc = outfile_open(out, path, err);
     if (rc != 0 || !out->temp[0])
-        main_temp_path = NULL;
-    sigprocmask(SIG_SETMASK, &old, NULL);
+        interrupt_watch(NULL);
+    interrupt_release();
     return rc;
 }
 
@@ -154,23 +95,6 @@ static int main_usage(const char *msg)
     return 2;
 }
 
-/* Says whether paths a and b name the same existing file. */
-static int main_same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
-           sa.st_ino == sb.st_ino;
-}
-
-static double main_now(void)
-{
-    struct timespec ts;
-
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
 /* The progress bar's state: drawn on standard error, a few times a second. */
 typedef struct {
     double start;     /* when rendering began */
@@ -183,7 +107,7 @@ typedef struct {
 static void main_progress(void *ctx, int done, int total)
 {
     MainProgress *p = ctx;
-    double now = main_now(), elapsed = now - p->start, frac = (double)done / total;
+    double now = process_seconds(), elapsed = now - p->start, frac = (double)done / total;
     char bar[31];
     int filled = (int)(frac * 30);
 
@@ -191,7 +115,7 @@ static void main_progress(void *ctx, int done, int total)
         return;
     p->last_draw = now;
     p->drawn = 1;
-    main_bar_shown = 1;
+    interrupt_bar(1);
     for (int i = 0; i < 30; i++)
         bar[i] = i < filled ? '#' : '.';
     bar[30] = '\0';
@@ -223,7 +147,7 @@ static int main_load(const Options *opts, Scene *scene)
 static int main_check_target(const Options *opts, const char *path, Error *err)
 {
     if (strcmp(path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
-        main_same_file(opts->scene_path, path)) {
+        file_same(opts->scene_path, path)) {
         error_set(err, path, "the output is the scene file itself: refusing to overwrite it");
         return -1;
     }
@@ -267,7 +191,7 @@ static int main_save(const Options *opts)
         outfile_abort(&out, &err);
     else
         rc = outfile_commit(&out, &err);
-    main_temp_path = NULL;
+    interrupt_watch(NULL);
     if (rc != 0)
         goto fail;
     scene_free(&scene);
@@ -351,19 +275,19 @@ static int main_trace(const Options *opts, RenderOptions *ropts, const Scene *sc
                       RayCounts *counts, double *seconds)
 {
     MainProgress progress = {0, 0, 0};
-    double start = main_now();
+    double start = process_seconds();
     int threads;
 
-    if (isatty(STDERR_FILENO) && !opts->quiet) {
+    if (file_is_terminal(stderr) && !opts->quiet) {
         ropts->progress = main_progress;
         ropts->progress_ctx = &progress;
     }
     progress.start = progress.last_draw = start;
     threads = render(scene, ropts, img, counts);
-    *seconds = main_now() - start;
+    *seconds = process_seconds() - start;
     if (progress.drawn) {
         fputs("\r\033[K", stderr); /* erase the bar */
-        main_bar_shown = 0;
+        interrupt_bar(0);
     }
     ropts->progress = NULL;
     return threads;
@@ -388,7 +312,7 @@ static int main_tile(const Options *opts, const Scene *scene, const RenderOption
 static int main_spp_map_target(const Options *opts, Error *err)
 {
     if (strcmp(opts->spp_map, "-") == 0 || strcmp(opts->spp_map, opts->output_path) == 0 ||
-        (strcmp(opts->output_path, "-") != 0 && main_same_file(opts->output_path, opts->spp_map))) {
+        (strcmp(opts->output_path, "-") != 0 && file_same(opts->output_path, opts->spp_map))) {
         error_set(err, opts->spp_map,
                   "--spp-map must name a file of its own, not the output or standard output");
         return -1;
@@ -446,19 +370,19 @@ static int main_write(const char *path, const Image *img, const WriterOptions *w
 
     if (main_open_output(&out, path, err) != 0)
         return -1;
-    /* An interrupt from here on still finds main_temp_path: before the rename
-     * it removes the unfinished file, after it the unlink finds nothing. */
+    /* An interrupt from here on still finds the watched file: before the move
+     * it removes the unfinished file, after it the removal finds nothing. */
     if (writer_write(out.fp, img, wopts) != 0) {
         error_set(err, path, "cannot write the image: %s", strerror(errno));
         outfile_abort(&out, err);
-        main_temp_path = NULL;
+        interrupt_watch(NULL);
         return -1;
     }
     if (outfile_commit(&out, err) != 0) {
-        main_temp_path = NULL;
+        interrupt_watch(NULL);
         return -1;
     }
-    main_temp_path = NULL;
+    interrupt_watch(NULL);
     return 0;
 }
 
@@ -494,7 +418,7 @@ static int main_render(const Options *opts)
     Tile tile;
     char record[TILE_RECORD_MAX];
     int rows;
-    double start = main_now(), read_time, accel_time, render_time, write_time;
+    double start = process_seconds(), read_time, accel_time, render_time, write_time;
     Scene scene;
     Image img;
     Error err;
@@ -502,9 +426,9 @@ static int main_render(const Options *opts)
 
     if (main_load(opts, &scene) != 0)
         return 1;
-    read_time = main_now() - start;
+    read_time = process_seconds() - start;
     adjust_render(opts, &scene, &ropts);
-    if (strcmp(opts->output_path, "-") == 0 && isatty(STDOUT_FILENO)) {
+    if (strcmp(opts->output_path, "-") == 0 && file_is_terminal(stdout)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
         goto fail_scene;
     }
@@ -516,7 +440,7 @@ static int main_render(const Options *opts)
           main_spp_map_target(opts, &err) != 0 || outfile_check(opts->spp_map, &err) != 0)) ||
         main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
         goto fail_scene;
-    accel_time = main_now() - start - read_time;
+    accel_time = process_seconds() - start - read_time;
     rows = scene.camera.height;
     /* Gathered light has no bound the cut-off could use. */
     if (ropts.indirect.gi_samples > 0)
@@ -539,19 +463,19 @@ static int main_render(const Options *opts)
     }
     /* The render needs no file: the output is created once the picture is
      * done, so that nothing is left of it whatever ends the render. */
-    main_catch_signals();
+    interrupt_catch("raytrace: interrupted\n");
     threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
-    write_time = main_now();
+    write_time = process_seconds();
     if (main_write(opts->output_path, &img, &wopts, &err) != 0 ||
         (opts->spp_map && ropts.spp && main_spp_map(opts, &ropts, img.width, img.height, &err) != 0))
         goto fail_image;
-    write_time = main_now() - write_time;
+    write_time = process_seconds() - write_time;
     if (opts->verbose) {
         SummaryTimes times = {read_time, accel_time, render_time, write_time};
         summary_verbose(&scene, &img, &ropts, opts->spp_map, &times, threads, &counts);
-    } else if (!opts->quiet && isatty(STDERR_FILENO)) {
+    } else if (!opts->quiet && file_is_terminal(stderr)) {
         summary_line(strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
-                     &scene, &img, &ropts, main_now() - start, threads);
+                     &scene, &img, &ropts, process_seconds() - start, threads);
     }
     main_noise_free(&ropts);
     image_free(&img);
@@ -559,7 +483,7 @@ static int main_render(const Options *opts)
     return 0;
 
 fail_image:
-    main_temp_path = NULL;
+    interrupt_watch(NULL);
 fail_image_only:
     main_noise_free(&ropts);
     image_free(&img);
@@ -573,8 +497,10 @@ int main(int argc, char **argv)
 {
     Options opts;
     char msg[256];
+    OptionsAction action;
 
-    OptionsAction action = options_parse(&opts, argc, argv, threads_processors(), msg,
+    process_init(&argc, &argv);
+    action = options_parse(&opts, argc, argv, threads_processors(), msg,
                                          sizeof msg);
 
     if (action != OPTIONS_USAGE)

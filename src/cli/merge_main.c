@@ -8,17 +8,15 @@
  * foreign, truncated or unreadable, or OUT could not be written (OUT is
  * then left as it was); 2 a bad command line.
  */
-#define _POSIX_C_SOURCE 200809L
-
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "base/error.h"
 #include "base/file.h"
 #include "base/outfile.h"
+#include "base/process.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "image/pfm.h"
@@ -211,13 +209,15 @@ static int merge_missing(const Merge *m, Error *err)
 int main(int argc, char **argv)
 {
     const char *out_path = NULL;
-    const char **tiles = calloc((size_t)argc, sizeof *tiles);
+    const char **tiles;
     int ntiles = 0, quiet = 0, quality = 90, only = 0;
     Merge m;
     Error err;
     OutFile out;
     WriterOptions w;
 
+    process_init(&argc, &argv);
+    tiles = calloc((size_t)argc, sizeof *tiles);
     if (!tiles)
         return 1;
     for (int i = 1; i < argc; i++) {
@@ -291,7 +291,7 @@ int main(int argc, char **argv)
     }
     if (outfile_commit(&out, &err) != 0)
         goto fail;
-    if (!quiet && isatty(STDERR_FILENO))
+    if (!quiet && file_is_terminal(stderr))
         fprintf(stderr, "raytrace-merge: wrote %s: %d x %d pixels from %d tiles\n", out_path,
                 m.img.width, m.img.height, ntiles);
     image_free(&m.img);

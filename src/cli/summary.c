@@ -2,22 +2,12 @@
 #include "cli/summary.h"
 
 #include <stdio.h>
-#include <sys/resource.h>
 
 #include "accel/bvh.h"
 #include "accel/light_buffer.h"
+#include "base/process.h"
 #include "math/number.h"
 #include "render/seed001.h"
-
-/* Returns the process's peak resident memory in bytes (0 if unknown). */
-static double summary_peak_memory(void)
-{
-    struct rusage ru;
-
-    /* Linux reports ru_maxrss in kilobytes. */
-    return getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss * 1024 : 0;
-}
-
 
 /* Prints, for -v, light buffer lb (light_buffer.h), around `what`. */
 static void summary_buffer(const char *what, const LightBuffer *lb)
@@ -93,7 +83,7 @@ static void summary_statistics(const Image *img, const RenderOptions *ropts, Sce
                 ropts->cutoff, c->cut, c->refined);
     fprintf(stderr, "raytrace: rendered in %.3f s: %.2f Mrays/s\n", seconds,
             seconds > 0 ? all / seconds / 1e6 : 0.0);
-    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", summary_peak_memory() / 1e6);
+    fprintf(stderr, "raytrace: peak memory: %.1f MB\n", process_peak_memory() / 1e6);
 }
 
 /* Prints, for -v, the samples n pixels took under --noise and the errors

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/path.h"
 #include "math/number.h"
 
 void lex_init(Lexer *L, const char *name, const char *text, size_t len, Error *err)
@@ -350,17 +351,10 @@ void lex_fail_eof(Lexer *L, const char *what, const char *syntax)
 
 char *lex_path(Lexer *L, const Token *t)
 {
-    const char *slash = strrchr(L->name, '/');
-    size_t dir = t->text[0] == '/' || !slash ? 0 : (size_t)(slash - L->name) + 1;
-    char *path = malloc(dir + t->len + 1);
+    char *path = path_beside(L->name, "", t->text, t->len);
 
-    if (!path) {
+    if (!path)
         error_set(L->err, L->name, "out of memory");
-        return NULL;
-    }
-    memcpy(path, L->name, dir);
-    memcpy(path + dir, t->text, t->len);
-    path[dir + t->len] = '\0';
     return path;
 }
 

@@ -1,6 +1,4 @@
 /* save.c: a scene in the keyword or the MPL format (see save.h). */
-#define _XOPEN_SOURCE 700 /* realpath */
-
 #include "scenefile/save.h"
 
 #include <errno.h>
@@ -8,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/path.h"
 #include "math/number.h"
 #include "scenefile/shapes.h"
 
@@ -40,42 +39,60 @@ static void save_colour(FILE *fp, Colour c)
     save_numbers(fp, v, 3);
 }
 
-/* Returns the length of path's directory part, up to its last '/'. */
-static size_t save_dir_length(const char *path)
+/* Returns, newly allocated, the absolute path of out_name's folder ("-",
+ * standard output: the current folder); NULL with errno set. */
+static char *save_out_folder(const char *out_name)
 {
-    const char *slash = strrchr(path, '/');
+    size_t n = strcmp(out_name, "-") == 0 ? 0 : path_dir_length(out_name);
+    char *dir = malloc(n + 2), *full;
 
-    return slash ? (size_t)(slash - path) + 1 : 0;
+    if (!dir)
+        return NULL;
+    memcpy(dir, out_name, n);
+    strcpy(dir + n, ".");
+    full = path_absolute(dir);
+    free(dir);
+    return full;
 }
 
 /* Writes the path of a file the scene names (a `what`: "mesh", "texture"),
  * written as the scene wrote it and opened at opened, so that it resolves
- * from out_name's directory: as written when the scene file is in that
- * directory too or the path is absolute, else as an absolute path;
- * returns 0, or -1 with *err filled. */
+ * from out_name's folder: as written when the scene file is in that folder
+ * too or the path is absolute, else relative to that folder (so that the
+ * saved scene and its files may move together), or absolute where no
+ * relative path leads (another drive); returns 0, or -1 with *err filled. */
 static int save_path(FILE *fp, const char *written, const char *opened, const char *what,
                      const char *scene_name, const char *out_name, Error *err)
 {
-    size_t sd = save_dir_length(scene_name), od = save_dir_length(out_name);
-    char *full;
+    size_t sd = path_dir_length(scene_name), od = path_dir_length(out_name);
+    char *full, *dir, *rel;
 
-    if (written[0] == '/' || (sd == od && strncmp(scene_name, out_name, sd) == 0)) {
+    if (path_is_absolute(written, strlen(written)) ||
+        (sd == od && strncmp(scene_name, out_name, sd) == 0)) {
         fputs(written, fp);
         return 0;
     }
-    full = realpath(opened, NULL);
-    if (!full) {
-        error_set(err, opened, "cannot find the %s's absolute path: %s", what, strerror(errno));
-        return -1;
-    }
-    if (strpbrk(full, " \t#")) {
-        error_set(err, full, "the %s's absolute path has a space or '#', which a scene line "
-                             "cannot hold; save next to the scene file instead", what);
+    full = path_absolute(opened);
+    dir = full ? save_out_folder(out_name) : NULL;
+    rel = dir ? path_relative(dir, full) : NULL;
+    if (!rel) {
+        error_set(err, full ? out_name : opened, "cannot find the %s's path from the saved "
+                  "scene's folder: %s", what, strerror(errno));
         free(full);
+        free(dir);
         return -1;
     }
-    fputs(full, fp);
     free(full);
+    free(dir);
+    if (strpbrk(rel, " \t#")) {
+        error_set(err, opened, "the %s's path from the saved scene's folder, '%s', has a space "
+                  "or '#', which a scene line cannot hold; save next to the scene file instead",
+                  what, rel);
+        free(rel);
+        return -1;
+    }
+    fputs(rel, fp);
+    free(rel);
     return 0;
 }
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/file.h"
+#include "base/path.h"
 #include "image/bmp.h"
 #include "image/jpeg.h"
 #include "image/png.h"
@@ -113,43 +114,22 @@ int texture_file_add(Scene *scene, const char *path, Error *err)
     return scene_add_texture(scene, &tex);
 }
 
-/* Returns, newly allocated, the path of name (len bytes) in folder, which
- * is relative to the scene file scene_name's folder (folder "" for that
- * folder itself), or name as it is when absolute; NULL when memory runs
- * out. */
-static char *texture_file_path(const char *scene_name, const char *folder, const char *name,
-                               size_t len)
-{
-    const char *slash = strrchr(scene_name, '/');
-    size_t dir = name[0] == '/' || !slash ? 0 : (size_t)(slash - scene_name) + 1;
-    size_t k = name[0] == '/' ? 0 : strlen(folder);
-    char *path = malloc(dir + k + len + 1);
-
-    if (!path)
-        return NULL;
-    memcpy(path, scene_name, dir);
-    memcpy(path + dir, folder, k);
-    memcpy(path + dir + k, name, len);
-    path[dir + k + len] = '\0';
-    return path;
-}
-
 char *texture_file_find(const char *scene_name, const char *name, size_t len,
                         const char *const *folders, size_t nfolders)
 {
-    char *first = texture_file_path(scene_name, "", name, len);
+    char *first = path_beside(scene_name, "", name, len);
 
     if (!first)
         return NULL;
     for (size_t i = 0; i <= nfolders; i++) {
-        char *path = i == 0 ? first : texture_file_path(scene_name, folders[i - 1], name, len);
+        char *path = i == 0 ? first : path_beside(scene_name, folders[i - 1], name, len);
         FILE *f;
         if (!path) {
             free(first);
             return NULL;
         }
         errno = 0;
-        f = fopen(path, "rb");
+        f = file_open(path, "rb");
         if (f || (errno != ENOENT && errno != ENOTDIR)) {
             /* There, or there but unreadable: loading it says why. */
             if (f)
@@ -160,7 +140,7 @@ char *texture_file_find(const char *scene_name, const char *name, size_t len,
         }
         if (path != first)
             free(path);
-        if (name[0] == '/')
+        if (path_is_absolute(name, len))
             break;
     }
     return first;

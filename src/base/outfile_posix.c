@@ -1,7 +1,16 @@
-/* outfile.c: all-or-nothing output files (see outfile.h). */
-/* POSIX.1-2008 with XSI (mkstemp, fchmod, realpath) and, on Linux,
- * O_TMPFILE and linkat()'s AT_SYMLINK_FOLLOW. */
+/* outfile_posix.c: all-or-nothing output files on POSIX systems (see
+ * outfile.h). */
+/* POSIX.1-2008 with XSI (mkstemp, fchmod, realpath) and, on Linux, its
+ * unnamed files (O_TMPFILE, named through /proc) and glibc's fopencookie;
+ * RAYTRACE_STRICT_POSIX leaves Linux's out, as a macOS or BSD build has
+ * to (CI builds so). */
+#if defined(__linux__) && !defined(RAYTRACE_STRICT_POSIX)
 #define _GNU_SOURCE
+#define OUTFILE_LINUX 1
+#else
+#define _XOPEN_SOURCE 700
+#define OUTFILE_LINUX 0
+#endif
 
 #include "base/outfile.h"
 
@@ -82,7 +91,7 @@ static int outfile_close_fd(void *cookie)
  * NULL with fd left open. */
 static FILE *outfile_stream(int fd)
 {
-#ifdef __GLIBC__
+#if OUTFILE_LINUX && defined(__GLIBC__)
     cookie_io_functions_t io = {NULL, outfile_write_all, NULL, outfile_close_fd};
     int *cookie = malloc(sizeof *cookie);
     FILE *f;
@@ -107,7 +116,7 @@ static FILE *outfile_stream(int fd)
  * (where the system or the file system cannot). */
 static int outfile_unnamed(const char *dir, mode_t mode)
 {
-#ifdef O_TMPFILE
+#if OUTFILE_LINUX && defined(O_TMPFILE)
     int fd;
 
     /* Naming it later goes through /proc/self/fd. */
@@ -279,7 +288,7 @@ static int outfile_link(OutFile *out)
     if (errno != EEXIST)
         return -1;
     for (int tries = 0; tries < 100; tries++) {
-        char name[OUTFILE_PATH_MAX + 256];
+        char name[sizeof out->temp];
         const char *slash = strrchr(out->dest, '/');
         int saved;
         if (snprintf(name, sizeof name, "%s/.%.200s.%06u", out->dir,
@@ -296,8 +305,9 @@ static int outfile_link(OutFile *out)
         }
         if (rename(name, out->dest) == 0)
             return 0;
+        /* The commit's failure removes the name, or says it stays. */
         saved = errno;
-        unlink(name);
+        strcpy(out->temp, name);
         errno = saved;
         return -1;
     }

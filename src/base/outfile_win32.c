@@ -1,0 +1,283 @@
+/* outfile_win32.c: all-or-nothing output files on Windows (see outfile.h):
+ * a temporary file beside the output, shared for deletion so that an
+ * interrupt can remove it while it is open, flushed to the disk, then
+ * moved over the output by MoveFileEx's replace. */
+#include "base/outfile.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <io.h>
+#include <stdlib.h>
+#include <string.h>
+#include <windows.h>
+
+#include "base/path.h"
+#include "wide.h"
+
+/* What the file path is: OUTFILE_NONE, a folder, a file on a disk, or
+ * something else (a device such as NUL or CON, a pipe), written in place. */
+typedef enum { OUTFILE_NONE, OUTFILE_FOLDER, OUTFILE_DISK, OUTFILE_DEVICE } OutfileKind;
+
+static OutfileKind outfile_kind(const wchar_t *path)
+{
+    DWORD attrs = GetFileAttributesW(path);
+    HANDLE h;
+    DWORD type;
+
+    if (attrs != INVALID_FILE_ATTRIBUTES)
+        return attrs & FILE_ATTRIBUTE_DIRECTORY ? OUTFILE_FOLDER : OUTFILE_DISK;
+    /* Devices have no attributes to read: open it to ask. */
+    h = CreateFileW(path, 0, FILE_SHARE_READ | FILE_SHARE_WRITE, NULL, OPEN_EXISTING, 0, NULL);
+    if (h == INVALID_HANDLE_VALUE)
+        return OUTFILE_NONE;
+    type = GetFileType(h);
+    CloseHandle(h);
+    return type == FILE_TYPE_DISK ? OUTFILE_DISK : OUTFILE_DEVICE;
+}
+
+/* Copies path's folder into dir ("." when it has none). */
+static void outfile_dir(const char *path, char *dir)
+{
+    size_t n = path_dir_length(path);
+
+    if (n == 0) {
+        strcpy(dir, ".");
+        return;
+    }
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+}
+
+/* Sets *err to "MESSAGE: the system's reason" for a failed call on path,
+ * from GetLastError(). */
+static void outfile_fail(Error *err, const char *path, const char *what)
+{
+    wide_errno(GetLastError());
+    error_set(err, path, "%s: %s", what, strerror(errno));
+}
+
+/* Removes out's temporary file, if any; when that fails too, adds its name
+ * and why to err's message (err may be NULL). Returns 0, or -1 when the
+ * file stays. */
+static int outfile_remove_temp(OutFile *out, Error *err)
+{
+    wchar_t *w;
+    int rc = 0;
+
+    if (!out->temp[0])
+        return 0;
+    w = wide_from_utf8(out->temp);
+    if (!w || (!DeleteFileW(w) && GetLastError() != ERROR_FILE_NOT_FOUND)) {
+        if (w)
+            wide_errno(GetLastError());
+        rc = -1;
+        if (err) {
+            size_t n = strlen(err->message);
+            snprintf(err->message + n, sizeof err->message - n,
+                     "; and the temporary file '%s' could not be removed (%s): delete it",
+                     out->temp, strerror(errno));
+        }
+    }
+    free(w);
+    out->temp[0] = '\0';
+    return rc;
+}
+
+/* Creates out->temp, a new file in dir named after base; returns its
+ * handle, or INVALID_HANDLE_VALUE with GetLastError() saying why. */
+static HANDLE outfile_create_temp(OutFile *out, const char *dir, const char *base)
+{
+    static unsigned counter;
+    const char *sep = path_dir_length(dir) == strlen(dir) ? "" : "\\";
+
+    for (int tries = 0; tries < 100; tries++) {
+        unsigned salt = (unsigned)GetCurrentProcessId() * 7919u + (unsigned)GetTickCount() +
+                        ++counter * 104729u;
+        wchar_t *w;
+        HANDLE h;
+        if (snprintf(out->temp, sizeof out->temp, "%s%s.%.200s.%06u", dir, sep, base,
+                     salt % 1000000u) >= (int)sizeof out->temp) {
+            SetLastError(ERROR_FILENAME_EXCED_RANGE);
+            break;
+        }
+        w = wide_from_utf8(out->temp);
+        if (!w) {
+            SetLastError(ERROR_INVALID_NAME);
+            break;
+        }
+        /* Shared for deletion: an interrupt may remove it while open. */
+        h = CreateFileW(w, GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_DELETE, NULL, CREATE_NEW,
+                        FILE_ATTRIBUTE_NORMAL, NULL);
+        free(w);
+        if (h != INVALID_HANDLE_VALUE)
+            return h;
+        if (GetLastError() != ERROR_FILE_EXISTS && GetLastError() != ERROR_ALREADY_EXISTS)
+            break;
+    }
+    out->temp[0] = '\0';
+    return INVALID_HANDLE_VALUE;
+}
+
+/* Opens path in place (a device); returns 0, or -1 with *err set. */
+static int outfile_in_place(OutFile *out, const char *path, Error *err)
+{
+    wchar_t *w = wide_from_utf8(path);
+
+    out->fp = w ? _wfopen(w, L"wb") : NULL;
+    free(w);
+    if (!out->fp) {
+        error_set(err, path, "cannot open for writing: %s", strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int outfile_open(OutFile *out, const char *path, Error *err)
+{
+    char dir[OUTFILE_PATH_MAX];
+    wchar_t *w;
+    OutfileKind kind;
+    HANDLE h;
+    int fd;
+
+    memset(out, 0, sizeof *out);
+    out->fd = -1;
+    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
+        error_set(err, path, "output path is too long");
+        return -1;
+    }
+    strcpy(out->path, path);
+    if (strcmp(path, "-") == 0) {
+        out->fp = stdout;
+        out->is_stdout = 1;
+        _setmode(_fileno(stdout), _O_BINARY);
+        return 0;
+    }
+    if (!(w = wide_from_utf8(path))) {
+        error_set(err, path, "cannot open for writing: %s", strerror(errno));
+        return -1;
+    }
+    kind = outfile_kind(w);
+    free(w);
+    if (kind == OUTFILE_FOLDER) {
+        error_set(err, path, "cannot write the image: it is a directory");
+        return -1;
+    }
+    if (kind == OUTFILE_DEVICE)
+        return outfile_in_place(out, path, err);
+    strcpy(out->dest, path);
+    outfile_dir(path, dir);
+    strcpy(out->dir, dir);
+    h = outfile_create_temp(out, dir, path + path_dir_length(path));
+    if (h == INVALID_HANDLE_VALUE) {
+        wide_errno(GetLastError());
+        error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(errno));
+        return -1;
+    }
+    fd = _open_osfhandle((intptr_t)h, _O_WRONLY | _O_BINARY);
+    if (fd < 0 || !(out->fp = _fdopen(fd, "wb"))) {
+        error_set(err, path, "cannot write in directory '%s': %s", dir, strerror(errno));
+        if (fd >= 0)
+            _close(fd);
+        else
+            CloseHandle(h);
+        outfile_remove_temp(out, err);
+        return -1;
+    }
+    return 0;
+}
+
+int outfile_check(const char *path, Error *err)
+{
+    char dir[OUTFILE_PATH_MAX];
+    wchar_t *w;
+    DWORD attrs;
+
+    if (strcmp(path, "-") == 0)
+        return 0;
+    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
+        error_set(err, path, "output path is too long");
+        return -1;
+    }
+    if (!(w = wide_from_utf8(path))) {
+        error_set(err, path, "cannot open for writing: %s", strerror(errno));
+        return -1;
+    }
+    switch (outfile_kind(w)) {
+    case OUTFILE_FOLDER:
+        free(w);
+        error_set(err, path, "cannot write the image: it is a directory");
+        return -1;
+    case OUTFILE_DEVICE:
+        free(w);
+        return 0;
+    default:
+        free(w);
+    }
+    outfile_dir(path, dir);
+    w = wide_from_utf8(dir);
+    attrs = w ? GetFileAttributesW(w) : INVALID_FILE_ATTRIBUTES;
+    free(w);
+    if (attrs != INVALID_FILE_ATTRIBUTES && (attrs & FILE_ATTRIBUTE_DIRECTORY))
+        return 0;
+    if (attrs != INVALID_FILE_ATTRIBUTES)
+        SetLastError(ERROR_DIRECTORY);
+    wide_errno(GetLastError());
+    error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(errno));
+    return -1;
+}
+
+/* Moves out's finished temporary file over its destination; returns 0, or
+ * -1 with GetLastError() saying why. */
+static int outfile_replace(const OutFile *out)
+{
+    wchar_t *from = wide_from_utf8(out->temp), *to = wide_from_utf8(out->dest);
+    int ok = from && to &&
+             MoveFileExW(from, to, MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH);
+
+    if (!from || !to)
+        SetLastError(ERROR_NOT_ENOUGH_MEMORY);
+    free(from);
+    free(to);
+    return ok ? 0 : -1;
+}
+
+int outfile_commit(OutFile *out, Error *err)
+{
+    int failed = fflush(out->fp) != 0 || ferror(out->fp);
+    int saved = errno;
+
+    /* Make the data durable before the move makes it visible. */
+    if (!failed && out->temp[0] &&
+        !FlushFileBuffers((HANDLE)_get_osfhandle(_fileno(out->fp)))) {
+        wide_errno(GetLastError());
+        failed = 1;
+        saved = errno;
+    }
+    if (!out->is_stdout && fclose(out->fp) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    out->fp = NULL;
+    if (!failed && out->temp[0] && outfile_replace(out) != 0) {
+        outfile_fail(err, out->path, "cannot write the image");
+        outfile_remove_temp(out, err);
+        return -1;
+    }
+    if (failed) {
+        error_set(err, out->is_stdout ? "<stdout>" : out->path, "cannot write the image: %s",
+                  strerror(saved ? saved : EIO));
+        outfile_remove_temp(out, err);
+        return -1;
+    }
+    out->temp[0] = '\0';
+    return 0;
+}
+
+int outfile_abort(OutFile *out, Error *err)
+{
+    if (out->fp && !out->is_stdout)
+        fclose(out->fp);
+    out->fp = NULL;
+    return outfile_remove_temp(out, err);
+}
