@@ -237,6 +237,21 @@ if [ -n "$INJECT" ]; then
     else
         fail "a failed clean-up leaves $left unnamed" "$(cat "$T/err")"
     fi
+    # The same with an unnamed file (O_TMPFILE): over an existing output it
+    # is linked to a temporary name, then renamed; when both the rename and
+    # the removal of that name fail, the message names it too.
+    rm -rf "$T/o"
+    mkdir "$T/o"
+    printf 'keep me\n' >"$T/o/out.png"
+    RAYTRACE_FAULT="rename:1:EIO" RAYTRACE_FAULT2="unlink:1:EACCES" \
+        LD_PRELOAD="$INJECT" "$RT" -q "$T/f.txt" "$T/o/out.png" 2>"$T/err"
+    left=$(ls -A "$T/o" | grep -v '^out.png$')
+    if [ -z "$left" ] || grep -q "the temporary file '$T/o/$left' could not be removed" "$T/err"; then
+        pass
+    else
+        fail "an unnamed file's failed clean-up leaves $left unnamed" "$(cat "$T/err")"
+    fi
+    [ "$(cat "$T/o/out.png")" = "keep me" ] && pass || fail "a failed rename changed the old output"
 fi
 
 finish
