@@ -52,6 +52,22 @@ static void angle_tan_matches_libm(void)
     CHECK_NEAR(1, angle_tan(ANGLE_PI / 4), 2e-16);
 }
 
+/* power_log() is ln within a few units in the last place, from 1e-300 to
+ * 1e300 (the spp map's ratios of sample counts among them). */
+static void power_log_matches_libm(void)
+{
+    double worst = 0;
+
+    for (int i = 0; i < 100000; i++) {
+        double x = rng_log_scale(-300, 300), want = log(x), got = power_log(x);
+        double err = fabs(got - want) / (fabs(want) > 1e-300 ? fabs(want) : 1);
+        worst = err > worst ? err : worst;
+    }
+    CHECK_NEAR(0, worst, 1e-15);
+    CHECK_NEAR(0, power_log(1), 0);
+    CHECK_NEAR(log(1024.0 / 21), power_log(1024.0 / 21), 4e-16);
+}
+
 static void power_matches_libm(void)
 {
     double worst = 0;
@@ -82,6 +98,7 @@ static void power_matches_libm(void)
 const TestCase angle_tests[] = {
     {"angle_tan_matches_libm", angle_tan_matches_libm},
     {"power_matches_libm", power_matches_libm},
+    {"power_log_matches_libm", power_log_matches_libm},
     {"angle_sincos_matches_libm", angle_sincos_matches_libm},
     {"angle_atan2_and_acos_match_libm", angle_atan2_and_acos_match_libm},
     {NULL, NULL},

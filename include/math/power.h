@@ -16,4 +16,8 @@
 /* Returns x^y for 0 <= x <= 1 and 0 <= y <= 1e15 (0^0 = 1). */
 double power(double x, double y);
 
+/* Returns ln x for 0 < x < 2^1023, within a few units in the last place,
+ * the same on every machine. */
+double power_log(double x);
+
 #endif

@@ -341,8 +341,13 @@ static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, siz
     size_t entries[LB_STEPS + 1] = {0}, holders = 0;
     int r[LB_STEPS + 1];
 
+    /* 2^(-k/4), correctly rounded: res 2^(-j/4) with no libm pow(), whose
+     * last bit may differ between C libraries. */
+    static const double quarter[4] = {1, 0x1.ae89f995ad3adp-1, 0x1.6a09e667f3bcdp-1,
+                                      0x1.306fe0a31b715p-1};
+
     for (int j = 0; j <= LB_STEPS; j++) {
-        r[j] = (int)(res * pow(2, -j / 4.0));
+        r[j] = (int)ldexp(res * quarter[j % 4], -(j / 4));
         r[j] = r[j] > 0 ? r[j] : 1;
     }
     (void)threads;

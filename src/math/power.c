@@ -8,8 +8,8 @@
 #define POWER_LN2_HI 0x1.62e42fefa3800p-1
 #define POWER_LN2_LO 0x1.ef35793c76730p-45
 
-/* Returns ln x for 0 < x <= 1, as e ln 2 + ln m with x = m 2^e, m near 1. */
-static double power_log(double x)
+/* Returns ln x as e ln 2 + ln m with x = m 2^e, m near 1. */
+double power_log(double x)
 {
     int e;
     double m = frexp(x, &e), s, s2, term, sum;

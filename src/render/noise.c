@@ -148,12 +148,12 @@ static const Colour noise_ramp[] = {
 void noise_heat_map(const unsigned *spp, unsigned lo, unsigned hi, Image *img)
 {
     const int stops = (int)(sizeof noise_ramp / sizeof noise_ramp[0]) - 1;
-    double span = hi > lo ? log((double)hi / lo) : 1;
+    double span = hi > lo ? power_log((double)hi / lo) : 1;
 
     for (int y = 0; y < img->height; y++)
         for (int x = 0; x < img->width; x++) {
             unsigned n = spp[(size_t)y * img->width + x];
-            double f = n <= lo ? 0 : n >= hi ? 1 : log((double)n / lo) / span, at = f * stops;
+            double f = n <= lo ? 0 : n >= hi ? 1 : power_log((double)n / lo) / span, at = f * stops;
             int k = at >= stops ? stops - 1 : (int)at;
             double w = at - k;
             Colour a = noise_ramp[k], b = noise_ramp[k + 1];
