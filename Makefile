@@ -4,6 +4,10 @@
 #                   (with OpenMP when the compiler has it)
 # make test         build and run the quick suite (under a minute on 2 cores)
 # make check        build and run every suite in full (CI runs it)
+# make test-windows cross-build the Windows programs (MinGW-w64) and test them
+#                   under Wine; make test-musl the same for a musl build
+#                   (tests/platform.sh); make CC=x86_64-w64-mingw32-gcc
+#                   builds raytrace.exe and its tools here
 # make OPENMP=0     build without OpenMP
 # make REAL=float   build with single-precision geometry (not exact: see
 #                   docs/trade.md); $(BUILD)/raytrace-float is that build too
@@ -29,6 +33,11 @@
 # The default -O3 is 8% faster than -O2 on the sphere field (same bytes).
 
 CC ?= cc
+# Make's own default, cc, is not on every system (MSYS2's MinGW shells
+# have gcc alone).
+ifeq ($(origin CC),default)
+CC := $(shell command -v cc >/dev/null 2>&1 && echo cc || echo gcc)
+endif
 
 # Link-time optimisation when $(CC) can do it: a ray's hot path runs through
 # several modules (render/trace.c, shade.c, visibility.c), which LTO
@@ -267,13 +276,13 @@ test-musl: raytrace
 		all $(BUILD)/musl/unit
 	$(SUITE_ENV) sh tests/platform.sh musl $(BUILD)/musl $(BUILD)/musl/unit ./raytrace
 
-install: $(PROGRAMS)
+install: $(PROGRAMS:%=$(OUT)/%$(EXE))
 	install -d '$(DESTDIR)$(BINDIR)' '$(DESTDIR)$(MANDIR)'
-	install -m 755 $(PROGRAMS) '$(DESTDIR)$(BINDIR)'
+	install -m 755 $(PROGRAMS:%=$(OUT)/%$(EXE)) '$(DESTDIR)$(BINDIR)'
 	install -m 644 $(MANPAGES) '$(DESTDIR)$(MANDIR)'
 
 uninstall:
-	rm -f $(PROGRAMS:%='$(DESTDIR)$(BINDIR)'/%) $(MANPAGES:docs/%='$(DESTDIR)$(MANDIR)'/%)
+	rm -f $(PROGRAMS:%='$(DESTDIR)$(BINDIR)'/%$(EXE)) $(MANPAGES:docs/%='$(DESTDIR)$(MANDIR)'/%)
 
 # The README's pictures, rendered from the scenes so that they stay true
 # (tests/cli.sh checks that each has the pixels of its scene's render).
