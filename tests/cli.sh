@@ -421,6 +421,24 @@ expect_exit "output is a directory" 1 "$RT" "$T/small.txt" "$T"
 expect_exit "output is the scene" 1 "$RT" "$T/small.txt" "$T/small.txt"
 expect_grep "output is the scene" "refusing to overwrite" "$T/err"
 head -1 "$T/small.txt" | grep -q '^0 0 0$' && pass || fail "scene was overwritten"
+# Nor any file the scene reads, by its name or through a link.
+mkdir -p "$T/own/models"
+cp scenes/textures/checker.ppm "$T/own/tex.ppm"
+cp scenes/models/torus-flat.obj "$T/own/models/t.obj"
+printf '0 0 -5\n-1 1 0\n1 1 0\n-1 -1 0\n8\n0 0 0\n0 5 -5 255 255 255\nplane: 0 -1 0 0 1 0 200 200 200 0\ntexture: tex.ppm\nmesh: models/t.obj 200 100 50 0\n' >"$T/own/s.txt"
+ln -s tex.ppm "$T/own/link.ppm"
+for out in tex.ppm link.ppm ../own/tex.ppm; do
+    expect_exit "output is the scene's texture ($out)" 1 "$RT" -q "$T/own/s.txt" "$T/own/$out"
+    expect_grep "output is the scene's texture ($out): message" "the output is the scene's texture" "$T/err"
+done
+cmp -s "$T/own/tex.ppm" scenes/textures/checker.ppm && pass || fail "the scene's texture was overwritten"
+expect_exit "output is the scene's mesh" 1 "$RT" -q "$T/own/s.txt" "$T/own/models/t.obj"
+expect_grep "output is the scene's mesh: message" "the output is the scene's mesh" "$T/err"
+cmp -s "$T/own/models/t.obj" scenes/models/torus-flat.obj && pass || fail "the scene's mesh was overwritten"
+expect_exit "--spp-map is the scene's texture" 1 "$RT" -q --noise 8 --spp-map "$T/own/tex.ppm" "$T/own/s.txt" "$T/own/out.ppm"
+cmp -s "$T/own/tex.ppm" scenes/textures/checker.ppm && pass || fail "--spp-map overwrote the scene's texture"
+expect_exit "--save over the keyword scene's mesh" 1 "$RT" --save scenes/models/torus-smooth.obj scenes/keyword.txt
+git diff --quiet -- scenes/models/torus-smooth.obj 2>/dev/null && pass || fail "--save overwrote the scene's mesh"
 if [ -w /dev/full ]; then
     expect_exit "full disk" 1 "$RT" "$T/small.txt" /dev/full
     expect_grep "full disk" "No space left on device" "$T/err"

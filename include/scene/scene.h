@@ -84,7 +84,7 @@ typedef enum {
     SCENE_MAPPING_SEED001 /* seed 001's program's conventions (mapping.h) */
 } SceneMapping;
 
-/* A keyword-format mesh line, kept so that the scene can be saved. */
+/* A mesh line, kept so that the scene can be saved and its files known. */
 typedef struct {
     char *path;   /* the OBJ path as written in the scene file */
     char *opened; /* the path it was read from */
@@ -146,7 +146,8 @@ typedef struct Scene {
     NamedMaterial *named;   /* the keyword and MPL formats' named materials */
     size_t named_count;
     size_t named_capacity;
-    SceneMesh *meshes;      /* the keyword format's mesh lines */
+    SceneMesh *meshes;      /* the mesh lines (course and keyword formats),
+                               for --save and the files the scene reads */
     size_t mesh_count;
     size_t mesh_capacity;
     SceneFormat format;     /* the format it was read from */

@@ -143,14 +143,29 @@ static int main_load(const Options *opts, Scene *scene)
 }
 
 /* Says, in *err, why path may not be written from opts' scene: it is the
- * scene file itself; returns 0 when it may. */
-static int main_check_target(const Options *opts, const char *path, Error *err)
+ * scene file itself, or a file the scene reads (a texture, a mesh), under
+ * any name or link; returns 0 when it may. */
+static int main_check_target(const Options *opts, const Scene *scene, const char *path,
+                             Error *err)
 {
-    if (strcmp(path, "-") != 0 && strcmp(opts->scene_path, "-") != 0 &&
-        file_same(opts->scene_path, path)) {
+    if (strcmp(path, "-") == 0)
+        return 0;
+    if (strcmp(opts->scene_path, "-") != 0 && file_same(opts->scene_path, path)) {
         error_set(err, path, "the output is the scene file itself: refusing to overwrite it");
         return -1;
     }
+    for (size_t i = 0; i < scene->texture_count; i++)
+        if (file_same(scene->textures[i].path, path)) {
+            error_set(err, path, "the output is the scene's texture '%s': refusing to "
+                      "overwrite it", scene->textures[i].path);
+            return -1;
+        }
+    for (size_t i = 0; i < scene->mesh_count; i++)
+        if (file_same(scene->meshes[i].opened, path)) {
+            error_set(err, path, "the output is the scene's mesh '%s': refusing to overwrite it",
+                      scene->meshes[i].opened);
+            return -1;
+        }
     return 0;
 }
 
@@ -182,7 +197,7 @@ static int main_save(const Options *opts)
 
     if (main_load(opts, &scene) != 0)
         return 1;
-    if (main_check_target(opts, opts->save_path, &err) != 0 ||
+    if (main_check_target(opts, &scene, opts->save_path, &err) != 0 ||
         main_open_output(&out, opts->save_path, &err) != 0)
         goto fail;
     rc = save_scene(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
@@ -433,10 +448,10 @@ static int main_render(const Options *opts)
         goto fail_scene;
     }
     /* An output that cannot be made is said before a long render. */
-    if (main_check_target(opts, opts->output_path, &err) != 0 ||
+    if (main_check_target(opts, &scene, opts->output_path, &err) != 0 ||
         outfile_check(opts->output_path, &err) != 0 ||
         (ropts.noise.level > 0 && opts->spp_map &&
-         (main_check_target(opts, opts->spp_map, &err) != 0 ||
+         (main_check_target(opts, &scene, opts->spp_map, &err) != 0 ||
           main_spp_map_target(opts, &err) != 0 || outfile_check(opts->spp_map, &err) != 0)) ||
         main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
         goto fail_scene;

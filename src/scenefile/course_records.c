@@ -257,9 +257,7 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
 {
     double v[6];
     Material mat;
-    ObjMesh mesh;
-    Error inner;
-    char *path, q[64];
+    char q[64];
     long added;
     int n;
 
@@ -273,19 +271,11 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
     n = lex_numbers(&P->lex, rec, 2, &course_mesh_spec, v);
     if (n < 0 || course_material(P, rec, &course_mesh_spec, 2, 0, v, n, &mat) != 0)
         return -1;
-    path = lex_path(&P->lex, &rec->tok[1]);
-    if (!path)
+    added = mesh_load(&P->lex, rec, &rec->tok[1], &mat, scene);
+    if (added == MESH_FAULT)
         return -1;
-    if (obj_load(path, scene_obj_budget(scene), &mesh, &inner) != 0) {
-        lex_fail_file(&P->lex, rec, &rec->tok[1], "mesh", &inner);
-        free(path);
-        return -1;
-    }
-    free(path);
-    added = mesh_add(scene, &mesh, &mat);
-    obj_free(&mesh);
     if (added < 0)
-        return course_fail_memory(P, rec, scene, added);
+        return course_fail_memory(P, rec, scene, (int)added);
     if (added == 0) {
         course_fail(P, &rec->line, rec->tok[1].column,
                    "the mesh %s has no faces with an area: nothing to draw",

@@ -285,27 +285,12 @@ static int keyword_cone_record(Keyword *K, const Record *rec, Scene *scene)
     return keyword_shape_record(K, rec, scene, SHAPE_CONE, &keyword_cone);
 }
 
-/* Returns a new string holding token t; NULL out of memory. */
-static char *keyword_strdup(const Token *t)
-{
-    char *s = malloc(t->len + 1);
-
-    if (s) {
-        memcpy(s, t->text, t->len);
-        s[t->len] = '\0';
-    }
-    return s;
-}
-
 /* mesh -> 'mesh' path material */
 static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
 {
     static const RecordSpec spec = {"the mesh", "path material", 0, 0, 0, NULL, NULL};
     const Token *path_tok = &rec->tok[1];
-    SceneMesh sm;
-    ObjMesh mesh;
     Material m;
-    Error inner;
     char q[64];
     long added;
 
@@ -318,36 +303,18 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
     }
     if (names_numbers_and_material(&K->lex, &K->names, rec, 2, &spec, scene, "a material line", NULL, &m) != 0)
         return -1;
-    sm.opened = lex_path(&K->lex, path_tok);
-    if (!sm.opened)
+    added = mesh_load(&K->lex, rec, path_tok, &m, scene);
+    if (added == MESH_FAULT)
         return -1;
-    if (obj_load(sm.opened, scene_obj_budget(scene), &mesh, &inner) != 0) {
-        lex_fail_file(&K->lex, rec, path_tok, "mesh", &inner);
-        free(sm.opened);
-        return -1;
-    }
-    sm.first = scene->triangle_count;
-    added = mesh_add(scene, &mesh, &m);
-    obj_free(&mesh);
-    if (added <= 0) {
-        free(sm.opened);
-        if (added < 0)
-            return keyword_fail_store(K, rec, scene, added);
+    if (added < 0)
+        return keyword_fail_store(K, rec, scene, (int)added);
+    if (added == 0) {
         keyword_fail(K, &rec->line, path_tok->column,
                      "the mesh %s has no faces with an area: nothing to draw",
                      lex_quote(q, sizeof q, path_tok));
         return -1;
     }
-    sm.count = (size_t)added;
-    sm.path = keyword_strdup(path_tok);
-    if (!sm.path) {
-        free(sm.opened);
-        return keyword_fail_memory(K);
-    }
-    {
-        int rc = scene_add_mesh_record(scene, &sm);
-        return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
-    }
+    return 0;
 }
 
 /* light -> 'light' x y z r g b i */

@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/hash.h"
 #include "base/threads.h"
@@ -110,4 +111,37 @@ long mesh_add(Scene *scene, const ObjMesh *m, const Material *mat)
         added++;
     }
     return added;
+}
+
+long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat, Scene *scene)
+{
+    SceneMesh sm = {NULL, lex_path(L, t), scene->triangle_count, 0};
+    ObjMesh mesh;
+    Error inner;
+    long added;
+    int rc;
+
+    if (!sm.opened)
+        return MESH_FAULT;
+    if (obj_load(sm.opened, scene_obj_budget(scene), &mesh, &inner) != 0) {
+        lex_fail_file(L, rec, t, "mesh", &inner);
+        free(sm.opened);
+        return MESH_FAULT;
+    }
+    added = mesh_add(scene, &mesh, mat);
+    obj_free(&mesh);
+    if (added <= 0) {
+        free(sm.opened);
+        return added;
+    }
+    sm.count = (size_t)added;
+    sm.path = malloc(t->len + 1);
+    if (!sm.path) {
+        free(sm.opened);
+        return -1;
+    }
+    memcpy(sm.path, t->text, t->len);
+    sm.path[t->len] = '\0';
+    rc = scene_add_mesh_record(scene, &sm);
+    return rc != 0 ? rc : added;
 }
