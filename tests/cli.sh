@@ -414,6 +414,18 @@ expect_exit "scene is a directory" 1 "$RT" "$T" "$T/keep.ppm"
 expect_grep "scene is a directory" 'it is a directory, not a file' "$T/err"
 expect_grep "failed runs keep output" 'keep me' "$T/keep.ppm"
 
+# --- seed 001's lenient lines: read with a warning each, --strict refuses ---
+printf 'm a MATTE 1 1 1 0 0 0 N\nc Camera 0 0 -5 0 0 0 60 16 12\np Sphere 0 0 0 1.5abc a shiny\n' >"$T/lenient.txt"
+expect_exit "seed 001's lenient lines" 0 "$RT" "$T/lenient.txt" "$T/lenient.ppm"
+expect_grep "a number up to its letter: warning" "raytrace: $T/lenient.txt:3:19: warning: read '1.5abc' as 1.5, up to its first letter (as seed 001's program did; --strict refuses it)" "$T/err"
+expect_grep "words after the material: warning" "$T/lenient.txt:3:25: warning: ignored 1 word after the material's name" "$T/err"
+expect_exit "seed 001's lenient lines, quietly" 0 "$RT" -q "$T/lenient.txt" "$T/lenient.ppm"
+[ ! -s "$T/err" ] && pass || fail "-q printed warnings" "$(cat "$T/err")"
+printf 'old\n' >"$T/strict.ppm"
+expect_exit "--strict" 1 "$RT" --strict "$T/lenient.txt" "$T/strict.ppm"
+expect_grep "--strict: message" "$T/lenient.txt:3:16: error: expected a number for the sphere's radius, found '1.5abc'" "$T/err"
+expect_grep "--strict keeps the output" "old" "$T/strict.ppm"
+
 # --- bad outputs: clear error, nothing damaged or left behind ---
 expect_exit "missing directory" 1 "$RT" "$T/small.txt" "$T/no/such/dir/out.ppm"
 expect_grep "missing directory" "No such file or directory" "$T/err"

@@ -661,7 +661,7 @@ static void keyword_save_refuses_a_course_scene(void)
     FILE *fp = tmpfile();
 
     CHECK(fp != NULL);
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
     if (fp) {
         CHECK_INT(-1, save_scene(fp, &sc, "scenes/course.txt", "out.txt", &err));
         CHECK_CONTAINS(err.message, "cannot express a course-format scene");

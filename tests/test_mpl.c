@@ -15,7 +15,7 @@
 /* Reads text as an MPL scene named t.txt; returns what the reader does. */
 static int mpl(const char *text, Scene *sc, Error *err)
 {
-    return mpl_parse_text("t.txt", text, strlen(text), 0, sc, err);
+    return mpl_parse_text("t.txt", text, strlen(text), 0, 0, sc, err);
 }
 
 static void mpl_reads_the_seed_example_verbatim(void)
@@ -24,7 +24,7 @@ static void mpl_reads_the_seed_example_verbatim(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(0, load_scene_file("scenes/seed001.txt", SCENE_AUTO, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/seed001.txt", SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_INT(SCENE_MPL, sc.format);
     CHECK_INT(5, (long long)sc.named_count);
     CHECK_INT(4, (long long)sc.texture_count);
@@ -202,13 +202,15 @@ static const BadMpl mpl_bad[] = {
     {"c GI 2\nc GI 3\n", 2, 1, "the global illumination is already set, on line 1"},
 };
 
+/* Under --strict: every line that breaks the format, those seed 001's
+ * program read leniently among them. */
 static void mpl_rejects_bad_scenes_with_position(void)
 {
     for (size_t i = 0; i < sizeof mpl_bad / sizeof mpl_bad[0]; i++) {
         const BadMpl *b = &mpl_bad[i];
         Scene sc;
         Error err;
-        int rc = mpl(b->text, &sc, &err);
+        int rc = mpl_parse_text("t.txt", b->text, strlen(b->text), 0, 1, &sc, &err);
 
         CHECK_INT(-1, rc);
         if (rc != -1) {
@@ -216,6 +218,68 @@ static void mpl_rejects_bad_scenes_with_position(void)
             continue;
         }
         CHECK_ERROR(b->text, &err, b->line, b->column, b->message);
+    }
+}
+
+/* Lines seed 001's program read though they break the format: read as it
+ * read them, each with a warning at its place; --strict refuses each. */
+static void mpl_reads_its_programs_lenient_lines_with_warnings(void)
+{
+    static const struct {
+        const char *text;
+        int line, column;
+        const char *message;
+    } cases[] = {
+        {MAT "p Sphere 0 0 0 1.5abc a\n", 2, 19, "read '1.5abc' as 1.5, up to its first letter"},
+        {MAT "p Sphere 0 0 0 1.5 a shiny 3\n", 2, 22, "ignored 2 words after the material's name"},
+        {MAT "p Sphere 0 0 0 1.5 b\n", 2, 20, "unknown material 'b': read as the first one, 'a'"},
+        {MAT "m a MATTE 0 0 1 0 0 0 N\np Sphere 0 0 0 1.5 a\n", 2, 3,
+         "the material 'a' is already defined, on line 1: kept that one, this line changes "
+         "nothing"},
+        {MAT "p Sphere 0 0 0 1.5 a\nl PointLight 0 5 0 1 1 1 1 10 7 8\n", 3, 31,
+         "ignored 2 numbers after the light's"},
+        {MAT "p Sphere 0 0 0 1.5 a\nl DirectionLight 0 -1 0 1 1 1 1 2\n", 3, 33,
+         "ignored 1 number after the light's"},
+        {MAT "p Sphere 0 0 0 1.5 a\nl PointLight 0 5 0 1 1 1 0.5x\n", 3, 29,
+         "read '0.5x' as 0.5, up to its first letter"},
+    };
+
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *text = cases[i].text;
+        Scene sc;
+        Error err;
+        char want[ERROR_MESSAGE_MAX];
+        CHECK_INT(0, mpl(text, &sc, &err));
+        CHECK_INT(1, (long long)sc.warning_count);
+        snprintf(want, sizeof want, "%s (as seed 001's program did; --strict refuses it)",
+                 cases[i].message);
+        if (sc.warning_count == 1)
+            CHECK_ERROR(text, &sc.warnings[0], cases[i].line, cases[i].column, want);
+        /* What was read: the sphere of radius 1.5, in the first material,
+         * white; the one light of intensity 1. */
+        CHECK_INT(1, (long long)sc.sphere_count);
+        if (sc.sphere_count == 1)
+            CHECK_NEAR(1.5, sc.spheres[0].radius, 0);
+        CHECK_NEAR(255, scene_material(&sc, SHAPE_SPHERE, 0).colour.b, 0);
+        scene_free(&sc);
+        CHECK_INT(-1, mpl_parse_text("t.txt", text, strlen(text), 0, 1, &sc, &err));
+    }
+}
+
+/* What its program could not have read stays an error. */
+static void mpl_lenience_stops_where_its_program_did(void)
+{
+    static const char *const texts[] = {
+        "p Sphere 0 0 0 1 a\n",               /* no material at all */
+        MAT "p Sphere 0 0 0 abc a\n",         /* no number before the letters */
+        MAT "p Sphere 0 0 0 1 2 a\n",         /* a number too many */
+        MAT "l PointLight 0 5 0 1 1 1 1 10 x\n", /* a word after the light's */
+    };
+
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        Scene sc;
+        Error err;
+        CHECK_INT(-1, mpl(texts[i], &sc, &err));
     }
 }
 
@@ -474,6 +538,9 @@ const TestCase mpl_tests[] = {
     {"mpl_reads_the_seed_example_verbatim", mpl_reads_the_seed_example_verbatim},
     {"mpl_reads_c_literals_commas_and_any_case", mpl_reads_c_literals_commas_and_any_case},
     {"mpl_rejects_bad_scenes_with_position", mpl_rejects_bad_scenes_with_position},
+    {"mpl_reads_its_programs_lenient_lines_with_warnings",
+     mpl_reads_its_programs_lenient_lines_with_warnings},
+    {"mpl_lenience_stops_where_its_program_did", mpl_lenience_stops_where_its_program_did},
     {"mpl_material_kinds_shade_as_documented", mpl_material_kinds_shade_as_documented},
     {"mpl_metal_tints_and_glass_splits_by_fresnel", mpl_metal_tints_and_glass_splits_by_fresnel},
     {"mpl_point_light_falls_off_and_ends_at_its_range",

@@ -804,13 +804,13 @@ static void parse_file_errors(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, 0, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_CONTAINS(err.file, "tests/no-such-file.txt");
     CHECK_CONTAINS(err.message, "cannot open");
     CHECK_INT(0, err.line);
-    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, 0, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_CONTAINS(err.message, "cannot read");
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_INT(3, (long long)sc.sphere_count);
     CHECK_INT(400, sc.camera.height);
     scene_free(&sc);

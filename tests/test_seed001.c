@@ -19,7 +19,7 @@ static int seed_scene(const char *text, Scene *sc)
 {
     Error err;
 
-    if (mpl_parse_text("t.txt", text, strlen(text), 0, sc, &err) == 0)
+    if (mpl_parse_text("t.txt", text, strlen(text), 0, 0, sc, &err) == 0)
         return 0;
     test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
     return -1;

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "base/error.h"
 #include "geometry/cone.h"
 #include "geometry/cube.h"
 #include "geometry/cylinder.h"
@@ -146,6 +147,11 @@ typedef struct Scene {
     NamedMaterial *named;   /* the keyword and MPL formats' named materials */
     size_t named_count;
     size_t named_capacity;
+    Error *warnings;        /* what the reader assumed of lines it read
+                               leniently (seed 001's program's ways), for
+                               the command to say; at most SCENE_WARNINGS_MAX */
+    size_t warning_count;
+    size_t warnings_dropped; /* warnings past SCENE_WARNINGS_MAX, counted */
     SceneMesh *meshes;      /* the mesh lines (course and keyword formats),
                                for --save and the files the scene reads */
     size_t mesh_count;
@@ -331,6 +337,13 @@ int scene_add_named(Scene *scene, NamedMaterial *m);
 /* Appends *mesh, taking ownership of its strings (freed on failure);
  * returns 0, or -1 when memory runs out. */
 int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
+
+enum { SCENE_WARNINGS_MAX = 100 }; /* warnings kept; the rest are counted */
+
+/* Keeps warning *w (a position and a message, as an error has) for the
+ * command to say, or counts it past SCENE_WARNINGS_MAX; returns 0, or -1
+ * when memory runs out. */
+int scene_add_warning(Scene *scene, const Error *w);
 
 /* Takes ownership of *tex as the scene's next texture; returns its index, or
  * -1 (tex released) when memory runs out. */

@@ -26,8 +26,13 @@ enum { MPL_DEFAULT_SAMPLES = 4 }; /* samples per pixel */
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative texture paths, into *scene, which this call initialises
  * with memory_limit (scene.h); returns 0, or -1 with *err filled and
- * *scene empty. */
-int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
+ * *scene empty. Lines seed 001's program read, though they break the
+ * format, are read as it read them, each with a warning in the scene's
+ * list (a number up to its first letter, words after a primitive's
+ * material and numbers after a light's ignored, an unknown material read
+ * as the first, a second material of a name ignored), unless strict:
+ * then they are errors. */
+int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit, int strict,
                    Scene *scene, Error *err);
 
 #endif

@@ -55,21 +55,21 @@ static int main_open_output(OutFile *out, const char *path, Error *err)
     return rc;
 }
 
-/* Prints err as "raytrace: FILE:LINE:COL: error: MESSAGE", then the line at
- * fault with a caret under the column; errors without a position print as
- * "raytrace: FILE: error: MESSAGE". */
-static void main_report(const Error *err)
+/* Prints err as "raytrace: FILE:LINE:COL: KIND: MESSAGE" (KIND: "error" or
+ * "warning"), then the line at fault with a caret under the column; errors
+ * without a position print as "raytrace: FILE: KIND: MESSAGE". */
+static void main_report(const Error *err, const char *kind)
 {
     /* Messages quote user bytes: shown safely, as the file and excerpt are. */
     char message[4 * ERROR_MESSAGE_MAX];
 
     error_escape(message, sizeof message, err->message, strlen(err->message), 0, NULL);
     if (err->line <= 0) {
-        fprintf(stderr, "raytrace: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
+        fprintf(stderr, "raytrace: %s%s%s: %s\n", err->file, err->file[0] ? ": " : "", kind,
                 message);
         return;
     }
-    fprintf(stderr, "raytrace: %s:%d:%d: error: %s\n", err->file, err->line, err->column,
+    fprintf(stderr, "raytrace: %s:%d:%d: %s: %s\n", err->file, err->line, err->column, kind,
             message);
     fprintf(stderr, "%5d | %s\n      | ", err->line, err->excerpt);
     /* Pad with the line's own tabs so the caret lines up; UTF-8 continuation
@@ -130,7 +130,13 @@ static int main_load(const Options *opts, Scene *scene)
     Error err;
 
     if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        scene, &err) == 0) {
+                        opts->strict, scene, &err) == 0) {
+        for (size_t i = 0; !opts->quiet && i < scene->warning_count; i++)
+            main_report(&scene->warnings[i], "warning");
+        if (!opts->quiet && scene->warnings_dropped > 0)
+            fprintf(stderr, "raytrace: %s: warning: %zu more lines read as seed 001's program "
+                            "read them (--strict refuses them)\n",
+                    file_display_name(opts->scene_path), scene->warnings_dropped);
         /* Textures read despite damage, as other readers read them. */
         for (size_t i = 0; !opts->quiet && i < scene->texture_count; i++)
             if (scene->textures[i].warning[0])
@@ -138,7 +144,7 @@ static int main_load(const Options *opts, Scene *scene)
                         scene->textures[i].warning);
         return 0;
     }
-    main_report(&err);
+    main_report(&err, "error");
     return 1;
 }
 
@@ -213,7 +219,7 @@ static int main_save(const Options *opts)
     return 0;
 
 fail:
-    main_report(&err);
+    main_report(&err, "error");
     scene_free(&scene);
     return 1;
 }
@@ -503,7 +509,7 @@ fail_image_only:
     main_noise_free(&ropts);
     image_free(&img);
 fail_scene:
-    main_report(&err);
+    main_report(&err, "error");
     scene_free(&scene);
     return 1;
 }

@@ -66,6 +66,11 @@ const char *const *options_help(void)
         "                     gathered light, linear bytes)\n"
         "  --no-shadows       cast no shadow rays: every light reaches every point\n"
         "                     that faces it\n"
+        "  --strict           refuse the MPL lines seed 001's program read despite\n"
+        "                     the format (1.5abc, words after a primitive's\n"
+        "                     material, an unknown or repeated material, numbers\n"
+        "                     after a light's), which are otherwise read as it\n"
+        "                     read them, with a warning each\n"
         "  --cutoff L         leave out mirror, refracted and shadow rays that could\n"
         "                     add less than L levels (0 to 255, default 0.1) to a\n"
         "                     pixel; in pixels near a rounding boundary they are\n"
@@ -235,6 +240,7 @@ static const OptionSpec options_table[] = {
     {"--ascii", OPT(NULL, OPTION_FLAG, ascii), 0, 0, NULL, 0},
     {"--no-accel", OPT(NULL, OPTION_FLAG, no_accel), 0, 0, NULL, 0},
     {"--no-shadows", OPT(NULL, OPTION_FLAG, no_shadows), 0, 0, NULL, 0},
+    {"--strict", OPT(NULL, OPTION_FLAG, strict), 0, 0, NULL, 0},
     {"--model", OPT(NULL, OPTION_WORD, model), 0, 0, options_models, 0},
     {"--size", OPT(NULL, OPTION_TEXT, size), 0, 0, NULL, 0},
     {"--max-depth", OPT("-d", OPTION_INT, max_depth), 0, TRACE_MAX_DEPTH_LIMIT, NULL, 0},

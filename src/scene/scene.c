@@ -22,6 +22,7 @@ void scene_init(Scene *scene)
     scene->textures = NULL;
     scene->named = NULL;
     scene->meshes = NULL;
+    scene->warnings = NULL;
     scene->accel = NULL;
     scene->ao_samples = scene->gi_samples = -1;
     scene->filter_override = -1;
@@ -60,6 +61,7 @@ void scene_free(Scene *scene)
         free(scene->meshes[i].opened);
     }
     free(scene->meshes);
+    free(scene->warnings);
     free(scene->lights);
     free(scene->spheres);
     free(scene->planes);
@@ -96,6 +98,7 @@ size_t scene_memory(const Scene *scene)
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
     scene_sum(&m, scene->named_capacity * sizeof *scene->named);
     scene_sum(&m, scene->mesh_capacity * sizeof *scene->meshes);
+    scene_sum(&m, scene->warnings ? SCENE_WARNINGS_MAX * sizeof *scene->warnings : 0);
     for (size_t i = 0; i < scene->texture_count; i++)
         scene_sum(&m, texture_memory(&scene->textures[i]));
     if (scene->accel)
@@ -606,5 +609,20 @@ int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)
         return rc;
     }
     scene->meshes[scene->mesh_count++] = *mesh;
+    return 0;
+}
+
+int scene_add_warning(Scene *scene, const Error *w)
+{
+    if (scene->warning_count == SCENE_WARNINGS_MAX) {
+        scene->warnings_dropped++;
+        return 0;
+    }
+    if (scene->warning_count == 0) {
+        scene->warnings = malloc(SCENE_WARNINGS_MAX * sizeof *scene->warnings);
+        if (!scene->warnings)
+            return -1;
+    }
+    scene->warnings[scene->warning_count++] = *w;
     return 0;
 }

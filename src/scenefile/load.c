@@ -46,7 +46,7 @@ SceneFormat load_detect(const char *text, size_t len)
 }
 
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
-                    size_t memory_limit, Scene *scene, Error *err)
+                    size_t memory_limit, int strict, Scene *scene, Error *err)
 {
     int rc;
 
@@ -59,7 +59,7 @@ int load_scene_text(const char *name, const char *text, size_t len, SceneFormat 
     if (format == SCENE_KEYWORD)
         rc = keyword_parse_text(name, text, len, memory_limit, scene, err);
     else if (format == SCENE_MPL)
-        rc = mpl_parse_text(name, text, len, memory_limit, scene, err);
+        rc = mpl_parse_text(name, text, len, memory_limit, strict, scene, err);
     else
         rc = course_parse_text(name, text, len, memory_limit, scene, err);
     if (rc == 0)
@@ -67,8 +67,8 @@ int load_scene_text(const char *name, const char *text, size_t len, SceneFormat 
     return rc;
 }
 
-int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, Scene *scene,
-                    Error *err)
+int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, int strict,
+                    Scene *scene, Error *err)
 {
     char *text;
     size_t len;
@@ -77,7 +77,8 @@ int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, S
     scene_init(scene);
     if (file_read_all(path, &text, &len, err) != 0)
         return -1;
-    rc = load_scene_text(file_display_name(path), text, len, format, memory_limit, scene, err);
+    rc = load_scene_text(file_display_name(path), text, len, format, memory_limit, strict, scene,
+                         err);
     free(text);
     return rc;
 }

@@ -20,7 +20,9 @@
  */
 #include "scenefile/mpl.h"
 
+#include <ctype.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +47,8 @@ typedef struct {
     int model_line;
     int noise_line;
     Names names;         /* the materials by name */
+    int strict;          /* 1: lines seed 001's program read leniently are
+                            errors; 0: read as it did, with a warning */
 } Mpl;
 
 /* Records a fault at column of line. */
@@ -199,6 +203,71 @@ static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const ch
     return -1;
 }
 
+/* Keeps a warning at column of rec's line: a line seed 001's program read,
+ * read here as it read it; returns 0, or -1 with the fault recorded when
+ * memory runs out. */
+static int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fmt, ...)
+    ERROR_FORMAT(5, 6);
+static int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fmt, ...)
+{
+    char message[ERROR_MESSAGE_MAX];
+    Error w;
+    va_list ap;
+
+    va_start(ap, fmt);
+    vsnprintf(message, sizeof message, fmt, ap);
+    va_end(ap);
+    error_set_at(&w, M->lex.name, rec->line.number, column, rec->line.text, rec->line.len,
+                 "%s (as seed 001's program did; --strict refuses it)", message);
+    return scene_add_warning(scene, &w) == 0 ? 0 : mpl_fail_memory(M, rec, scene, -1);
+}
+
+/* Reads tokens first .. first + count - 1 of rec that are not numbers but
+ * start with one followed by a letter ("1.5abc") as seed 001's program
+ * did, up to the letter, with a warning each (not when strict); returns 0,
+ * or -1 when memory runs out. */
+static int mpl_number_prefixes(Mpl *M, Scene *scene, Record *rec, int first, int count)
+{
+    for (int k = first; !M->strict && k < first + count && k < rec->count && k < LEX_MAX_TOKENS;
+         k++) {
+        Token *t = &rec->tok[k];
+        double v;
+        size_t n = t->len;
+        char q[64];
+        if (number_parse(t->text, t->len, &v) != NUMBER_SYNTAX)
+            continue;
+        while (n > 0 && (number_parse(t->text, n, &v) != NUMBER_OK ||
+                         !isalpha((unsigned char)t->text[n])))
+            n--;
+        if (n == 0)
+            continue; /* no number there: its own error */
+        if (mpl_warn(M, scene, rec, t->column + (int)n, "read %s as %.*s, up to its first letter",
+                     lex_quote(q, sizeof q, t), (int)n, t->text) != 0)
+            return -1;
+        t->len = n;
+    }
+    return 0;
+}
+
+/* Leaves out, with a warning (not when strict), rec's tokens from keep on:
+ * what seed 001's program did not read ("2 words after the material's
+ * name": noun "word", after "after the material's name"); returns 0, or
+ * -1 when memory runs out. */
+static int mpl_ignore_rest(Mpl *M, Scene *scene, Record *rec, int keep, const char *noun,
+                           const char *after)
+{
+    int extra = rec->count - keep;
+
+    if (M->strict || extra <= 0 || keep >= LEX_MAX_TOKENS)
+        return 0;
+    if (mpl_warn(M, scene, rec, rec->tok[keep].column, "ignored %d %s%s %s", extra, noun,
+                 extra == 1 ? "" : "s", after) != 0)
+        return -1;
+    rec->count = keep;
+    rec->end_column = rec->tok[keep - 1].column + (int)rec->tok[keep - 1].len;
+    return 0;
+}
+
 /* Returns the path of texture token t, as texture_file_find() finds it
  * from the scene's folder in the folders seed 001's program looks in:
  * Textures beside the scene (or textures, the same on a system that
@@ -272,8 +341,9 @@ static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
 }
 
 /* material -> 'm' name kind r g b stripes index glossiness texture [filter] */
-static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
+static int mpl_material_record(Mpl *M, const Record *line, Scene *scene)
 {
+    Record copy = *line, *rec = &copy;
     const char *syntax = mpl_material.syntax;
     double v[6] = {0, 0, 0, 0, 0, 0};
     const Token *name, *kind, *tex;
@@ -288,8 +358,14 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
         return -1;
     name = &rec->tok[1];
     if (names_find(&M->names, scene, name) >= 0) {
+        int first = scene->named[names_find(&M->names, scene, name)].line;
+        if (!M->strict)
+            return mpl_warn(M, scene, rec, name->column,
+                            "the material %s is already defined, on line %d: kept that one, "
+                            "this line changes nothing",
+                            lex_quote(q, sizeof q, name), first);
         mpl_fail(M, &rec->line, name->column, "the material %s is already defined, on line %d",
-                 lex_quote(q, sizeof q, name), scene->named[names_find(&M->names, scene, name)].line);
+                 lex_quote(q, sizeof q, name), first);
         return -1;
     }
     if (mpl_need(M, rec, 2, "the material's kind", syntax) != 0)
@@ -304,6 +380,8 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
                  lex_quote(q, sizeof q, kind));
         return -1;
     }
+    if (mpl_number_prefixes(M, scene, rec, 3, 6) != 0)
+        return -1;
     for (int k = 0; k < 6; k++)
         if (mpl_need(M, rec, 3 + k, "a number for the material", syntax) != 0 ||
             lex_number(&M->lex, rec, 3 + k, &mpl_material, k, &v[k]) != 0)
@@ -366,9 +444,35 @@ static int mpl_material_record(Mpl *M, const Record *rec, Scene *scene)
                                                            : 0;
 }
 
-/* primitive -> 'p' shape number* material */
-static int mpl_primitive_record(Mpl *M, const Record *rec, Scene *scene)
+/* Reads the material name at token k of primitive rec as seed 001's
+ * program did (not when strict), each time with a warning: the words
+ * after it ignored; an unknown name read as the first material's (when
+ * there is one). Returns 0, or -1 when memory runs out. */
+static int mpl_lenient_material(Mpl *M, Scene *scene, Record *rec, int k)
 {
+    Token *name = &rec->tok[k];
+    double ignored;
+    char q[64];
+
+    if (M->strict || rec->count <= k || k >= LEX_MAX_TOKENS ||
+        number_parse(name->text, name->len, &ignored) != NUMBER_SYNTAX)
+        return 0; /* not a name where one goes: its own error */
+    if (mpl_ignore_rest(M, scene, rec, k + 1, "word", "after the material's name") != 0)
+        return -1;
+    if (names_find(&M->names, scene, name) >= 0 || scene->named_count == 0)
+        return 0;
+    if (mpl_warn(M, scene, rec, name->column, "unknown material %s: read as the first one, '%s'",
+                 lex_quote(q, sizeof q, name), scene->named[0].name) != 0)
+        return -1;
+    name->text = scene->named[0].name;
+    name->len = strlen(scene->named[0].name);
+    return 0;
+}
+
+/* primitive -> 'p' shape number* material */
+static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
+{
+    Record copy = *line, *rec = &copy;
     const MplShape *shape = NULL;
     RecordSpec spec;
     double v[SHAPES_NUMBERS_MAX];
@@ -396,6 +500,8 @@ static int mpl_primitive_record(Mpl *M, const Record *rec, Scene *scene)
         spec.kinds = shapes_kinds[shape->kind];
     }
     n = spec.count;
+    if (mpl_number_prefixes(M, scene, rec, 2, n) != 0 || mpl_lenient_material(M, scene, rec, 2 + n))
+        return -1;
     if (names_numbers_and_material(&M->lex, &M->names, rec, 2, &spec, scene, "an m line", v, &m) !=
         0)
         return -1;
@@ -420,11 +526,12 @@ static int mpl_primitive_record(Mpl *M, const Record *rec, Scene *scene)
 }
 
 /* light -> 'l' DirectionLight dx dy dz r g b i | 'l' PointLight x y z r g b i [range] */
-static int mpl_light_record(Mpl *M, const Record *rec, Scene *scene)
+static int mpl_light_record(Mpl *M, const Record *line, Scene *scene)
 {
+    Record copy = *line, *rec = &copy;
     double v[8] = {0};
     Light light;
-    int distant, rc;
+    int distant, rc, most;
     char q[64];
 
     if (mpl_need(M, rec, 1, "the light's kind", "DirectionLight or PointLight") != 0)
@@ -436,6 +543,18 @@ static int mpl_light_record(Mpl *M, const Record *rec, Scene *scene)
                  "unknown light %s (expected DirectionLight or PointLight)",
                  lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
+    }
+    most = 2 + (distant ? 7 : 8);
+    if (mpl_number_prefixes(M, scene, rec, 2, rec->count - 2) != 0)
+        return -1;
+    if (rec->count > most) {
+        int numbers = most;
+        while (numbers < rec->count && numbers < LEX_MAX_TOKENS &&
+               number_parse(rec->tok[numbers].text, rec->tok[numbers].len, v) == NUMBER_OK)
+            numbers++;
+        if (numbers == rec->count &&
+            mpl_ignore_rest(M, scene, rec, most, "number", "after the light's") != 0)
+            return -1;
     }
     if (lex_numbers(&M->lex, rec, 2, distant ? &mpl_direction : &mpl_point, v) < 0)
         return -1;
@@ -675,7 +794,7 @@ static int mpl_lines(Mpl *M, Scene *scene)
 }
 
 int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                   Scene *scene, Error *err)
+                   int strict, Scene *scene, Error *err)
 {
     Mpl M;
     int rc;
@@ -692,6 +811,7 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     lex_init(&M.lex, name, text, len, err);
     M.camera_line = M.background_line = M.ambient_line = M.samples_line = M.noise_line = 0;
     M.ao_line = M.gi_line = M.model_line = 0;
+    M.strict = strict;
     names_init(&M.names);
     rc = mpl_lines(&M, scene);
     names_free(&M.names);
