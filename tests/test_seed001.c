@@ -12,6 +12,8 @@
 #include "scenefile/mpl.h"
 #include "test.h"
 
+#define M_PI_VALUE 3.14159265358979323846
+
 #define PI 3.14159265358979323846
 
 /* Reads text as an MPL scene; returns 0 or -1 (a failed check). */
@@ -208,14 +210,40 @@ static void seed001_texture_coordinates_follow_its_program(void)
     seed_uv(&sc, SHAPE_CYLINDER, vec3(1, 2.25, 2), vec3(0, 0, -1), 0, 0.25, 0, __LINE__);
     seed_uv(&sc, SHAPE_CYLINDER, vec3(2, 1.5, 3), vec3(1, 0, 0), 0.25, 0.5, 2.5, __LINE__);
     seed_uv(&sc, SHAPE_CONE, vec3(-0.5, 1, 0), vec3(-1, 0, 0), 0.75, 0, 7.5, __LINE__);
-    /* Flat shapes: the fractions of (x, y) facing z, (x, z) facing y,
-     * (z, y) facing x; a square's stripes half / 10 as wide. */
+    /* Flat shapes, by its program: the fractions of (x, y) whichever way
+     * they face, a floor's v its own height's (0 at a whole height, read
+     * clamped: its one row); a square's stripes half / 10 as wide. */
     seed_uv(&sc, SHAPE_PLANE, vec3(2.25, -0.5, 7), vec3(0, 0, -1), 0.25, 0.5, 0.25, __LINE__);
+    sc.planes[0].normal = vec3(0, 1, 0);
+    sc.planes[0].point = vec3(0, 0, 7);
+    seed_uv(&sc, SHAPE_PLANE, vec3(1.5, -1e-17, -2.75), vec3(0, 1, 0), 0.5, 0, 0.5, __LINE__);
+    {
+        SurfacePoint sp = {vec3(1.5, 0, -2.75), vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 0, 0)};
+        double uv[2], st;
+        CHECK_INT(1, mapping_seed001(&sc, SHAPE_PLANE, 0, &sp, uv, &st));
+    }
+    sc.planes[0].normal = vec3(-1, 0, 0);
+    seed_uv(&sc, SHAPE_PLANE, vec3(3, 0.5, 1.25), vec3(-1, 0, 0), 0, 0.5, 0, __LINE__);
+    seed_uv(&sc, SHAPE_SQUARE, vec3(1.25, 0.5, 5), vec3(0, 0, -1), 0.25, 0.5, 0.5, __LINE__);
+    /* Sphere of radius 0.5 (its program's v: the height not divided by
+     * the radius, so only the middle band of the image). */
+    {
+        SurfacePoint sp = {vec3(0, 0.25, -sqrt(0.1875)), vec3(0, 0.5, -sqrt(0.75)),
+                           vec3(0, 0.5, -sqrt(0.75)), vec3(0, 0, 0)};
+        double uv[2], st;
+        CHECK_INT(0, mapping_seed001(&sc, SHAPE_SPHERE, 1, &sp, uv, &st));
+        CHECK_NEAR(1 - acos(0.25) / M_PI_VALUE, uv[1], 1e-12);
+        /* Under the physical model: the unit normal's, the whole image. */
+        sc.model = SCENE_MODEL_PHYSICAL;
+        mapping_seed001(&sc, SHAPE_SPHERE, 1, &sp, uv, &st);
+        CHECK_NEAR(1 - acos(0.5) / M_PI_VALUE, uv[1], 1e-12);
+    }
+    /* The physical model keeps our flat mapping: (x, z) on a floor, (z, y)
+     * on a wall facing x, both wrapped. */
     sc.planes[0].normal = vec3(0, 1, 0);
     seed_uv(&sc, SHAPE_PLANE, vec3(1.5, 0, -2.75), vec3(0, 1, 0), 0.5, 0.25, 0.5, __LINE__);
     sc.planes[0].normal = vec3(-1, 0, 0);
     seed_uv(&sc, SHAPE_PLANE, vec3(3, 0.5, 1.25), vec3(-1, 0, 0), 0.25, 0.5, 0.25, __LINE__);
-    seed_uv(&sc, SHAPE_SQUARE, vec3(1.25, 0.5, 5), vec3(0, 0, -1), 0.25, 0.5, 0.5, __LINE__);
     scene_free(&sc);
 }
 

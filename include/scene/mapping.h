@@ -20,22 +20,36 @@
  * conventions, of sp, a point of the shape of kind and index in scene (u
  * across the image, v up it, one image over [0, 1)), and in *stripe the coordinate its stripes alternate along: a stripe
  * of the colour where its fraction is below one half, a black one above.
- *   sphere    u = 1 - (atan2(z, x) + pi) / 2 pi, v = 1 - acos(y) / pi of the
- *             unit normal; stripes 10 r u (30 r u below a radius of 1)
+ * Under seed 001's model (scene.h) its program's rules hold whole; under
+ * the physical model two of them are ours, as marked.
+ *   sphere    u = 1 - (atan2(z, x) + pi) / 2 pi of the unit normal; v =
+ *             (asin(y) + pi / 2) / pi = 1 - acos(y) / pi of the height y
+ *             above the centre, not divided by the radius (a sphere of
+ *             radius 0.6 shows the middle band of its image; beyond a
+ *             height of 1, where the program's arcsine has no value, the
+ *             top or bottom row); physical model: y of the unit normal,
+ *             the whole image on any sphere; stripes 10 r u (30 r u below
+ *             a radius of 1)
  *   cube      each face the whole image: (z, y) on the x faces, (x, z) on
  *             the y faces, (x, y) on the z faces, each (c / half + 1) / 2
  *             from the centre; stripes 10 u
  *   cylinder, cone  u = 1/2 - atan2(x, z) / 2 pi around the axis, v the
  *             height above the centre (the circle) modulo 1; stripes 10 u
- *   plane, triangle, square  u, v the fractions of the two world
- *             coordinates along the surface: (x, y) when it faces z
- *             most, (x, z) when y, (z, y) when x (the program always took
- *             (x, y), which smears a texture on a floor into its bottom
- *             row); stripes u on planes and triangles, half / 10 u on a
+ *   plane, square  u, v the fractions of x and y (of the world's on a
+ *             plane, from the centre on a square), whatever way it faces:
+ *             a floor's texture streaks towards the back, as the
+ *             program drew it; physical model: the two coordinates
+ *             along the surface, (x, y) when it faces z most, (x, z) when
+ *             y, (z, y) when x; stripes u on planes, half / 10 u on a
  *             square of half-edge half
+ *   triangle  the two coordinates along the surface, as a plane's under
+ *             the physical model; stripes u
  * Coordinates are the scene file's (scene.h's length_exponent undone).
+ * Returns 1 when v is the same over the whole surface (a floor under its
+ * program's rules), to be read clamped (the one row its program read, not
+ * the seam where the image repeats); else 0.
  */
-void mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
-                     double uv[2], double *stripe);
+int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
+                    double uv[2], double *stripe);
 
 #endif

@@ -198,8 +198,8 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
         break;
     }
     }
-    if (seed)
-        mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
+    if (seed && mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe))
+        clamp_v = 1;
     /* A colour averaged over the footprint is read there alone. */
     averages = diff && material_averages(&sh.material);
     if (!averages)

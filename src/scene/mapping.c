@@ -33,6 +33,13 @@ static void mapping_flat(Vec3 n, Vec3 q, double uv[2])
     }
 }
 
+/* Says whether a flat shape of normal n is a floor (or a ceiling): its
+ * points all have one height. */
+static int mapping_floor(Vec3 n)
+{
+    return n.x == 0 && n.z == 0;
+}
+
 /* Returns the program's u around a vertical axis of the point q, taken
  * from a point of the axis: 1/2 - atan2(x, z) / 2 pi. */
 static double mapping_around(Vec3 q)
@@ -40,10 +47,12 @@ static double mapping_around(Vec3 q)
     return 0.5 - angle_atan2(q.x, q.z) / (2 * ANGLE_PI);
 }
 
-void mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
-                     double uv[2], double *stripe)
+int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
+                    double uv[2], double *stripe)
 {
     int k = -scene->length_exponent;
+    /* Its program's own rules under its model; ours under the physical. */
+    int program = scene->model == SCENE_MODEL_SEED001;
     Vec3 p = vec3_ldexp(sp->point, k);
     double scale = 10;
 
@@ -51,8 +60,12 @@ void mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Sur
     case SHAPE_SPHERE: {
         Vec3 n = sp->normal;
         double r = ldexp(scene->spheres[index].radius, k);
+        /* Its program: the height above the centre, not divided by the
+         * radius (beyond 1, where its arcsine has no value, the top or
+         * bottom row). */
+        double y = program ? p.y - ldexp(scene->spheres[index].centre.y, k) : n.y;
         uv[0] = 0.5 - angle_atan2(n.z, n.x) / (2 * ANGLE_PI);
-        uv[1] = 1 - angle_acos(n.y < -1 ? -1 : n.y > 1 ? 1 : n.y) / ANGLE_PI;
+        uv[1] = 1 - angle_acos(y < -1 ? -1 : y > 1 ? 1 : y) / ANGLE_PI;
         scale = r < 1 ? 30 * r : 10 * r;
         break;
     }
@@ -85,18 +98,31 @@ void mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Sur
     }
     case SHAPE_SQUARE: {
         const Square *s = &scene->squares[index];
-        mapping_flat(s->normal, vec3_sub(p, vec3_ldexp(s->centre, k)), uv);
+        Vec3 q = vec3_sub(p, vec3_ldexp(s->centre, k));
+        /* A floor's own height, not its hit points' rounded ones. */
+        if (program && mapping_floor(s->normal))
+            q.y = 0;
+        mapping_flat(program ? vec3(0, 0, 1) : s->normal, q, uv);
         scale = ldexp(s->half, k) / 10;
         break;
     }
-    case SHAPE_PLANE:
-        mapping_flat(scene->planes[index].normal, p, uv);
+    case SHAPE_PLANE: {
+        const Plane *pl = &scene->planes[index];
+        if (program && mapping_floor(pl->normal))
+            p.y = ldexp(pl->point.y, k);
+        mapping_flat(program ? vec3(0, 0, 1) : pl->normal, p, uv);
         scale = 1;
         break;
+    }
     default: /* SHAPE_TRIANGLE */
         mapping_flat(scene->triangles[index].normal, p, uv);
         scale = 1;
         break;
     }
     *stripe = uv[0] * scale;
+    /* Its program read a floor's one row of the image (the height's
+     * fraction, v = 0 at a whole height), not the seam between two rows. */
+    return program && (kind == SHAPE_PLANE || kind == SHAPE_SQUARE) &&
+           mapping_floor(kind == SHAPE_PLANE ? scene->planes[index].normal
+                                             : scene->squares[index].normal);
 }
