@@ -8,9 +8,9 @@
 #include "jpeg_tables.h"
 
 /* The inverse DCT: Loeffler, Ligtenberg and Moschytz's factorisation in
- * 13-bit fixed point, rows then columns scaled by 2 bits between passes,
- * as libjpeg's default ("islow") decoder computes it, so that its pixels
- * are ours. */
+ * 13-bit fixed point, columns then rows, scaled by 2 bits between the
+ * passes, as libjpeg-turbo's default ("islow") decoder computes it, so
+ * that its pixels are ours. */
 enum { JPEG_CONST_BITS = 13, JPEG_PASS1_BITS = 2 };
 #define JPEG_FIX_0_298631336 2446
 #define JPEG_FIX_0_390180644 3196
@@ -25,91 +25,117 @@ enum { JPEG_CONST_BITS = 13, JPEG_PASS1_BITS = 2 };
 #define JPEG_FIX_2_562915447 20995
 #define JPEG_FIX_3_072711026 25172
 
-/* Returns x / 2^n rounded to nearest (halves up). */
-static inline int32_t jpeg_descale(int64_t x, int n)
+/* Returns x wrapped to 16 bits, as a 16-bit lane holds it. */
+static inline int32_t jpeg_wrap16(int32_t x)
 {
-    return (int32_t)((x + ((int64_t)1 << (n - 1))) >> n);
+    return (int16_t)(uint16_t)(uint32_t)x;
 }
 
-/* One 8-point inverse DCT of in[0], in[stride], ... into eight values,
- * each descaled by shift bits. */
+/* Returns x saturated to 16 bits, as a lane is packed. */
+static inline int32_t jpeg_sat16(int32_t x)
+{
+    return x < -32768 ? -32768 : x > 32767 ? 32767 : x;
+}
+
+/* Returns a + b and a * b wrapped to 32 bits, as 32-bit lanes add. */
+static inline int32_t jpeg_add32(int32_t a, int32_t b)
+{
+    return (int32_t)((uint32_t)a + (uint32_t)b);
+}
+
+static inline int32_t jpeg_mul32(int32_t a, int32_t b)
+{
+    return (int32_t)((uint32_t)a * (uint32_t)b);
+}
+
+/* Returns sat16(x / 2^n), rounded to nearest (halves up) in 32-bit lanes. */
+static inline int32_t jpeg_descale(int32_t x, int n)
+{
+    return jpeg_sat16(jpeg_add32(x, (int32_t)1 << (n - 1)) >> n);
+}
+
+/* One 8-point inverse DCT of the 16-bit values in[0], in[stride], ...
+ * into eight, each descaled by shift bits and saturated to 16 bits, in
+ * the arithmetic of libjpeg-turbo's SIMD code: sums of two inputs in 16
+ * bits (wrapping), products and their sums in 32 (wrapping). On valid
+ * data nothing wraps or saturates, and the values are its C code's. */
 static void jpeg_idct8(const int32_t *in, int stride, int32_t out[8], int shift)
 {
-    int64_t z1, z2, z3, z4, z5, t0, t1, t2, t3, t10, t11, t12, t13;
+    int32_t i0 = in[0], i1 = in[stride], i2 = in[2 * stride], i3 = in[3 * stride];
+    int32_t i4 = in[4 * stride], i5 = in[5 * stride], i6 = in[6 * stride], i7 = in[7 * stride];
+    int32_t t0, t1, t2, t3, t10, t11, t12, t13, z3, z4, z3m, z4m;
 
     /* Even part. */
-    z2 = in[2 * stride];
-    z3 = in[6 * stride];
-    z1 = (z2 + z3) * JPEG_FIX_0_541196100;
-    t2 = z1 - z3 * JPEG_FIX_1_847759065;
-    t3 = z1 + z2 * JPEG_FIX_0_765366865;
-    z2 = in[0];
-    z3 = in[4 * stride];
-    t0 = (z2 + z3) * ((int64_t)1 << JPEG_CONST_BITS);
-    t1 = (z2 - z3) * ((int64_t)1 << JPEG_CONST_BITS);
-    t10 = t0 + t3;
-    t13 = t0 - t3;
-    t11 = t1 + t2;
-    t12 = t1 - t2;
+    t3 = jpeg_add32(jpeg_mul32(i2, JPEG_FIX_0_541196100 + JPEG_FIX_0_765366865),
+                    jpeg_mul32(i6, JPEG_FIX_0_541196100));
+    t2 = jpeg_add32(jpeg_mul32(i2, JPEG_FIX_0_541196100),
+                    jpeg_mul32(i6, JPEG_FIX_0_541196100 - JPEG_FIX_1_847759065));
+    t0 = jpeg_mul32(jpeg_wrap16(i0 + i4), 1 << JPEG_CONST_BITS);
+    t1 = jpeg_mul32(jpeg_wrap16(i0 - i4), 1 << JPEG_CONST_BITS);
+    t10 = jpeg_add32(t0, t3);
+    t13 = jpeg_add32(t0, -t3);
+    t11 = jpeg_add32(t1, t2);
+    t12 = jpeg_add32(t1, -t2);
     /* Odd part. */
-    t0 = in[7 * stride];
-    t1 = in[5 * stride];
-    t2 = in[3 * stride];
-    t3 = in[1 * stride];
-    z1 = t0 + t3;
-    z2 = t1 + t2;
-    z3 = t0 + t2;
-    z4 = t1 + t3;
-    z5 = (z3 + z4) * JPEG_FIX_1_175875602;
-    t0 *= JPEG_FIX_0_298631336;
-    t1 *= JPEG_FIX_2_053119869;
-    t2 *= JPEG_FIX_3_072711026;
-    t3 *= JPEG_FIX_1_501321110;
-    z1 *= -JPEG_FIX_0_899976223;
-    z2 *= -JPEG_FIX_2_562915447;
-    z3 = z3 * -JPEG_FIX_1_961570560 + z5;
-    z4 = z4 * -JPEG_FIX_0_390180644 + z5;
-    t0 += z1 + z3;
-    t1 += z2 + z4;
-    t2 += z2 + z3;
-    t3 += z1 + z4;
-    out[0] = jpeg_descale(t10 + t3, shift);
-    out[7] = jpeg_descale(t10 - t3, shift);
-    out[1] = jpeg_descale(t11 + t2, shift);
-    out[6] = jpeg_descale(t11 - t2, shift);
-    out[2] = jpeg_descale(t12 + t1, shift);
-    out[5] = jpeg_descale(t12 - t1, shift);
-    out[3] = jpeg_descale(t13 + t0, shift);
-    out[4] = jpeg_descale(t13 - t0, shift);
+    z3 = jpeg_wrap16(i7 + i3);
+    z4 = jpeg_wrap16(i5 + i1);
+    z3m = jpeg_add32(jpeg_mul32(z3, JPEG_FIX_1_175875602 - JPEG_FIX_1_961570560),
+                     jpeg_mul32(z4, JPEG_FIX_1_175875602));
+    z4m = jpeg_add32(jpeg_mul32(z3, JPEG_FIX_1_175875602),
+                     jpeg_mul32(z4, JPEG_FIX_1_175875602 - JPEG_FIX_0_390180644));
+    t0 = jpeg_add32(jpeg_add32(jpeg_mul32(i7, JPEG_FIX_0_298631336 - JPEG_FIX_0_899976223),
+                               jpeg_mul32(i1, -JPEG_FIX_0_899976223)),
+                    z3m);
+    t1 = jpeg_add32(jpeg_add32(jpeg_mul32(i5, JPEG_FIX_2_053119869 - JPEG_FIX_2_562915447),
+                               jpeg_mul32(i3, -JPEG_FIX_2_562915447)),
+                    z4m);
+    t3 = jpeg_add32(jpeg_add32(jpeg_mul32(i7, -JPEG_FIX_0_899976223),
+                               jpeg_mul32(i1, JPEG_FIX_1_501321110 - JPEG_FIX_0_899976223)),
+                    z4m);
+    t2 = jpeg_add32(jpeg_add32(jpeg_mul32(i5, -JPEG_FIX_2_562915447),
+                               jpeg_mul32(i3, JPEG_FIX_3_072711026 - JPEG_FIX_2_562915447)),
+                    z3m);
+    out[0] = jpeg_descale(jpeg_add32(t10, t3), shift);
+    out[7] = jpeg_descale(jpeg_add32(t10, -t3), shift);
+    out[1] = jpeg_descale(jpeg_add32(t11, t2), shift);
+    out[6] = jpeg_descale(jpeg_add32(t11, -t2), shift);
+    out[2] = jpeg_descale(jpeg_add32(t12, t1), shift);
+    out[5] = jpeg_descale(jpeg_add32(t12, -t1), shift);
+    out[3] = jpeg_descale(jpeg_add32(t13, t0), shift);
+    out[4] = jpeg_descale(jpeg_add32(t13, -t0), shift);
 }
 
-/* Returns the sample of the IDCT's output x (centred on 0) as libjpeg's
- * range-limit table gives it: x + 128 within [-128, 127], 255 above and 0
- * below, the table indexed by x's 10 low bits, so that values of damaged
- * data beyond 511 in size wrap around as libjpeg's do. */
+/* Returns the sample of the IDCT's 16-bit output x (centred on 0): x + 128
+ * within [-128, 127], 255 above and 0 below, as libjpeg-turbo's SIMD code
+ * (the one djpeg runs on x86 and ARM) saturates it. (Its C code, run
+ * where there is no SIMD, indexes a table by x's 10 low bits, so that
+ * damaged data beyond 511 wraps around instead.) */
 static inline uint8_t jpeg_sample(int32_t x)
 {
-    uint32_t i = (uint32_t)x & 1023;
-
-    return (uint8_t)(i < 128 ? i + 128 : i < 512 ? 255 : i < 896 ? 0 : i - 896);
+    return (uint8_t)(x < -128 ? 0 : x > 127 ? 255 : x + 128);
 }
 
 /* Dequantises block blk with quant and writes its 8 x 8 samples at out
- * (rows stride apart). */
+ * (rows stride apart), as libjpeg-turbo's SIMD "islow" code does (the
+ * same pixels as its C code on every valid file, djpeg's own on damaged
+ * ones): coefficients dequantised to their low 16 bits; a block whose
+ * rows 1 to 7 are all zero takes its first pass as its first row shifted
+ * in 16 bits; each pass's outputs saturated to 16 bits, the samples to
+ * bytes. */
 static void jpeg_idct(const int16_t *blk, const uint16_t *quant, uint8_t *out, size_t stride)
 {
     int32_t in[64], ws[64], col[8], row[8];
+    int flat = 1;
 
     for (int k = 0; k < 64; k++)
-        in[k] = (int32_t)blk[k] * quant[k];
+        in[k] = jpeg_wrap16(jpeg_mul32(blk[k], quant[k]));
+    for (int k = 8; k < 64 && flat; k++)
+        flat = in[k] == 0;
     /* Columns, kept 2 bits above the samples' scale. */
     for (int c = 0; c < 8; c++) {
-        int zero = 1;
-        for (int r = 1; r < 8 && zero; r++)
-            zero = in[8 * r + c] == 0;
-        if (zero) {
+        if (flat) {
             for (int r = 0; r < 8; r++)
-                ws[8 * r + c] = in[c] * (1 << JPEG_PASS1_BITS);
+                ws[8 * r + c] = jpeg_wrap16(in[c] * (1 << JPEG_PASS1_BITS));
             continue;
         }
         jpeg_idct8(in + c, 8, col, JPEG_CONST_BITS - JPEG_PASS1_BITS);
@@ -119,14 +145,6 @@ static void jpeg_idct(const int16_t *blk, const uint16_t *quant, uint8_t *out, s
     /* Rows, to samples. */
     for (int r = 0; r < 8; r++) {
         uint8_t *o = out + (size_t)r * stride;
-        int zero = 1;
-        for (int c = 1; c < 8 && zero; c++)
-            zero = ws[8 * r + c] == 0;
-        if (zero) {
-            uint8_t v = jpeg_sample(jpeg_descale(ws[8 * r], JPEG_PASS1_BITS + 3));
-            memset(o, v, 8);
-            continue;
-        }
         jpeg_idct8(ws + 8 * r, 1, row, JPEG_CONST_BITS + JPEG_PASS1_BITS + 3);
         for (int c = 0; c < 8; c++)
             o[c] = jpeg_sample(row[c]);
