@@ -125,8 +125,9 @@ fi
 # corrupt IN OUT KIND: OUT is IN damaged at fixed places of its data:
 # bytes changed, bytes cut out, two bytes deleted (no marker to resync
 # on: the blocks after are decoded from shifted bits, so that values out
-# of every valid range reach the inverse DCT), junk between segments, no
-# end marker, or cut short.
+# of every valid range reach the inverse DCT), fill bytes before a marker,
+# a frame 256 rows taller than its data, junk between segments, no end
+# marker, or cut short.
 corrupt() {
     size=$(wc -c <"$1")
     sos=$(od -An -v -tx1 -w1 "$1" | awk '/ff/ { f = NR } /da/ && f == NR - 1 { print NR; exit }')
@@ -139,6 +140,11 @@ corrupt() {
         done ;;
     cut) { head -c $((sos + (size - sos) / 2)) "$1"; tail -c +$((sos + (size - sos) / 2 + 40)) "$1"; } >"$2" ;;
     deleted) { head -c $((sos + (size - sos) / 3)) "$1"; tail -c +$((sos + (size - sos) / 3 + 3)) "$1"; } >"$2" ;;
+    fill) { head -c $((sos - 2)) "$1"; printf '\377\377\377'; tail -c +$((sos - 1)) "$1"; } >"$2" ;;
+    taller) # the frame's height 256 rows more: the data ends before the picture
+        sof=$(od -An -v -tx1 -w1 "$1" | awk '/ff/ { f = NR } /c[02]/ && f == NR - 1 { print NR; exit }')
+        high=$(od -An -v -tu1 -j $((sof + 3)) -N 1 "$1" | tr -d ' ')
+        printf "\\$(printf '%03o' $((high + 1)))" | dd of="$2" bs=1 seek=$((sof + 3)) conv=notrunc 2>/dev/null ;;
     junk) { head -c 20 "$1"; printf 'junk'; tail -c +21 "$1"; } >"$2" ;;
     noeoi) head -c $((size - 2)) "$1" >"$2" ;;
     short) head -c $((sos + (size - sos) * 2 / 3)) "$1" >"$2" ;;
@@ -154,11 +160,9 @@ if have cjpeg && have djpeg; then
         full || [ "$opts" = "-restart 1" ] || [ "$opts" = "-restart 1 -progressive" ] || continue
         # shellcheck disable=SC2086
         cjpeg -quality 85 $opts -outfile "$T/good.jpg" "$T/render.ppm"
-        for kind in changed cut deleted junk noeoi short; do
-            # A progressive file cut short: libjpeg smooths the blocks
-            # whose coefficients never came (its block smoothing); we
-            # leave them as they are (docs/scene-format.md).
-            case "$opts:$kind" in *progressive:short) continue ;; esac
+        for kind in changed cut deleted fill taller junk noeoi short; do
+            # (A progressive file cut short: djpeg smooths the blocks whose
+            # coefficients never came, and so do we.)
             corrupt "$T/good.jpg" "$T/bad.jpg" $kind
             djpeg -rgb -outfile "$T/bad-d.ppm" "$T/bad.jpg" 2>"$T/djpeg-err"
             "$DIFF" "$T/bad-d.ppm" "$T/bad.jpg" >"$T/out" 2>"$T/err" &&

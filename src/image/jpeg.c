@@ -113,6 +113,7 @@ int jpeg_parse(const char *name, const unsigned char *data, size_t len, size_t m
             error_set(err, name, "component %d of the frame is in no scan", J->comp[i].id);
             goto done;
         }
+    jpeg_smooth_decide(J);
     for (int i = 0; i < J->ncomp; i++)
         if (jpeg_component_samples(J, &J->comp[i]) != 0)
             goto done;

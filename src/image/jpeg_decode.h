@@ -46,6 +46,11 @@ typedef struct {
     int dc, ac;             /* the current scan's tables */
     int pred;               /* DC predictor */
     int seen;               /* in some scan */
+    int bits[10];           /* progressive: the successive approximation
+                               (Al) of coefficients 0..9 in zigzag order
+                               after the last scan that sent them, -1 for
+                               none yet (libjpeg's coef_bits) */
+    int prev_bits[10];      /* the same before the component's last scan */
     unsigned char *plane;   /* samples, width x height, after the IDCT */
 } JpegComponent;
 
@@ -75,6 +80,10 @@ typedef struct {
     int next_restart;       /* the RSTn marker expected next, 0..7 */
     int insufficient;       /* the data ran out in this restart interval:
                                its other MCUs are left as they are */
+    int scans;              /* progressive: scans begun so far */
+    int last_good;          /* the last MCU row (iMCU row) begun with data */
+    int smooth;             /* 1: blocks missing coefficients are smoothed
+                               (jpeg_smooth.c) */
     /* Damage passed over, as libjpeg passes over it. */
     int warnings;
     char warning[160];      /* the first, "at byte N: ..." */
@@ -124,6 +133,23 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s);
 /* Turns component c's coefficients into its plane of samples; returns 0
  * or -1 when memory runs out (jpeg_idct.c). */
 int jpeg_component_samples(Jpeg *J, JpegComponent *c);
+
+/* Records, for block smoothing, that scan s (progressive) begins: its
+ * components' coefficients Ss..Se are known from now on to Al bits. */
+void jpeg_smooth_scan(Jpeg *J, const JpegScan *s);
+
+/* Sets J->smooth when, all scans read, libjpeg would smooth this
+ * progressive file's blocks: some of the first nine AC coefficients of a
+ * component are not known to their last bit (scans missing, or cut
+ * short), every component's DC is known in part, and their quantisation
+ * tables have no zero among the first ten. */
+void jpeg_smooth_decide(Jpeg *J);
+
+/* Writes into ws block (bx, by) of component c, its coefficients that are
+ * still zero and not known to be estimated from the DC values of the 5 x 5
+ * blocks around it, as libjpeg-turbo's block smoothing estimates them
+ * (its DC too, where no AC coefficient has come at all). */
+void jpeg_smooth_block(const Jpeg *J, const JpegComponent *c, int bx, int by, int16_t ws[64]);
 
 /* Writes the frame's pixels as 8-bit RGB into rgb (width x height x 3),
  * upsampling and converting the components; returns 0 or -1

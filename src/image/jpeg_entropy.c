@@ -340,6 +340,8 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s)
         /* The data ran out: the interval's other MCUs stay as they are. */
         if (jpeg_ran_out(J))
             continue;
+        /* The last MCU row begun with data, for block smoothing. */
+        J->last_good = s->n == 1 ? my / s->c[0]->v : my;
         if (s->n == 1) {
             if (jpeg_decode_block(J, s, s->c[0], mx, my) != 0)
                 return -1;

@@ -163,9 +163,16 @@ int jpeg_component_samples(Jpeg *J, JpegComponent *c)
         return -1;
     }
     for (int by = 0; by < c->bh; by++)
-        for (int bx = 0; bx < c->bw; bx++)
-            jpeg_idct(c->coef + 64 * ((size_t)by * (size_t)c->bw + (size_t)bx), c->quant,
-                      full + (size_t)by * 8 * pw + (size_t)bx * 8, pw);
+        for (int bx = 0; bx < c->bw; bx++) {
+            const int16_t *blk = c->coef + 64 * ((size_t)by * (size_t)c->bw + (size_t)bx);
+            int16_t smoothed[64];
+            /* Blocks of the picture whose coefficients did not all come. */
+            if (J->smooth && bx < (c->width + 7) / 8 && by < (c->height + 7) / 8) {
+                jpeg_smooth_block(J, c, bx, by, smoothed);
+                blk = smoothed;
+            }
+            jpeg_idct(blk, c->quant, full + (size_t)by * 8 * pw + (size_t)bx * 8, pw);
+        }
     free(c->coef);
     c->coef = NULL;
     /* Keep the component's own samples, rows of its width. */

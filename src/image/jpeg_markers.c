@@ -148,6 +148,8 @@ static int jpeg_sof(Jpeg *J, int marker, int n)
                 return jpeg_fail(J, "two components have one identifier%s", NULL);
         J->hmax = c->h > J->hmax ? c->h : J->hmax;
         J->vmax = c->v > J->vmax ? c->v : J->vmax;
+        for (int k = 0; k < 10; k++)
+            c->bits[k] = c->prev_bits[k] = -1;
     }
     J->mcux = (J->width + 8 * J->hmax - 1) / (8 * J->hmax);
     J->mcuy = (J->height + 8 * J->vmax - 1) / (8 * J->vmax);
@@ -300,6 +302,8 @@ static int jpeg_sos(Jpeg *J, int n)
     if (!J->comp[0].coef && jpeg_allocate(J) != 0)
         return -1;
     J->pos += (size_t)n;
+    if (J->progressive)
+        jpeg_smooth_scan(J, &s);
     return jpeg_scan_data(J, &s);
 }
 
