@@ -18,7 +18,7 @@ void interrupt_catch(const char *message);
 
 /* Holds interrupts back until interrupt_release(), so that none strikes
  * between a temporary file's creation and interrupt_watch(); calls do not
- * nest. */
+ * nest, and come after interrupt_catch(). */
 void interrupt_hold(void);
 void interrupt_release(void);
 

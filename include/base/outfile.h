@@ -16,7 +16,7 @@
  * standard output, written in binary mode, and an existing file that is
  * not a regular file (a device such as /dev/null or NUL, a FIFO) is
  * written in place, since it cannot be replaced. outfile_posix.c and
- * outfile_win32.c hold the two ways.
+ * outfile_win32.c hold the two ways, outfile_shared.c what they share.
  */
 #ifndef RAYTRACE_OUTFILE_H
 #define RAYTRACE_OUTFILE_H

@@ -12,7 +12,7 @@
 #define OUTFILE_LINUX 0
 #endif
 
-#include "base/outfile.h"
+#include "outfile_sys.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -137,25 +137,9 @@ static int outfile_unnamed(const char *dir, mode_t mode)
 #endif
 }
 
-/* Removes out's named temporary file, if any; when that fails too, adds to
- * err's message (when err is not NULL) the file's name and why, so that
- * the user can delete it. Returns 0, or -1 when the file stays. */
-static int outfile_remove_temp(OutFile *out, Error *err)
+int outfile_delete(const char *path)
 {
-    int rc = 0;
-
-    if (out->temp[0] && unlink(out->temp) != 0 && errno != ENOENT) {
-        int saved = errno;
-        rc = -1;
-        if (err) {
-            size_t n = strlen(err->message);
-            snprintf(err->message + n, sizeof err->message - n,
-                     "; and the temporary file '%s' could not be removed (%s): delete it",
-                     out->temp, strerror(saved));
-        }
-    }
-    out->temp[0] = '\0';
-    return rc;
+    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
 }
 
 int outfile_open(OutFile *out, const char *path, Error *err)
@@ -348,21 +332,8 @@ int outfile_commit(OutFile *out, Error *err)
     /* Make the new name durable too. */
     if (!failed && (out->temp[0] || out->unnamed))
         outfile_sync_dir(out->dir);
-    if (failed) {
-        error_set(err, out->is_stdout ? "<stdout>" : out->path, "cannot write the image: %s",
-                  strerror(saved ? saved : EIO));
-        outfile_remove_temp(out, err);
-        return -1;
-    }
+    if (failed)
+        return outfile_failed(out, saved, err);
     out->temp[0] = '\0';
     return 0;
-}
-
-int outfile_abort(OutFile *out, Error *err)
-{
-    /* An unnamed file vanishes with its descriptor. */
-    if (out->fp && !out->is_stdout)
-        fclose(out->fp);
-    out->fp = NULL;
-    return outfile_remove_temp(out, err);
 }

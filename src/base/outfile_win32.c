@@ -2,7 +2,7 @@
  * a temporary file beside the output, shared for deletion so that an
  * interrupt can remove it while it is open, flushed to the disk, then
  * moved over the output by MoveFileEx's replace. */
-#include "base/outfile.h"
+#include "outfile_sys.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -48,38 +48,15 @@ static void outfile_dir(const char *path, char *dir)
     dir[n] = '\0';
 }
 
-/* Sets *err to "MESSAGE: the system's reason" for a failed call on path,
- * from GetLastError(). */
-static void outfile_fail(Error *err, const char *path, const char *what)
+int outfile_delete(const char *path)
 {
-    wide_errno(GetLastError());
-    error_set(err, path, "%s: %s", what, strerror(errno));
-}
+    wchar_t *w = wide_from_utf8(path);
+    int rc;
 
-/* Removes out's temporary file, if any; when that fails too, adds its name
- * and why to err's message (err may be NULL). Returns 0, or -1 when the
- * file stays. */
-static int outfile_remove_temp(OutFile *out, Error *err)
-{
-    wchar_t *w;
-    int rc = 0;
-
-    if (!out->temp[0])
-        return 0;
-    w = wide_from_utf8(out->temp);
-    if (!w || (!DeleteFileW(w) && GetLastError() != ERROR_FILE_NOT_FOUND)) {
-        if (w)
-            wide_errno(GetLastError());
-        rc = -1;
-        if (err) {
-            size_t n = strlen(err->message);
-            snprintf(err->message + n, sizeof err->message - n,
-                     "; and the temporary file '%s' could not be removed (%s): delete it",
-                     out->temp, strerror(errno));
-        }
-    }
+    if (!w)
+        return errno;
+    rc = DeleteFileW(w) || GetLastError() == ERROR_FILE_NOT_FOUND ? 0 : (wide_errno(GetLastError()), errno);
     free(w);
-    out->temp[0] = '\0';
     return rc;
 }
 
@@ -260,24 +237,12 @@ int outfile_commit(OutFile *out, Error *err)
     }
     out->fp = NULL;
     if (!failed && out->temp[0] && outfile_replace(out) != 0) {
-        outfile_fail(err, out->path, "cannot write the image");
-        outfile_remove_temp(out, err);
-        return -1;
+        wide_errno(GetLastError());
+        failed = 1;
+        saved = errno;
     }
-    if (failed) {
-        error_set(err, out->is_stdout ? "<stdout>" : out->path, "cannot write the image: %s",
-                  strerror(saved ? saved : EIO));
-        outfile_remove_temp(out, err);
-        return -1;
-    }
+    if (failed)
+        return outfile_failed(out, saved, err);
     out->temp[0] = '\0';
     return 0;
-}
-
-int outfile_abort(OutFile *out, Error *err)
-{
-    if (out->fp && !out->is_stdout)
-        fclose(out->fp);
-    out->fp = NULL;
-    return outfile_remove_temp(out, err);
 }

@@ -100,9 +100,8 @@ void jpeg_smooth_block(const Jpeg *J, const JpegComponent *c, int bx, int by, in
         ws[k] = blk[k];
     /* The coefficients' states: after the last scan, or before it for the
      * rows that scan did not reach; none before the first. */
-    for (int k = 0; k < 10; k++)
-        latched[k] = k > 0 && bits == c->prev_bits && J->scans <= 1 ? -1 : bits[k];
-    latched[0] = c->bits[0];
+    for (int k = 1; k < 10; k++)
+        latched[k] = bits == c->prev_bits && J->scans <= 1 ? -1 : bits[k];
     for (int k = 1; k < 10; k++)
         change_dc &= latched[k] == -1;
     /* The rows of the 5 x 5 neighbourhood, repeated at the edges. */
