@@ -245,8 +245,8 @@ test-hostile: raytrace
 	$(SUITE_ENV) sh tests/hostile.sh ./raytrace
 test-install: raytrace raytrace-diff raytrace-merge
 	$(SUITE_ENV) sh tests/install.sh
-test-layers:
-	$(SUITE_ENV) sh tests/layers.sh
+test-layers: raytrace raytrace-diff raytrace-merge
+	$(SUITE_ENV) BUILD=$(BUILD) sh tests/layers.sh
 test-report:
 	$(SUITE_ENV) sh tests/report.sh
 test-jpeg: raytrace raytrace-diff

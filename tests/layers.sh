@@ -6,10 +6,14 @@
 #     first, in tests/lib.sh); every folder is one of them.
 #  2. No modules include each other in a circle (a module is a .c file and
 #     its header, src/F/NAME.c and include/F/NAME.h or src/F/NAME.h).
-#  3. The check itself fails on a tree with a backward include or a circle
-#     planted in a copy of this one.
+#  3. No source files call each other in a circle: from the object files
+#     of src/ (in $BUILD, default build), file A calls file B when A uses
+#     a function or object that B defines.
+#  4. The checks themselves fail on a tree with a backward include or a
+#     circle planted in a copy of this one, and on two objects that call
+#     each other.
 #
-# Usage: sh tests/layers.sh   (from the repository root)
+# Usage: sh tests/layers.sh   (from the repository root, after make)
 
 SUITE=layers
 . "$(dirname "$0")/check.sh"
@@ -34,6 +38,16 @@ check() {
     tsort "$T/edges" >/dev/null 2>"$T/tsort" || sed 's/^tsort: //' "$T/tsort"
 }
 
+# call_circles OBJECT...: prints the circles of calls between the object
+# files (A calls B when A uses a symbol B defines); nothing when none.
+call_circles() {
+    for o; do nm -g --defined-only "$o" | awk -v f="$o" 'NF == 3 { print $3, f }'; done |
+        sort >"$T/defined"
+    for o; do nm -u "$o" | awk -v f="$o" '{ print $NF, f }'; done | sort >"$T/used"
+    join "$T/used" "$T/defined" | awk '$2 != $3 { print $2, $3 }' | sort -u >"$T/calls"
+    tsort "$T/calls" >/dev/null 2>"$T/tsort" || sed 's/^tsort: //' "$T/tsort"
+}
+
 breach=$(check .)
 [ -z "$breach" ] && pass || fail "the layering does not hold" "$breach"
 
@@ -48,5 +62,18 @@ rm -rf "$T/tree" && mkdir -p "$T/tree" && cp -R src include "$T/tree/"
 printf '#include "geometry/plane.h"\n' >>"$T/tree/include/geometry/ray.h"
 printf '#include "geometry/ray.h"\n' >>"$T/tree/src/geometry/plane.c"
 check "$T/tree" | grep -q 'loop' && pass || fail "a circle of modules goes unseen"
+
+objects=$(for d in src/*/; do d=${d%/}; ls "${BUILD:-build}/${d#src/}"/*.o 2>/dev/null; done)
+if [ -z "$objects" ]; then
+    fail "no object files in ${BUILD:-build} (run make first)"
+else
+    # shellcheck disable=SC2086 # one word per file
+    circles=$(call_circles $objects)
+    [ -z "$circles" ] && pass || fail "source files call each other in a circle" "$circles"
+fi
+printf 'int b(void);\nint a(int n) { return n ? b() : 0; }\n' >"$T/a.c"
+printf 'int a(int);\nint b(void) { return a(0); }\n' >"$T/b.c"
+${CC:-cc} -c "$T/a.c" -o "$T/a.o" && ${CC:-cc} -c "$T/b.c" -o "$T/b.o" &&
+    call_circles "$T/a.o" "$T/b.o" | grep -q 'loop' && pass || fail "a circle of calls goes unseen"
 
 finish

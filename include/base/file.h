@@ -28,6 +28,10 @@ const char *file_display_name(const char *path);
  * it cannot. */
 FILE *file_open(const char *path, const char *mode);
 
+/* Deletes file path; returns 0 when it is gone (or never was), else the
+ * errno value that says why it stays. */
+int file_delete(const char *path);
+
 /* Says whether paths a and b name the same existing file (through links,
  * or under two names). */
 int file_same(const char *a, const char *b);

@@ -3,12 +3,18 @@
 
 #include "base/file.h"
 
+#include <errno.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 FILE *file_open(const char *path, const char *mode)
 {
     return fopen(path, mode);
+}
+
+int file_delete(const char *path)
+{
+    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
 }
 
 int file_same(const char *a, const char *b)

@@ -49,6 +49,18 @@ static int file_info(const char *path, BY_HANDLE_FILE_INFORMATION *info)
 }
 
 /* A volume's serial number and the file's index on it name one file. */
+int file_delete(const char *path)
+{
+    wchar_t *w = wide_from_utf8(path);
+    int rc;
+
+    if (!w)
+        return errno;
+    rc = DeleteFileW(w) || GetLastError() == ERROR_FILE_NOT_FOUND ? 0 : (wide_errno(GetLastError()), errno);
+    free(w);
+    return rc;
+}
+
 int file_same(const char *a, const char *b)
 {
     BY_HANDLE_FILE_INFORMATION ia, ib;

@@ -137,11 +137,6 @@ static int outfile_unnamed(const char *dir, mode_t mode)
 #endif
 }
 
-int outfile_delete(const char *path)
-{
-    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
-}
-
 int outfile_open(OutFile *out, const char *path, Error *err)
 {
     char dir[OUTFILE_PATH_MAX];

@@ -7,9 +7,11 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/file.h"
+
 int outfile_remove_temp(OutFile *out, Error *err)
 {
-    int saved = out->temp[0] ? outfile_delete(out->temp) : 0;
+    int saved = out->temp[0] ? file_delete(out->temp) : 0;
 
     if (saved != 0 && err) {
         size_t n = strlen(err->message);

@@ -1,15 +1,12 @@
 /*
- * outfile_sys.h: what outfile_shared.c, the platform-neutral part of outfile.h,
- * asks of outfile_posix.c and outfile_win32.c, and what it gives them.
+ * outfile_sys.h: what outfile_shared.c, the platform-neutral part of
+ * outfile.h, gives outfile_posix.c and outfile_win32.c (it calls only
+ * down, to file.h).
  */
 #ifndef RAYTRACE_OUTFILE_SYS_H
 #define RAYTRACE_OUTFILE_SYS_H
 
 #include "base/outfile.h"
-
-/* Deletes file path; returns 0 when it is gone (or never was), else the
- * errno value that says why it stays. (Platform.) */
-int outfile_delete(const char *path);
 
 /* Removes out's temporary file, if any; when that fails too, adds to err's
  * message (err may be NULL) the file's name and why, so that the user can

@@ -48,18 +48,6 @@ static void outfile_dir(const char *path, char *dir)
     dir[n] = '\0';
 }
 
-int outfile_delete(const char *path)
-{
-    wchar_t *w = wide_from_utf8(path);
-    int rc;
-
-    if (!w)
-        return errno;
-    rc = DeleteFileW(w) || GetLastError() == ERROR_FILE_NOT_FOUND ? 0 : (wide_errno(GetLastError()), errno);
-    free(w);
-    return rc;
-}
-
 /* Creates out->temp, a new file in dir named after base; returns its
  * handle, or INVALID_HANDLE_VALUE with GetLastError() saying why. */
 static HANDLE outfile_create_temp(OutFile *out, const char *dir, const char *base)

@@ -2,7 +2,6 @@
  * jpeg_decode.h put together, and the picture turned as Exif says. */
 #include "image/jpeg.h"
 
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,35 +9,6 @@
 
 #include "base/file.h"
 #include "jpeg_decode.h"
-
-/* Records a fault "at byte OFFSET: MESSAGE"; returns -1. */
-int jpeg_fail(Jpeg *J, const char *fmt, const char *what)
-{
-    char msg[200];
-
-    snprintf(msg, sizeof msg, fmt, what ? what : "");
-    error_set(J->err, J->name, "at byte %zu: %s", J->pos, msg);
-    return -1;
-}
-
-/* Records that the file uses something this reader does not; returns -1. */
-int jpeg_unsupported(Jpeg *J, const char *what)
-{
-    error_set(J->err, J->name, "unsupported JPEG: %s", what);
-    return -1;
-}
-
-void jpeg_warn(Jpeg *J, const char *fmt, ...)
-{
-    if (J->warnings++ == 0) {
-        char msg[120];
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(msg, sizeof msg, fmt, ap);
-        va_end(ap);
-        snprintf(J->warning, sizeof J->warning, "at byte %zu: %s", J->pos, msg);
-    }
-}
 
 /* Turns img as Exif orientation o (2 to 8) says, so that it shows upright. */
 static int jpeg_orient(JpegImage *img, int o, Jpeg *J)
@@ -71,11 +41,6 @@ static int jpeg_orient(JpegImage *img, int o, Jpeg *J)
     img->width = ow;
     img->height = oh;
     return 0;
-}
-
-int jpeg_is(const unsigned char *data, size_t len)
-{
-    return len >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF;
 }
 
 void jpeg_free(JpegImage *img)

@@ -7,8 +7,11 @@
  *                   decoding, sequential and progressive blocks, restarts
  *   jpeg_idct.c     coefficients to pixels: the inverse DCT, upsampling
  *                   of subsampled components, YCbCr to RGB
- *   jpeg.c          the whole: jpeg_parse() drives them, turns the picture
- *                   as Exif says, and reports faults
+ *   jpeg_smooth.c   block smoothing of progressive files cut short
+ *   jpeg_stream.c   the bottom step: faults, warnings, markers found in
+ *                   the bytes (the others call down to it, none calls up)
+ *   jpeg.c          the whole: jpeg_parse() drives them and turns the
+ *                   picture as Exif says
  * (libjpeg-turbo cuts its decoder at the same seams: jdmarker, jdhuff and
  * jdphuff, jidctint, jdsample and jdcolor.)
  */
@@ -103,22 +106,22 @@ static inline int jpeg_u16(const uint8_t *p)
 }
 
 /* Records a fault "at byte OFFSET: MESSAGE" (fmt with one %s, what);
- * returns -1 (jpeg.c). */
+ * returns -1 (jpeg_stream.c). */
 int jpeg_fail(Jpeg *J, const char *fmt, const char *what);
 
 /* Records that the file uses something this reader does not; returns -1
- * (jpeg.c). */
+ * (jpeg_stream.c). */
 int jpeg_unsupported(Jpeg *J, const char *what);
 
 /* Notes damage passed over (printf's fmt), at J's byte: the first is kept
- * in J->warning, the others counted (jpeg.c). */
+ * in J->warning, the others counted (jpeg_stream.c). */
 void jpeg_warn(Jpeg *J, const char *fmt, ...);
 
 /* Moves J to the next marker at or after its position (0xFF, fill bytes
  * 0xFF, then a byte other than 0 and 0xFF), warning of the bytes it passes
  * over with the junk bytes before its position (libjpeg counts them
  * alike); returns the marker's code with J at its 0xFF, or -1 when the
- * data ends first (jpeg_markers.c). */
+ * data ends first (jpeg_stream.c). */
 int jpeg_find_marker(Jpeg *J, size_t junk);
 
 /* Reads the markers from SOI to EOI (or the data's end after a scan),

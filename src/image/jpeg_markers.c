@@ -307,40 +307,6 @@ static int jpeg_sos(Jpeg *J, int n)
     return jpeg_scan_data(J, &s);
 }
 
-int jpeg_find_marker(Jpeg *J, size_t junk)
-{
-    size_t start = J->pos;
-
-    for (;;) {
-        size_t at;
-        while (J->pos < J->len && J->data[J->pos] != 0xFF) {
-            J->pos++;
-            junk++;
-        }
-        at = J->pos;
-        while (J->pos < J->len && J->data[J->pos] == 0xFF)
-            J->pos++;
-        if (J->pos >= J->len) {
-            J->pos = start;
-            return -1;
-        }
-        if (J->data[J->pos] != 0) {
-            int marker = J->data[J->pos];
-            J->pos = J->pos - 1; /* its last 0xFF */
-            if (junk > 0) {
-                size_t here = J->pos;
-                J->pos = at;
-                jpeg_warn(J, "%zu extraneous bytes before marker 0x%02X", junk, marker);
-                J->pos = here;
-            }
-            return marker;
-        }
-        /* 0xFF 0x00: a stuffed byte of data, not a marker. */
-        J->pos++;
-        junk += 2;
-    }
-}
-
 /* Reads the markers from SOI to EOI (or the data's end after a scan). */
 int jpeg_markers(Jpeg *J)
 {
