@@ -120,7 +120,7 @@ RT_LDLIBS := -lm $(RT_PLATFORM_LIBS)
 LIB_SRC := $(sort $(filter-out src/cli/% src/base/%_$(OTHER_PLATFORM).c,$(wildcard src/*/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 RAYTRACE_OBJ := $(BUILD)/cli/main.o $(BUILD)/cli/options.o $(BUILD)/cli/adjust.o \
-	$(BUILD)/cli/summary.o
+	$(BUILD)/cli/summary.o $(BUILD)/cli/args.o
 
 # On x86, the hierarchy's queries are built a second time for processors
 # with AVX2 and FMA (src/accel/bvh_query.h), and run on those processors.
@@ -181,10 +181,10 @@ $(BUILD)/unit$(EXE): $(TEST_OBJ) $(LIB_OBJ)
 # geometry (link-time optimisation then reads a third of the objects).
 TOOL_OBJ := $(filter $(BUILD)/base/% $(BUILD)/math/% $(BUILD)/image/%,$(LIB_OBJ))
 
-$(OUT)/raytrace-diff$(EXE): $(BUILD)/cli/diff_main.o $(TOOL_OBJ)
+$(OUT)/raytrace-diff$(EXE): $(BUILD)/cli/diff_main.o $(BUILD)/cli/args.o $(TOOL_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
-$(OUT)/raytrace-merge$(EXE): $(BUILD)/cli/merge_main.o $(TOOL_OBJ)
+$(OUT)/raytrace-merge$(EXE): $(BUILD)/cli/merge_main.o $(BUILD)/cli/args.o $(TOOL_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The fault injector tests/faults.sh preloads (test-only, glibc): built with

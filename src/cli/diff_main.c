@@ -8,13 +8,16 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/outfile.h"
 #include "base/process.h"
+#include "cli/args.h"
 #include "image/compare.h"
 #include "image/writer.h"
 
@@ -51,12 +54,73 @@ static const char diff_help[] =
     "do; 2 an image cannot be read, the sizes differ, or the command line is\n"
     "wrong.\n";
 
-static int diff_usage(const char *fmt, const char *arg)
+/* The command line. */
+typedef struct {
+    double tolerance;           /* -t: levels a channel may differ by */
+    size_t max_pixels;          /* -m: pixels that may exceed it */
+    const char *diff_path;      /* -d FILE, or NULL */
+    const char *box;            /* -b WxH as given, or NULL */
+    int box_w, box_h;           /* its W and H */
+    const char *only;           /* -o MASK, or NULL */
+    int clamp, quiet;           /* -c, -q */
+    const char *paths[2];       /* REFERENCE and IMAGE */
+} DiffOptions;
+
+enum { DIFF_HELP = 1, DIFF_SHOW_VERSION };
+
+#define DIFF_OPT(name, kind, field) name, kind, offsetof(DiffOptions, field)
+static const ArgSpec diff_specs[] = {
+    {"--tolerance", DIFF_OPT("-t", ARG_REAL, tolerance), 0, INFINITY, NULL, 0},
+    {"--max-pixels", DIFF_OPT("-m", ARG_COUNT, max_pixels), 0, 0, NULL, 0},
+    {"--diff", DIFF_OPT("-d", ARG_TEXT, diff_path), 0, 0, NULL, 0},
+    {"--box", DIFF_OPT("-b", ARG_TEXT, box), 0, 0, NULL, 0},
+    {"--only", DIFF_OPT("-o", ARG_TEXT, only), 0, 0, NULL, 0},
+    {"--clamp", DIFF_OPT("-c", ARG_FLAG, clamp), 0, 0, NULL, 0},
+    {"--quiet", DIFF_OPT("-q", ARG_FLAG, quiet), 0, 0, NULL, 0},
+    {"--help", "-h", ARG_ACT, 0, 0, 0, NULL, DIFF_HELP},
+    {"--version", "-V", ARG_ACT, 0, 0, 0, NULL, DIFF_SHOW_VERSION},
+};
+#undef DIFF_OPT
+
+/* Prints a usage error; returns the exit status 2. */
+static int diff_usage(const char *msg)
 {
-    fprintf(stderr, "raytrace-diff: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\nTry 'raytrace-diff --help'.\n");
+    fprintf(stderr, "raytrace-diff: %s\nTry 'raytrace-diff --help'.\n", msg);
     return 2;
+}
+
+/* Reads the command line into *o; returns -1 to go on, else the exit
+ * status after printing the help, the version or a usage error. */
+static int diff_options(int argc, char **argv, DiffOptions *o)
+{
+    static const ArgTable table = {diff_specs, sizeof diff_specs / sizeof diff_specs[0], 2,
+                                   "REFERENCE and IMAGE"};
+    char msg[256];
+    int n, rc;
+
+    memset(o, 0, sizeof *o);
+    rc = args_parse(&table, o, argc, argv, o->paths, &n, msg, sizeof msg);
+    if (rc == DIFF_HELP) {
+        fputs(diff_help, stdout);
+        return 0;
+    }
+    if (rc == DIFF_SHOW_VERSION) {
+        puts("raytrace-diff " DIFF_VERSION);
+        return 0;
+    }
+    if (rc < 0)
+        return diff_usage(msg);
+    if (n < 2)
+        return diff_usage(n == 0 ? "missing REFERENCE and IMAGE" : "missing IMAGE");
+    if (o->box && args_pair(o->box, 'x', 1, INT_MAX, &o->box_w, &o->box_h) != 0) {
+        snprintf(msg, sizeof msg,
+                 "--box takes WxH, the boxes across and down (as 100x100), found '%.40s'",
+                 o->box);
+        return diff_usage(msg);
+    }
+    if (o->only && o->box)
+        return diff_usage("--only and --box cannot be combined");
+    return -1;
 }
 
 static void diff_report(const Error *err)
@@ -70,18 +134,6 @@ static void diff_report(const Error *err)
     else
         fprintf(stderr, "raytrace-diff: %s%serror: %s\n", err->file, err->file[0] ? ": " : "",
                 message);
-}
-
-/* Reads a number >= 0 from text into *out; returns 0 or -1. */
-static int diff_number(const char *text, double *out)
-{
-    char *end;
-    double v = strtod(text, &end);
-
-    if (!*text || *end || !(v >= 0) || !isfinite(v))
-        return -1;
-    *out = v;
-    return 0;
 }
 
 /* Writes the diff image of a and b to path. */
@@ -143,150 +195,102 @@ static int diff_select(const char *mask_path, Picture *a, Picture *b)
     return rc;
 }
 
-int main(int argc, char **argv)
+/* Reads both pictures of o into *a and *b and makes them ready to compare
+ * (clamped, masked or boxed as o says); returns 0, or -1 after saying why
+ * not. */
+static int diff_load(const DiffOptions *o, Picture *a, Picture *b)
 {
-    static const char *const channel[3] = {"red", "green", "blue"};
-    const char *paths[2], *diff_path = NULL, *box = NULL, *only = NULL;
-    int box_w = 0, box_h = 0;
-    double tolerance = 0, max_pixels = 0;
-    int npaths = 0, quiet = 0, clamp = 0, status, width, height;
-    Picture a, b;
-    Comparison c;
     Error err;
 
-    process_init(&argc, &argv);
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-            fputs(diff_help, stdout);
-            return 0;
-        } else if (strcmp(arg, "-V") == 0 || strcmp(arg, "--version") == 0) {
-            puts("raytrace-diff " DIFF_VERSION);
-            return 0;
-        } else if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-            quiet = 1;
-        } else if (strcmp(arg, "-c") == 0 || strcmp(arg, "--clamp") == 0) {
-            clamp = 1;
-        } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--only") == 0) {
-            if (i + 1 >= argc)
-                return diff_usage("option '%s' needs a value", arg);
-            only = argv[++i];
-        } else if (strcmp(arg, "-t") == 0 || strcmp(arg, "--tolerance") == 0 ||
-                   strcmp(arg, "-m") == 0 || strcmp(arg, "--max-pixels") == 0 ||
-                   strcmp(arg, "-d") == 0 || strcmp(arg, "--diff") == 0) {
-            int is_t = arg[1] == 't' || arg[2] == 't', is_d = arg[1] == 'd' || arg[2] == 'd';
-            double *target = is_t ? &tolerance : &max_pixels;
-            if (i + 1 >= argc)
-                return diff_usage("option '%s' needs a value", arg);
-            if (is_d) {
-                diff_path = argv[++i];
-            } else if (diff_number(argv[++i], target) != 0 ||
-                       (!is_t && *target != floor(*target))) {
-                return diff_usage(is_t ? "--tolerance takes a number of levels >= 0, found "
-                                         "'%.40s'"
-                                       : "--max-pixels takes a whole number >= 0, found "
-                                         "'%.40s'",
-                                  argv[i]);
-            }
-        } else if (strcmp(arg, "-b") == 0 || strcmp(arg, "--box") == 0) {
-            char tail;
-            if (i + 1 >= argc)
-                return diff_usage("option '%s' needs a value", arg);
-            box = argv[++i];
-            if (sscanf(box, "%dx%d%c", &box_w, &box_h, &tail) != 2 || box_w < 1 || box_h < 1)
-                return diff_usage("--box takes WxH, the boxes across and down (as 100x100), "
-                                  "found '%.40s'",
-                                  box);
-        } else if (arg[0] == '-' && arg[1] != '\0') {
-            return diff_usage("unknown option '%.40s'", arg);
-        } else if (npaths == 2) {
-            return diff_usage("too many arguments: '%.40s' after REFERENCE and IMAGE", arg);
-        } else {
-            paths[npaths++] = arg;
-        }
-    }
-    if (npaths < 2)
-        return diff_usage("%s", npaths == 0 ? "missing REFERENCE and IMAGE" : "missing IMAGE");
-    if (picture_load(paths[0], &a, &err) != 0) {
+    if (picture_load(o->paths[0], a, &err) != 0 || picture_load(o->paths[1], b, &err) != 0) {
         diff_report(&err);
-        return 2;
+        return -1;
     }
-    if (picture_load(paths[1], &b, &err) != 0) {
-        diff_report(&err);
-        picture_free(&a);
-        return 2;
-    }
-    for (int i = 0; i < 2 && !quiet; i++)
-        if ((i ? b.warning : a.warning)[0])
-            fprintf(stderr, "raytrace-diff: %s: warning: %s\n", paths[i], i ? b.warning : a.warning);
-    if (a.width != b.width || a.height != b.height) {
+    for (int i = 0; i < 2 && !o->quiet; i++)
+        if ((i ? b : a)->warning[0])
+            fprintf(stderr, "raytrace-diff: %s: warning: %s\n", o->paths[i], (i ? b : a)->warning);
+    if (a->width != b->width || a->height != b->height) {
         fprintf(stderr, "raytrace-diff: error: the sizes differ: %s is %d x %d, %s is %d x %d\n",
-                paths[0], a.width, a.height, paths[1], b.width, b.height);
-        picture_free(&a);
-        picture_free(&b);
-        return 2;
+                o->paths[0], a->width, a->height, o->paths[1], b->width, b->height);
+        return -1;
     }
-    if (clamp) {
-        picture_clamp(&a);
-        picture_clamp(&b);
+    if (o->clamp) {
+        picture_clamp(a);
+        picture_clamp(b);
     }
-    width = a.width;
-    height = a.height;
-    if (only && box)
-        fprintf(stderr, "raytrace-diff: error: --only and --box cannot be combined\n");
-    if ((only && box) || (only && diff_select(only, &a, &b) != 0)) {
-        picture_free(&a);
-        picture_free(&b);
-        return 2;
-    }
-    if (box && (box_w > a.width || box_h > a.height)) {
+    if (o->only)
+        return diff_select(o->only, a, b);
+    if (o->box && (o->box_w > a->width || o->box_h > a->height)) {
         fprintf(stderr, "raytrace-diff: error: --box %s: the images are %d x %d, fewer pixels "
                         "than boxes\n",
-                box, a.width, a.height);
-        picture_free(&a);
-        picture_free(&b);
-        return 2;
+                o->box, a->width, a->height);
+        return -1;
     }
-    if (box && (picture_box(&a, box_w, box_h, &err) != 0 || picture_box(&b, box_w, box_h, &err) != 0)) {
+    if (o->box && (picture_box(a, o->box_w, o->box_h, &err) != 0 ||
+                   picture_box(b, o->box_w, o->box_h, &err) != 0)) {
         diff_report(&err);
-        picture_free(&a);
-        picture_free(&b);
-        return 2;
+        return -1;
     }
-    c = compare_pictures(&a, &b, tolerance);
-    status = (double)c.over <= max_pixels ? 0 : 1;
-    if (!quiet) {
-        const double *p = a.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
-        const double *q = b.rgb + 3 * ((size_t)c.max_y * (size_t)a.width + (size_t)c.max_x);
-        printf("reference: %s: %d x %d, %s\n", paths[0], width, height, a.format);
-        printf("image:     %s: %d x %d, %s\n", paths[1], width, height, b.format);
-        if (only)
-            printf("compared:  the %d pixels not black in %s (numbered in reading order)\n",
-                   a.width, only);
-        if (box)
-            printf("compared:  %d x %d boxes, each the mean of the pixels it covers\n", box_w,
-                   box_h);
-        if (c.max_error > 0)
-            printf("max error: %g at pixel (%d, %d), %s: reference (%g, %g, %g), image (%g, "
-                   "%g, %g)\n",
-                   c.max_error, c.max_x, c.max_y, channel[c.max_channel], p[0], p[1], p[2],
-                   q[0], q[1], q[2]);
-        else
-            printf("max error: 0 (identical pixels)\n");
-        printf("mean error: %.6g, RMS error: %.6g, PSNR: ", c.mean_error, c.rms_error);
-        if (isinf(c.psnr))
-            printf("infinite\n");
-        else
-            printf("%.2f dB\n", c.psnr);
-        printf("over tolerance %g: %zu of %zu pixels (%.4f%%), at most %.0f allowed: %s\n",
-               tolerance, c.over, c.pixels, c.pixels ? 100.0 * (double)c.over / (double)c.pixels : 0,
-               max_pixels, status == 0 ? "same" : "DIFFERENT");
-        printf("channels over tolerance %g: %zu of %zu (%.4f%%)\n", tolerance, c.channels_over,
-               3 * c.pixels,
-               c.pixels ? 100.0 * (double)c.channels_over / (3.0 * (double)c.pixels) : 0);
+    return 0;
+}
+
+/* Prints comparison c of a and b (of size width x height before boxes). */
+static void diff_print(const DiffOptions *o, const Picture *a, const Picture *b,
+                       const Comparison *c, int width, int height)
+{
+    static const char *const channel[3] = {"red", "green", "blue"};
+    const double *p = a->rgb + 3 * ((size_t)c->max_y * (size_t)a->width + (size_t)c->max_x);
+    const double *q = b->rgb + 3 * ((size_t)c->max_y * (size_t)a->width + (size_t)c->max_x);
+    double pixels = (double)c->pixels;
+
+    printf("reference: %s: %d x %d, %s\n", o->paths[0], width, height, a->format);
+    printf("image:     %s: %d x %d, %s\n", o->paths[1], width, height, b->format);
+    if (o->only)
+        printf("compared:  the %d pixels not black in %s (numbered in reading order)\n",
+               a->width, o->only);
+    if (o->box)
+        printf("compared:  %d x %d boxes, each the mean of the pixels it covers\n", o->box_w,
+               o->box_h);
+    if (c->max_error > 0)
+        printf("max error: %g at pixel (%d, %d), %s: reference (%g, %g, %g), image (%g, "
+               "%g, %g)\n",
+               c->max_error, c->max_x, c->max_y, channel[c->max_channel], p[0], p[1], p[2], q[0],
+               q[1], q[2]);
+    else
+        printf("max error: 0 (identical pixels)\n");
+    printf("mean error: %.6g, RMS error: %.6g, PSNR: ", c->mean_error, c->rms_error);
+    if (isinf(c->psnr))
+        printf("infinite\n");
+    else
+        printf("%.2f dB\n", c->psnr);
+    printf("over tolerance %g: %zu of %zu pixels (%.4f%%), at most %zu allowed: %s\n",
+           o->tolerance, c->over, c->pixels, pixels > 0 ? 100.0 * (double)c->over / pixels : 0,
+           o->max_pixels, c->over <= o->max_pixels ? "same" : "DIFFERENT");
+    printf("channels over tolerance %g: %zu of %zu (%.4f%%)\n", o->tolerance, c->channels_over,
+           3 * c->pixels, pixels > 0 ? 100.0 * (double)c->channels_over / (3.0 * pixels) : 0);
+}
+
+int main(int argc, char **argv)
+{
+    DiffOptions o;
+    Picture a = {0}, b = {0};
+    Comparison c;
+    int status = 2, width, height;
+
+    process_init(&argc, &argv);
+    if ((status = diff_options(argc, argv, &o)) >= 0)
+        return status;
+    status = 2;
+    if (diff_load(&o, &a, &b) == 0) {
+        width = a.width;
+        height = a.height;
+        c = compare_pictures(&a, &b, o.tolerance);
+        status = c.over <= o.max_pixels ? 0 : 1;
+        if (!o.quiet)
+            diff_print(&o, &a, &b, &c, width, height);
+        if (o.diff_path && diff_write_image(o.diff_path, &a, &b, o.tolerance) != 0)
+            status = 2;
     }
-    if (diff_path && diff_write_image(diff_path, &a, &b, tolerance) != 0)
-        status = 2;
     picture_free(&a);
     picture_free(&b);
     return status;

@@ -9,6 +9,7 @@
  * then left as it was); 2 a bad command line.
  */
 #include <inttypes.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "base/file.h"
 #include "base/outfile.h"
 #include "base/process.h"
+#include "cli/args.h"
 #include "image/compare.h"
 #include "image/image.h"
 #include "image/pfm.h"
@@ -206,104 +208,103 @@ static int merge_missing(const Merge *m, Error *err)
     return -1;
 }
 
-int main(int argc, char **argv)
-{
-    const char *out_path = NULL;
-    const char **tiles;
-    int ntiles = 0, quiet = 0, quality = 90, only = 0;
-    Merge m;
-    Error err;
-    OutFile out;
-    WriterOptions w;
+/* The command line. */
+typedef struct {
+    int quiet;             /* -q */
+    int jpeg_quality;      /* --jpeg-quality, 1..100 */
+    const char **paths;    /* OUT, then the tiles */
+    int npaths;
+} MergeOptions;
 
-    process_init(&argc, &argv);
-    tiles = calloc((size_t)argc, sizeof *tiles);
-    if (!tiles)
-        return 1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!only && (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)) {
-            fputs(merge_help, stdout);
-            free(tiles);
-            return 0;
-        } else if (!only && (strcmp(a, "-V") == 0 || strcmp(a, "--version") == 0)) {
-            printf("raytrace-merge %s\n", MERGE_VERSION);
-            free(tiles);
-            return 0;
-        } else if (!only && (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0)) {
-            quiet = 1;
-        } else if (!only && strcmp(a, "--jpeg-quality") == 0) {
-            char *end;
-            long q = i + 1 < argc ? strtol(argv[i + 1], &end, 10) : 0;
-            if (i + 1 >= argc || *end || end == argv[i + 1] || q < 1 || q > 100) {
-                fprintf(stderr, "raytrace-merge: option '--jpeg-quality' takes a whole number "
-                                "from 1 to 100\nTry 'raytrace-merge --help'.\n");
-                free(tiles);
-                return 2;
-            }
-            quality = (int)q;
-            i++;
-        } else if (!only && strcmp(a, "--") == 0) {
-            only = 1;
-        } else if (!only && a[0] == '-' && a[1]) {
-            fprintf(stderr, "raytrace-merge: unknown option '%s'\nTry 'raytrace-merge --help'.\n",
-                    a);
-            free(tiles);
-            return 2;
-        } else if (!out_path) {
-            out_path = a;
-        } else {
-            tiles[ntiles++] = a;
-        }
+enum { MERGE_HELP = 1, MERGE_SHOW_VERSION };
+
+static const ArgSpec merge_specs[] = {
+    {"--jpeg-quality", NULL, ARG_INT, offsetof(MergeOptions, jpeg_quality), 1, 100, NULL, 0},
+    {"--quiet", "-q", ARG_FLAG, offsetof(MergeOptions, quiet), 0, 0, NULL, 0},
+    {"--help", "-h", ARG_ACT, 0, 0, 0, NULL, MERGE_HELP},
+    {"--version", "-V", ARG_ACT, 0, 0, 0, NULL, MERGE_SHOW_VERSION},
+};
+
+/* Reads the command line into *o (o->paths, room for argc paths, given);
+ * returns -1 to go on, else the exit status after printing the help, the
+ * version or a usage error. */
+static int merge_options(int argc, char **argv, MergeOptions *o)
+{
+    static const ArgTable table = {merge_specs, sizeof merge_specs / sizeof merge_specs[0], 0,
+                                   "OUT and TILE"};
+    char msg[256];
+    int rc = args_parse(&table, o, argc, argv, o->paths, &o->npaths, msg, sizeof msg);
+
+    if (rc == MERGE_HELP) {
+        fputs(merge_help, stdout);
+        return 0;
     }
-    if (!out_path || ntiles == 0) {
-        fprintf(stderr, "raytrace-merge: %s\nTry 'raytrace-merge --help'.\n",
-                out_path ? "missing TILE" : "missing OUT and TILE");
-        free(tiles);
+    if (rc == MERGE_SHOW_VERSION) {
+        printf("raytrace-merge %s\n", MERGE_VERSION);
+        return 0;
+    }
+    if (rc == 0 && o->npaths < 2)
+        snprintf(msg, sizeof msg, "%s", o->npaths ? "missing TILE" : "missing OUT and TILE");
+    if (rc < 0 || o->npaths < 2) {
+        fprintf(stderr, "raytrace-merge: %s\nTry 'raytrace-merge --help'.\n", msg);
         return 2;
     }
-    memset(&m, 0, sizeof m);
-    memset(&err, 0, sizeof err);
-    w.format = writer_format_for(out_path);
-    w.ascii = 0;
-    w.png_deflate = DEFLATE_FIXED;
-    w.jpeg_quality = quality;
-    w.jpeg_444 = 0;
-    w.note = NULL;
-    for (int i = 0; i < ntiles; i++)
-        if (merge_tile(&m, tiles[i], i, &err) != 0)
-            goto fail;
+    return -1;
+}
+
+/* Puts the tiles of o together and writes the picture to o's OUT; returns
+ * 0, or -1 with *err saying why not (OUT then left as it was). */
+static int merge_run(const MergeOptions *o, Merge *m, Error *err)
+{
+    const char *out_path = o->paths[0];
+    WriterOptions w = {writer_format_for(out_path), 0, DEFLATE_FIXED, o->jpeg_quality, 0, NULL};
+    OutFile out;
+
+    for (int i = 1; i < o->npaths; i++)
+        if (merge_tile(m, o->paths[i], i - 1, err) != 0)
+            return -1;
     /* 8-bit tiles make 8-bit pictures, PFM tiles a PFM: each kept exact. */
-    if ((w.format == FORMAT_PFM) != m.linear) {
-        error_set(&err, out_path,
-                  m.linear ? "the tiles are PFM (linear colours): write a PFM"
-                           : "the tiles hold 8-bit pixels: write PPM, PNG or JPEG, not PFM");
-        goto fail;
+    if ((w.format == FORMAT_PFM) != m->linear) {
+        error_set(err, out_path,
+                  m->linear ? "the tiles are PFM (linear colours): write a PFM"
+                            : "the tiles hold 8-bit pixels: write PPM, PNG or JPEG, not PFM");
+        return -1;
     }
-    if (merge_missing(&m, &err) != 0)
-        goto fail;
-    if (outfile_open(&out, out_path, &err) != 0)
-        goto fail;
-    if (writer_write(out.fp, &m.img, &w) != 0) {
-        error_set(&err, out_path, "cannot write the picture");
-        outfile_abort(&out, &err);
-        goto fail;
+    if (merge_missing(m, err) != 0 || outfile_open(&out, out_path, err) != 0)
+        return -1;
+    if (writer_write(out.fp, &m->img, &w) != 0) {
+        error_set(err, out_path, "cannot write the picture");
+        outfile_abort(&out, err);
+        return -1;
     }
-    if (outfile_commit(&out, &err) != 0)
-        goto fail;
-    if (!quiet && file_is_terminal(stderr))
-        fprintf(stderr, "raytrace-merge: wrote %s: %d x %d pixels from %d tiles\n", out_path,
-                m.img.width, m.img.height, ntiles);
-    image_free(&m.img);
-    free(m.owner);
-    free(m.by_k);
-    free(tiles);
-    return 0;
-fail:
-    merge_report(&err);
-    image_free(&m.img);
-    free(m.owner);
-    free(m.by_k);
-    free(tiles);
-    return 1;
+    return outfile_commit(&out, err);
+}
+
+int main(int argc, char **argv)
+{
+    MergeOptions o = {0, 90, NULL, 0};
+    Merge m;
+    Error err;
+    int status;
+
+    process_init(&argc, &argv);
+    o.paths = calloc((size_t)argc, sizeof *o.paths);
+    if (!o.paths)
+        return 1;
+    status = merge_options(argc, argv, &o);
+    if (status < 0) {
+        memset(&m, 0, sizeof m);
+        memset(&err, 0, sizeof err);
+        status = merge_run(&o, &m, &err) == 0 ? 0 : 1;
+        if (status != 0)
+            merge_report(&err);
+        else if (!o.quiet && file_is_terminal(stderr))
+            fprintf(stderr, "raytrace-merge: wrote %s: %d x %d pixels from %d tiles\n",
+                    o.paths[0], m.img.width, m.img.height, o.npaths - 1);
+        image_free(&m.img);
+        free(m.owner);
+        free(m.by_k);
+    }
+    free(o.paths);
+    return status;
 }

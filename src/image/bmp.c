@@ -74,65 +74,79 @@ void bmp_free(BmpImage *img)
     img->rgb = NULL;
 }
 
-int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage *img,
-              Error *err)
-{
-    uint32_t header, offset, compression = BMP_RGB, colours = 0, bits;
+/* What a bitmap's headers say, and where its parts are. */
+typedef struct {
+    uint32_t header, offset, compression, colours, bits;
     int64_t w, h;
-    int top_down = 0, palette_entry = 4;
-    const unsigned char *palette = NULL;
-    size_t palette_count = 0, stride;
-    BmpChannel ch[3];
+    int top_down;
+    int palette_entry;            /* bytes per palette colour: 3 or 4 */
+    const unsigned char *palette; /* bits <= 8: the colours, else NULL */
+    size_t palette_count, stride; /* colours in it; bytes per row */
+    BmpChannel ch[3];             /* 16 and 32 bits: red, green, blue */
+} BmpLayout;
 
-    memset(img, 0, sizeof *img);
+/* Reads the file and DIB headers of the len bytes at data into *b;
+ * returns 0, or -1 with *err. */
+static int bmp_headers(const char *name, const unsigned char *data, size_t len, BmpLayout *b,
+                       Error *err)
+{
+    memset(b, 0, sizeof *b);
+    b->palette_entry = 4;
     if (!bmp_is(data, len) || len < BMP_FILE_HEADER + 4) {
         error_set(err, name, "not a BMP file: it is too short for its headers");
         return -1;
     }
-    offset = bmp_u32(data + 10);
-    header = bmp_u32(data + BMP_FILE_HEADER);
-    if (header != BMP_CORE && (header < BMP_INFO || header > BMP_V5)) {
+    b->offset = bmp_u32(data + 10);
+    b->header = bmp_u32(data + BMP_FILE_HEADER);
+    if (b->header != BMP_CORE && (b->header < BMP_INFO || b->header > BMP_V5)) {
         error_set(err, name, "BMP: unknown header of %lu bytes (expected 12, or 40 to 124)",
-                  (unsigned long)header);
+                  (unsigned long)b->header);
         return -1;
     }
-    if (len < BMP_FILE_HEADER + (size_t)header) {
+    if (len < BMP_FILE_HEADER + (size_t)b->header) {
         error_set(err, name, "BMP: the file ends inside its %lu-byte header",
-                  (unsigned long)header);
+                  (unsigned long)b->header);
         return -1;
     }
-    if (header == BMP_CORE) {
-        w = bmp_u16(data + 18);
-        h = bmp_u16(data + 20);
-        bits = bmp_u16(data + 24);
-        palette_entry = 3;
+    if (b->header == BMP_CORE) {
+        b->w = bmp_u16(data + 18);
+        b->h = bmp_u16(data + 20);
+        b->bits = bmp_u16(data + 24);
+        b->palette_entry = 3;
     } else {
-        w = (int32_t)bmp_u32(data + 18);
-        h = (int32_t)bmp_u32(data + 22);
-        bits = bmp_u16(data + 28);
-        compression = bmp_u32(data + 30);
-        colours = bmp_u32(data + 46);
+        b->w = (int32_t)bmp_u32(data + 18);
+        b->h = (int32_t)bmp_u32(data + 22);
+        b->bits = bmp_u16(data + 28);
+        b->compression = bmp_u32(data + 30);
+        b->colours = bmp_u32(data + 46);
     }
-    if (h < 0) {
-        top_down = 1;
-        h = -h;
+    if (b->h < 0) {
+        b->top_down = 1;
+        b->h = -b->h;
     }
-    if (!(w >= 1 && w <= BMP_MAX_SIDE && h >= 1 && h <= BMP_MAX_SIDE)) {
+    if (!(b->w >= 1 && b->w <= BMP_MAX_SIDE && b->h >= 1 && b->h <= BMP_MAX_SIDE)) {
         error_set(err, name, "BMP: a %lld x %lld image: each side must be 1 to %d pixels",
-                  (long long)w, (long long)h, BMP_MAX_SIDE);
+                  (long long)b->w, (long long)b->h, BMP_MAX_SIDE);
         return -1;
     }
-    if (compression == BMP_RLE8 || compression == BMP_RLE4 || compression == BMP_JPEG ||
-        compression == BMP_PNG) {
+    return 0;
+}
+
+/* Checks that b's compression and bits a pixel are ones this reader
+ * reads; returns 0, or -1 with *err. */
+static int bmp_supported(const char *name, const BmpLayout *b, Error *err)
+{
+    uint32_t c = b->compression, bits = b->bits;
+
+    if (c == BMP_RLE8 || c == BMP_RLE4 || c == BMP_JPEG || c == BMP_PNG) {
         error_set(err, name, "BMP: %s bitmaps are not read (save it uncompressed, or as PNG)",
-                  compression == BMP_JPEG  ? "JPEG-compressed"
-                  : compression == BMP_PNG ? "PNG-compressed"
-                                           : "run-length encoded");
+                  c == BMP_JPEG  ? "JPEG-compressed"
+                  : c == BMP_PNG ? "PNG-compressed"
+                                 : "run-length encoded");
         return -1;
     }
-    if (compression != BMP_RGB && compression != BMP_BITFIELDS &&
-        compression != BMP_ALPHABITFIELDS) {
-        error_set(err, name, "BMP: unknown compression %lu", (unsigned long)compression);
+    if (c != BMP_RGB && c != BMP_BITFIELDS && c != BMP_ALPHABITFIELDS) {
+        error_set(err, name, "BMP: unknown compression %lu", (unsigned long)c);
         return -1;
     }
     if (bits != 1 && bits != 4 && bits != 8 && bits != 16 && bits != 24 && bits != 32) {
@@ -140,13 +154,22 @@ int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage 
                   (unsigned long)bits);
         return -1;
     }
-    if (compression != BMP_RGB && bits != 16 && bits != 32) {
+    if (c != BMP_RGB && bits != 16 && bits != 32) {
         error_set(err, name, "BMP: colour masks with %lu bits a pixel (expected 16 or 32)",
                   (unsigned long)bits);
         return -1;
     }
-    /* Where each channel is. */
-    if (compression != BMP_RGB) {
+    return 0;
+}
+
+/* Finds in the len bytes at data where b's channels, palette and rows
+ * are; returns 0, or -1 with *err when the file ends before them. */
+static int bmp_locate(const char *name, const unsigned char *data, size_t len, BmpLayout *b,
+                      Error *err)
+{
+    static const uint32_t masks[2][3] = {{0x7c00, 0x03e0, 0x001f}, {0xff0000, 0x00ff00, 0x0000ff}};
+
+    if (b->compression != BMP_RGB) {
         /* The masks follow a 40-byte header, or are its V2+ fields. */
         size_t at = BMP_FILE_HEADER + BMP_INFO;
         if (len < at + 12) {
@@ -154,69 +177,84 @@ int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage 
             return -1;
         }
         for (int c = 0; c < 3; c++)
-            ch[c] = bmp_channel(bmp_u32(data + at + 4 * (size_t)c));
-    } else if (bits == 16) {
-        ch[0] = bmp_channel(0x7c00);
-        ch[1] = bmp_channel(0x03e0);
-        ch[2] = bmp_channel(0x001f);
+            b->ch[c] = bmp_channel(bmp_u32(data + at + 4 * (size_t)c));
     } else {
-        ch[0] = bmp_channel(0xff0000);
-        ch[1] = bmp_channel(0x00ff00);
-        ch[2] = bmp_channel(0x0000ff);
+        for (int c = 0; c < 3; c++)
+            b->ch[c] = bmp_channel(masks[b->bits != 16][c]);
     }
-    if (bits <= 8) {
-        size_t at = BMP_FILE_HEADER + header, room;
-        palette_count = colours ? colours : (size_t)1 << bits;
-        room = offset > at ? (offset - at) / (size_t)palette_entry : 0;
-        if (palette_count > ((size_t)1 << bits))
-            palette_count = (size_t)1 << bits;
-        if (palette_count > room)
-            palette_count = room;
-        if (palette_count == 0 || at + palette_count * (size_t)palette_entry > len) {
+    if (b->bits <= 8) {
+        size_t at = BMP_FILE_HEADER + b->header, most = (size_t)1 << b->bits, room;
+        b->palette_count = b->colours ? b->colours : most;
+        room = b->offset > at ? (b->offset - at) / (size_t)b->palette_entry : 0;
+        if (b->palette_count > most)
+            b->palette_count = most;
+        if (b->palette_count > room)
+            b->palette_count = room;
+        if (b->palette_count == 0 || at + b->palette_count * (size_t)b->palette_entry > len) {
             error_set(err, name, "BMP: an image of %lu bits a pixel without its palette",
-                      (unsigned long)bits);
+                      (unsigned long)b->bits);
             return -1;
         }
-        palette = data + at;
+        b->palette = data + at;
     }
-    stride = (((size_t)w * bits + 31) / 32) * 4;
-    if (offset > len || (len - offset) / stride < (size_t)h) {
+    b->stride = (((size_t)b->w * b->bits + 31) / 32) * 4;
+    if (b->offset > len || (len - b->offset) / b->stride < (size_t)b->h) {
         error_set(err, name, "BMP: the file ends before its %lld rows of pixels (%zu bytes each)",
-                  (long long)h, stride);
+                  (long long)b->h, b->stride);
         return -1;
     }
-    img->rgb = malloc(3 * (size_t)w * (size_t)h);
+    return 0;
+}
+
+/* Writes pixel x of row (as b lays it out) to out as 8-bit RGB. */
+static void bmp_pixel(const BmpLayout *b, const unsigned char *row, int64_t x, unsigned char *out)
+{
+    uint32_t bits = b->bits;
+
+    if (bits <= 8) {
+        size_t bit = (size_t)x * bits, k, e = (size_t)b->palette_entry;
+        k = (size_t)(row[bit / 8] >> (8 - bits - bit % 8)) & (((size_t)1 << bits) - 1);
+        if (k >= b->palette_count)
+            k = 0; /* an index past the palette: its first colour */
+        out[0] = b->palette[k * e + 2];
+        out[1] = b->palette[k * e + 1];
+        out[2] = b->palette[k * e];
+    } else if (bits == 24) {
+        const unsigned char *p = row + 3 * (size_t)x;
+        out[0] = p[2];
+        out[1] = p[1];
+        out[2] = p[0];
+    } else {
+        uint32_t px = bits == 16 ? bmp_u16(row + 2 * (size_t)x) : bmp_u32(row + 4 * (size_t)x);
+        for (int c = 0; c < 3; c++)
+            out[c] = bmp_scale(&b->ch[c], px);
+    }
+}
+
+int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage *img,
+              Error *err)
+{
+    BmpLayout b;
+
+    memset(img, 0, sizeof *img);
+    if (bmp_headers(name, data, len, &b, err) != 0 || bmp_supported(name, &b, err) != 0 ||
+        bmp_locate(name, data, len, &b, err) != 0)
+        return -1;
+    img->rgb = malloc(3 * (size_t)b.w * (size_t)b.h);
     if (!img->rgb) {
-        error_set(err, name, "out of memory for a %lld x %lld image", (long long)w,
-                  (long long)h);
+        error_set(err, name, "out of memory for a %lld x %lld image", (long long)b.w,
+                  (long long)b.h);
         return -1;
     }
-    img->width = (int)w;
-    img->height = (int)h;
-    img->bits = (int)bits;
-    for (int64_t y = 0; y < h; y++) {
-        const unsigned char *row = data + offset + (size_t)(top_down ? y : h - 1 - y) * stride;
-        unsigned char *out = img->rgb + 3 * (size_t)y * (size_t)w;
-        for (int64_t x = 0; x < w; x++, out += 3) {
-            if (bits <= 8) {
-                size_t bit = (size_t)x * bits, k;
-                k = (size_t)(row[bit / 8] >> (8 - bits - bit % 8)) & (((size_t)1 << bits) - 1);
-                if (k >= palette_count)
-                    k = 0; /* an index past the palette: its first colour */
-                out[0] = palette[k * (size_t)palette_entry + 2];
-                out[1] = palette[k * (size_t)palette_entry + 1];
-                out[2] = palette[k * (size_t)palette_entry];
-            } else if (bits == 24) {
-                const unsigned char *p = row + 3 * (size_t)x;
-                out[0] = p[2];
-                out[1] = p[1];
-                out[2] = p[0];
-            } else {
-                uint32_t px = bits == 16 ? bmp_u16(row + 2 * (size_t)x) : bmp_u32(row + 4 * (size_t)x);
-                for (int c = 0; c < 3; c++)
-                    out[c] = bmp_scale(&ch[c], px);
-            }
-        }
+    img->width = (int)b.w;
+    img->height = (int)b.h;
+    img->bits = (int)b.bits;
+    for (int64_t y = 0; y < b.h; y++) {
+        const unsigned char *row =
+            data + b.offset + (size_t)(b.top_down ? y : b.h - 1 - y) * b.stride;
+        unsigned char *out = img->rgb + 3 * (size_t)y * (size_t)b.w;
+        for (int64_t x = 0; x < b.w; x++)
+            bmp_pixel(&b, row, x, out + 3 * x);
     }
     return 0;
 }

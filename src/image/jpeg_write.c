@@ -394,67 +394,18 @@ size_t jpeg_write_memory(int width, int height, int subsample)
     return blocks * 64 * sizeof(int16_t) + sizeof(JpegOut) + 4 * sizeof(JpegCode);
 }
 
-int jpeg_write(FILE *f, int width, int height, const unsigned char *rgb, int quality,
-               int subsample)
+/* Writes the headers before the scan: SOI, JFIF, the quantisation tables,
+ * the frame (SOF0) of planes p, the Huffman tables and the scan's (SOS). */
+static void jpeg_headers(JpegOut *o, int width, int height, const JpegPlane p[3],
+                         uint8_t quant[2][64], const JpegCode dc[2], const JpegCode ac[2])
 {
-    JpegPlane p[3];
-    JpegCode dc[2], ac[2];
-    JpegOut *o = malloc(sizeof *o);
-    uint8_t quant[2][64];
-    int mcu = subsample ? 16 : 8;
-    int mx = (width + mcu - 1) / mcu, my = (height + mcu - 1) / mcu, rc = 0;
+    static const uint8_t jfif[14] = {'J', 'F', 'I', 'F', 0, 1, 1, 0, 0, 1, 0, 1, 0, 0};
 
-    if (!o)
-        return -1;
-    quality = quality < 1 ? 1 : quality > 100 ? 100 : quality;
-    memset(p, 0, sizeof p);
-    for (int c = 0; c < 3; c++) {
-        p[c].h = p[c].v = c == 0 && subsample ? 2 : 1;
-        p[c].bw = mx * p[c].h;
-        p[c].bh = my * p[c].v;
-        p[c].table = c > 0;
-        p[c].coef = malloc((size_t)p[c].bw * (size_t)p[c].bh * 64 * sizeof *p[c].coef);
-        if (!p[c].coef)
-            rc = -1;
-    }
-    if (rc != 0) {
-        for (int c = 0; c < 3; c++)
-            free(p[c].coef);
-        free(o);
-        errno = ENOMEM;
-        return -1;
-    }
-    jpeg_quant(0, quality, quant[0]);
-    jpeg_quant(1, quality, quant[1]);
-    for (int c = 0; c < 3; c++)
-        jpeg_plane(rgb, width, height, &p[c], c, c > 0 && subsample, quant[p[c].table]);
-    memset(dc, 0, sizeof dc);
-    memset(ac, 0, sizeof ac);
-    jpeg_scan(NULL, p, mx, my, dc, ac);
-    for (int t = 0; t < 2; t++) {
-        jpeg_build_code(&dc[t]);
-        jpeg_build_code(&ac[t]);
-    }
-
-    o->f = f;
-    o->used = 0;
-    o->bits = 0;
-    o->nbits = 0;
-    o->failed = 0;
     jpeg_byte(o, 0xFF); /* SOI */
     jpeg_byte(o, 0xD8);
     jpeg_marker(o, 0xE0, 16); /* JFIF 1.01, no density */
-    jpeg_byte(o, 'J');
-    jpeg_byte(o, 'F');
-    jpeg_byte(o, 'I');
-    jpeg_byte(o, 'F');
-    jpeg_byte(o, 0);
-    jpeg_u16(o, 0x0101);
-    jpeg_byte(o, 0);
-    jpeg_u16(o, 1);
-    jpeg_u16(o, 1);
-    jpeg_byte(o, 0);
-    jpeg_byte(o, 0);
+    for (int k = 0; k < 14; k++)
+        jpeg_byte(o, jfif[k]);
     for (int t = 0; t < 2; t++) { /* DQT, zigzag order, 8-bit */
         jpeg_marker(o, 0xDB, 2 + 65);
         jpeg_byte(o, (unsigned)t);
@@ -484,6 +435,63 @@ int jpeg_write(FILE *f, int width, int height, const unsigned char *rgb, int qua
     jpeg_byte(o, 0);
     jpeg_byte(o, 63);
     jpeg_byte(o, 0);
+}
+
+/* Lays out planes p for mx x my MCUs (luma 2 x 2 blocks an MCU when
+ * subsampled) and allocates their coefficients; returns 0, or -1 with
+ * none allocated. */
+static int jpeg_planes(JpegPlane p[3], int mx, int my, int subsample)
+{
+    int rc = 0;
+
+    memset(p, 0, 3 * sizeof *p);
+    for (int c = 0; c < 3; c++) {
+        p[c].h = p[c].v = c == 0 && subsample ? 2 : 1;
+        p[c].bw = mx * p[c].h;
+        p[c].bh = my * p[c].v;
+        p[c].table = c > 0;
+        p[c].coef = malloc((size_t)p[c].bw * (size_t)p[c].bh * 64 * sizeof *p[c].coef);
+        if (!p[c].coef)
+            rc = -1;
+    }
+    if (rc != 0)
+        for (int c = 0; c < 3; c++) {
+            free(p[c].coef);
+            p[c].coef = NULL;
+        }
+    return rc;
+}
+
+int jpeg_write(FILE *f, int width, int height, const unsigned char *rgb, int quality,
+               int subsample)
+{
+    JpegPlane p[3];
+    JpegCode dc[2], ac[2];
+    JpegOut *o = malloc(sizeof *o);
+    uint8_t quant[2][64];
+    int mcu = subsample ? 16 : 8;
+    int mx = (width + mcu - 1) / mcu, my = (height + mcu - 1) / mcu, rc;
+
+    if (!o || jpeg_planes(p, mx, my, subsample) != 0) {
+        free(o);
+        errno = ENOMEM;
+        return -1;
+    }
+    quality = quality < 1 ? 1 : quality > 100 ? 100 : quality;
+    jpeg_quant(0, quality, quant[0]);
+    jpeg_quant(1, quality, quant[1]);
+    for (int c = 0; c < 3; c++)
+        jpeg_plane(rgb, width, height, &p[c], c, c > 0 && subsample, quant[p[c].table]);
+    memset(dc, 0, sizeof dc);
+    memset(ac, 0, sizeof ac);
+    jpeg_scan(NULL, p, mx, my, dc, ac); /* counts the symbols */
+    for (int t = 0; t < 2; t++) {
+        jpeg_build_code(&dc[t]);
+        jpeg_build_code(&ac[t]);
+    }
+    memset(o, 0, sizeof *o);
+    o->f = f;
+    jpeg_headers(o, width, height, p, quant, dc, ac);
     jpeg_scan(o, p, mx, my, dc, ac);
     if (o->nbits > 0) /* pad with ones (F.1.2.3) */
         jpeg_bits(o, 0x7F, 8 - o->nbits);

@@ -20,9 +20,6 @@
  */
 #include "scenefile/mpl.h"
 
-#include <ctype.h>
-#include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,28 +31,8 @@
 #include "scenefile/names.h"
 #include "scenefile/shapes.h"
 #include "scenefile/texture_file.h"
+#include "mpl_read.h"
 
-/* The reader's state. */
-typedef struct {
-    Lexer lex;           /* the cursor over the input */
-    int camera_line;     /* line of each setting, 0 before it */
-    int background_line; /* (Background or Sky) */
-    int ambient_line;
-    int samples_line;
-    int ao_line;         /* (c AO, c GI) */
-    int gi_line;
-    int model_line;
-    int noise_line;
-    Names names;         /* the materials by name */
-    int strict;          /* 1: lines seed 001's program read leniently are
-                            errors; 0: read as it did, with a warning */
-} Mpl;
-
-/* Records a fault at column of line. */
-#define mpl_fail(M, line, column, ...) lex_fail(&(M)->lex, line, column, __VA_ARGS__)
-
-static const char *const mpl_rgb_names[] = {"red", "green", "blue"};
-static const FieldKind mpl_rgb_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
 /* Seed 001's reader's order (its SceneReader and Material): the 7th field
  * is the refractive index ("indice"), the 8th the glossiness. */
 static const char *const mpl_material_names[] = {"red",   "green",      "blue",
@@ -67,22 +44,6 @@ static const char *const mpl_light_names[] = {"x",    "y",         "z",    "red"
 static const FieldKind mpl_light_kinds[] = {FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
                                             FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION,
                                             FIELD_NONNEGATIVE, FIELD_NONNEGATIVE};
-static const char *const mpl_camera_names[] = {"x",  "y",  "z",  "target x",
-                                               "target y", "target z", "field of view"};
-static const FieldKind mpl_camera_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
-                                             FIELD_COORD, FIELD_COORD, FIELD_COORD,
-                                             FIELD_POSITIVE};
-static const char *const mpl_sky_names[] = {"zenith red", "zenith green", "zenith blue",
-                                            "nadir red",  "nadir green",  "nadir blue"};
-static const FieldKind mpl_sky_kinds[] = {FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION,
-                                          FIELD_FRACTION, FIELD_FRACTION, FIELD_FRACTION};
-static const char *const mpl_ao_names[] = {"distance"};
-static const FieldKind mpl_ao_kinds[] = {FIELD_POSITIVE};
-static const RecordSpec mpl_ao_distance = {"the ambient occlusion", NULL, 1, 0, 0, mpl_ao_names,
-                                           mpl_ao_kinds};
-static const char *const mpl_noise_names[] = {"level"};
-static const FieldKind mpl_noise_kinds[] = {FIELD_POSITIVE};
-static const RecordSpec mpl_noise = {"the noise", NULL, 1, 0, 0, mpl_noise_names, mpl_noise_kinds};
 static const char *const mpl_tri_names[] = {"size", "x", "y", "z"};
 static const FieldKind mpl_tri_kinds[] = {FIELD_POSITIVE, FIELD_COORD, FIELD_COORD, FIELD_COORD};
 
@@ -93,15 +54,6 @@ static const RecordSpec mpl_direction = {"the directional light", "dx dy dz r g 
                                          0, 0, mpl_light_names, mpl_light_kinds};
 static const RecordSpec mpl_point = {"the point light", "x y z r g b intensity [range]", 7, 1, 0,
                                      mpl_light_names, mpl_light_kinds};
-static const RecordSpec mpl_camera = {"the camera", "x y z tx ty tz fov width height", 7, 0, 0,
-                                      mpl_camera_names, mpl_camera_kinds};
-static const RecordSpec mpl_background = {"the background", "r g b", 3, 0, 0, mpl_rgb_names,
-                                          mpl_rgb_kinds};
-static const RecordSpec mpl_ambient = {"the ambient light", "r g b", 3, 0, 0, mpl_rgb_names,
-                                       mpl_rgb_kinds};
-static const RecordSpec mpl_sky = {"the sky", "r g b r g b", 6, 0, 0, mpl_sky_names,
-                                   mpl_sky_kinds};
-
 /* The shapes a primitive line names, and the numbers each takes. */
 typedef struct {
     const char *word; /* as the seed writes it; any case */
@@ -130,143 +82,6 @@ static const MplShape mpl_shapes[] = {
 enum { MPL_SHAPES = sizeof mpl_shapes / sizeof mpl_shapes[0] };
 
 static const char *const mpl_kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
-
-/* Says whether token t spells word in any case. */
-static int mpl_word_is(const Token *t, const char *word)
-{
-    size_t n = strlen(word);
-
-    if (t->len != n)
-        return 0;
-    for (size_t i = 0; i < n; i++) {
-        char a = t->text[i], b = word[i];
-        if ((a >= 'A' && a <= 'Z' ? a - 'A' + 'a' : a) != (b >= 'A' && b <= 'Z' ? b - 'A' + 'a' : b))
-            return 0;
-    }
-    return 1;
-}
-
-/* Says whether the len bytes at s are a C float literal's digits: a
- * number that only its trailing 'f' or 'F' keeps from reading. */
-static int mpl_float_suffix(const char *s, size_t len)
-{
-    double ignored;
-
-    return len >= 2 && (s[len - 1] == 'f' || s[len - 1] == 'F') &&
-           number_parse(s, len - 1, &ignored) != NUMBER_SYNTAX;
-}
-
-/* Writes seed 001's spellings of numbers as plain ones in rec: stray
- * commas before or after a field, or standing alone, go; so does a C float
- * literal's 'f' ("1.f", "0.5f"). The tokens keep the column of their first
- * character. */
-static void mpl_clean(Record *rec)
-{
-    int kept = 0, dropped = 0, stored = rec->count < LEX_MAX_TOKENS ? rec->count : LEX_MAX_TOKENS;
-
-    for (int k = 0; k < stored; k++) {
-        Token t = rec->tok[k];
-        while (k > 0 && t.len > 0 && t.text[t.len - 1] == ',')
-            t.len--;
-        while (k > 0 && t.len > 0 && t.text[0] == ',') {
-            t.text++;
-            t.len--;
-            t.column++;
-        }
-        if (t.len == 0) {
-            dropped++;
-            continue;
-        }
-        if (k > 0 && mpl_float_suffix(t.text, t.len))
-            t.len--;
-        rec->tok[kept++] = t;
-    }
-    rec->count -= dropped;
-}
-
-/* Records that rec's element could not be stored, scene_add_*() having
- * returned rc; returns -1. */
-static int mpl_fail_memory(Mpl *M, const Record *rec, const Scene *scene, long rc)
-{
-    return lex_fail_memory(&M->lex, rec, rc == SCENE_OVER_LIMIT, scene->memory_limit);
-}
-
-/* Checks that rec has a token at k, what the record needs there;
- * returns 0, or -1 with "expected WHAT (SYNTAX), found the end of the
- * line" recorded. */
-static int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const char *syntax)
-{
-    if (rec->count > k)
-        return 0;
-    mpl_fail(M, &rec->line, rec->end_column, "expected %s (%s), found the end of the line", what,
-             syntax);
-    return -1;
-}
-
-/* Keeps a warning at column of rec's line: a line seed 001's program read,
- * read here as it read it; returns 0, or -1 with the fault recorded when
- * memory runs out. */
-static int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fmt, ...)
-    ERROR_FORMAT(5, 6);
-static int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fmt, ...)
-{
-    char message[ERROR_MESSAGE_MAX];
-    Error w;
-    va_list ap;
-
-    va_start(ap, fmt);
-    vsnprintf(message, sizeof message, fmt, ap);
-    va_end(ap);
-    error_set_at(&w, M->lex.name, rec->line.number, column, rec->line.text, rec->line.len,
-                 "%s (as seed 001's program did; --strict refuses it)", message);
-    return scene_add_warning(scene, &w) == 0 ? 0 : mpl_fail_memory(M, rec, scene, -1);
-}
-
-/* Reads tokens first .. first + count - 1 of rec that are not numbers but
- * start with one followed by a letter ("1.5abc") as seed 001's program
- * did, up to the letter, with a warning each (not when strict); returns 0,
- * or -1 when memory runs out. */
-static int mpl_number_prefixes(Mpl *M, Scene *scene, Record *rec, int first, int count)
-{
-    for (int k = first; !M->strict && k < first + count && k < rec->count && k < LEX_MAX_TOKENS;
-         k++) {
-        Token *t = &rec->tok[k];
-        double v;
-        size_t n = t->len;
-        char q[64];
-        if (number_parse(t->text, t->len, &v) != NUMBER_SYNTAX)
-            continue;
-        while (n > 0 && (number_parse(t->text, n, &v) != NUMBER_OK ||
-                         !isalpha((unsigned char)t->text[n])))
-            n--;
-        if (n == 0)
-            continue; /* no number there: its own error */
-        if (mpl_warn(M, scene, rec, t->column + (int)n, "read %s as %.*s, up to its first letter",
-                     lex_quote(q, sizeof q, t), (int)n, t->text) != 0)
-            return -1;
-        t->len = n;
-    }
-    return 0;
-}
-
-/* Leaves out, with a warning (not when strict), rec's tokens from keep on:
- * what seed 001's program did not read ("2 words after the material's
- * name": noun "word", after "after the material's name"); returns 0, or
- * -1 when memory runs out. */
-static int mpl_ignore_rest(Mpl *M, Scene *scene, Record *rec, int keep, const char *noun,
-                           const char *after)
-{
-    int extra = rec->count - keep;
-
-    if (M->strict || extra <= 0 || keep >= LEX_MAX_TOKENS)
-        return 0;
-    if (mpl_warn(M, scene, rec, rec->tok[keep].column, "ignored %d %s%s %s", extra, noun,
-                 extra == 1 ? "" : "s", after) != 0)
-        return -1;
-    rec->count = keep;
-    rec->end_column = rec->tok[keep - 1].column + (int)rec->tok[keep - 1].len;
-    return 0;
-}
 
 /* Returns the path of texture token t, as texture_file_find() finds it
  * from the scene's folder in the folders seed 001's program looks in:
@@ -340,6 +155,38 @@ static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
     return lex_fail_extra(&M->lex, rec, 11, "the material's filter");
 }
 
+/* Reads texture token tex of material record rec into *pm: N (or n) for
+ * none, else a file found as seed 001's program found it; returns 0, or
+ * -1 with the fault recorded. */
+static int mpl_material_texture(Mpl *M, const Record *rec, Scene *scene, const Token *tex,
+                                NamedMaterial *pm)
+{
+    char *path;
+    Error inner;
+    int t;
+
+    if (tex->len == 1 && (tex->text[0] == 'N' || tex->text[0] == 'n'))
+        return 0;
+    path = mpl_texture_path(M, tex);
+    if (!path)
+        return -1;
+    t = texture_file_add(scene, path, &inner);
+    free(path);
+    if (t == TEXTURE_FILE_FAULT) {
+        lex_fail_file(&M->lex, rec, tex, "texture", &inner);
+        return -1;
+    }
+    if (t < 0)
+        return mpl_fail_memory(M, rec, scene, t);
+    pm->base.texture = t;
+    pm->texture = malloc(tex->len + 1);
+    if (!pm->texture)
+        return mpl_fail_memory(M, rec, scene, -1);
+    memcpy(pm->texture, tex->text, tex->len);
+    pm->texture[tex->len] = '\0';
+    return 0;
+}
+
 /* material -> 'm' name kind r g b stripes index glossiness texture [filter] */
 static int mpl_material_record(Mpl *M, const Record *line, Scene *scene)
 {
@@ -408,27 +255,8 @@ static int mpl_material_record(Mpl *M, const Record *line, Scene *scene)
     pm.base.filter = filter;
     pm.line = rec->line.number;
     mpl_model(&pm, (ShadingModel)model, v[4], v[5]);
-    if (!(tex->len == 1 && (tex->text[0] == 'N' || tex->text[0] == 'n'))) {
-        char *path = mpl_texture_path(M, tex);
-        Error inner;
-        int t;
-        if (!path)
-            return -1;
-        t = texture_file_add(scene, path, &inner);
-        free(path);
-        if (t == TEXTURE_FILE_FAULT) {
-            lex_fail_file(&M->lex, rec, tex, "texture", &inner);
-            return -1;
-        }
-        if (t < 0)
-            return mpl_fail_memory(M, rec, scene, t);
-        pm.base.texture = t;
-        pm.texture = malloc(tex->len + 1);
-        if (!pm.texture)
-            return mpl_fail_memory(M, rec, scene, -1);
-        memcpy(pm.texture, tex->text, tex->len);
-        pm.texture[tex->len] = '\0';
-    }
+    if (mpl_material_texture(M, rec, scene, tex, &pm) != 0)
+        return -1;
     pm.name = malloc(name->len + 1);
     if (!pm.name) {
         free(pm.texture);
@@ -575,191 +403,6 @@ static int mpl_light_record(Mpl *M, const Record *line, Scene *scene)
     }
     rc = scene_add_light(scene, &light);
     return rc != 0 ? mpl_fail_memory(M, rec, scene, rc) : 0;
-}
-
-/* camera -> 'c' Camera px py pz tx ty tz fov width height */
-static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
-{
-    double v[7], half;
-    int width, height;
-    char q[64];
-
-    if (lex_once(&M->lex, rec, &M->camera_line, "the camera") != 0 ||
-        mpl_need(M, rec, 10, "the camera's numbers", mpl_camera.syntax) != 0)
-        return -1;
-    for (int k = 0; k < 7; k++)
-        if (lex_number(&M->lex, rec, 2 + k, &mpl_camera, k, &v[k]) != 0)
-            return -1;
-    if (lex_whole_number(&M->lex, rec, 9, "the image width", "pixels", CAMERA_MAX_SIZE, &width) !=
-            0 ||
-        lex_whole_number(&M->lex, rec, 10, "the image height", "pixels", CAMERA_MAX_SIZE,
-                         &height) != 0)
-        return -1;
-    if (rec->count > 11)
-        return lex_fail_extra(&M->lex, rec, 11, "the image height");
-    if (!(v[6] < 180)) {
-        mpl_fail(M, &rec->line, rec->tok[8].column,
-                 "the camera's field of view must be less than 180 degrees, found %s",
-                 lex_quote(q, sizeof q, &rec->tok[8]));
-        return -1;
-    }
-    scene->camera_line = 1;
-    scene->look_from = vec3(v[0], v[1], v[2]);
-    scene->look_at = vec3(v[3], v[4], v[5]);
-    scene->fov = v[6];
-    /* The seed's field of view is vertical; the camera's, horizontal. */
-    half = angle_atan2(angle_tan(v[6] * ANGLE_PI / 360) * width, height);
-    switch (camera_look_at(&scene->camera, scene->look_from, scene->look_at, 2 * half, width,
-                           height)) {
-    case CAMERA_VIEW_OK:
-        return 0;
-    case CAMERA_VIEW_NO_DIRECTION:
-        mpl_fail(M, &rec->line, rec->tok[5].column,
-                 "the camera looks at its own position: its target must be elsewhere");
-        return -1;
-    default:
-        mpl_fail(M, &rec->line, rec->tok[8].column,
-                 "the camera's field of view %s is too narrow: the screen has no size in double "
-                 "precision",
-                 lex_quote(q, sizeof q, &rec->tok[8]));
-        return -1;
-    }
-}
-
-/* AO -> 'c' AO n [distance] | GI -> 'c' GI n [bounces]: ambient occlusion
- * and global illumination rays (seed 001's section IV, trace.h, seed001.h);
- * 0 for none. */
-static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
-{
-    const char *what = gi ? "the global illumination" : "the ambient occlusion";
-
-    if (lex_once(&M->lex, rec, gi ? &M->gi_line : &M->ao_line, what) != 0 ||
-        mpl_need(M, rec, 2, gi ? "the number of global illumination rays"
-                               : "the number of ambient occlusion rays",
-                 gi ? "c GI n [bounces]" : "c AO n [distance]") != 0 ||
-        lex_whole_number_in(&M->lex, rec, 2, gi ? "the number of global illumination rays"
-                                                : "the number of ambient occlusion rays",
-                            "rays", 0, SCENE_MAX_INDIRECT,
-                            gi ? &scene->gi_samples : &scene->ao_samples) != 0)
-        return -1;
-    if (rec->count > 4)
-        return lex_fail_extra(&M->lex, rec, 4, gi ? "the number of bounces" : "the distance");
-    if (rec->count == 4)
-        return gi ? lex_whole_number(&M->lex, rec, 3, "the number of bounces", "bounces",
-                                     SCENE_MAX_BOUNCES, &scene->gi_bounces)
-                  : lex_number(&M->lex, rec, 3, &mpl_ao_distance, 0, &scene->ao_distance);
-    return 0;
-}
-
-/* noise -> 'c' Noise level [min [max]]: adaptive sampling, each pixel
- * until its estimated error is at most level levels (0..255), between min
- * and max samples (render/noise.h). */
-static int mpl_noise_record(Mpl *M, const Record *rec, Scene *scene)
-{
-    const char *syntax = "c Noise level [min-spp [max-spp]]";
-
-    if (lex_once(&M->lex, rec, &M->noise_line, "the noise") != 0 ||
-        mpl_need(M, rec, 2, "the noise level", syntax) != 0 ||
-        lex_number(&M->lex, rec, 2, &mpl_noise, 0, &scene->noise) != 0)
-        return -1;
-    if (scene->noise > 255) {
-        mpl_fail(M, &rec->line, rec->tok[2].column,
-                 "the noise level must be at most 255 levels (an error the size of the whole "
-                 "range)");
-        return -1;
-    }
-    if (rec->count > 5)
-        return lex_fail_extra(&M->lex, rec, 5, "the noise");
-    if ((rec->count > 3 &&
-         lex_whole_number_in(&M->lex, rec, 3, "the least samples a pixel", "samples", 1,
-                             SCENE_MAX_SPP, &scene->noise_min_spp) != 0) ||
-        (rec->count > 4 &&
-         lex_whole_number_in(&M->lex, rec, 4, "the most samples a pixel", "samples", 1,
-                             SCENE_MAX_SPP, &scene->noise_max_spp) != 0))
-        return -1;
-    if (rec->count > 4 && scene->noise_max_spp < scene->noise_min_spp) {
-        mpl_fail(M, &rec->line, rec->tok[4].column,
-                 "the most samples a pixel (%d) is fewer than the least (%d)",
-                 scene->noise_max_spp, scene->noise_min_spp);
-        return -1;
-    }
-    return 0;
-}
-
-/* model -> 'c' Model seed001 | 'c' Model physical: the rules the picture
- * is made by (scene.h). */
-static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
-{
-    char q[64];
-
-    if (lex_once(&M->lex, rec, &M->model_line, "the model") != 0 ||
-        mpl_need(M, rec, 2, "the model", "c Model seed001 or c Model physical") != 0)
-        return -1;
-    if (mpl_word_is(&rec->tok[2], "seed001")) {
-        scene->model = SCENE_MODEL_SEED001;
-    } else if (mpl_word_is(&rec->tok[2], "physical")) {
-        scene->model = SCENE_MODEL_PHYSICAL;
-    } else {
-        mpl_fail(M, &rec->line, rec->tok[2].column,
-                 "unknown model %s (expected seed001, seed 001's program's rules, or physical)",
-                 lex_quote(q, sizeof q, &rec->tok[2]));
-        return -1;
-    }
-    return rec->count > 3 ? lex_fail_extra(&M->lex, rec, 3, "the model") : 0;
-}
-
-/* setting -> 'c' Camera ... | Background r g b | Sky r g b r g b | Ambient r g b
- *          | Samples n | AO n [distance] | GI n [bounces] | Model name
- *          | Noise level [min [max]] */
-static int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
-{
-    double v[6];
-    char q[64];
-
-    if (mpl_need(M, rec, 1, "the setting",
-                 "Camera, Background, Sky, Ambient, Samples, AO, GI, Model or Noise") != 0)
-        return -1;
-    if (mpl_word_is(&rec->tok[1], "Model"))
-        return mpl_model_record(M, rec, scene);
-    if (mpl_word_is(&rec->tok[1], "Noise"))
-        return mpl_noise_record(M, rec, scene);
-    if (mpl_word_is(&rec->tok[1], "AO") || mpl_word_is(&rec->tok[1], "GI"))
-        return mpl_indirect_record(M, rec, scene, mpl_word_is(&rec->tok[1], "GI"));
-    if (mpl_word_is(&rec->tok[1], "Camera"))
-        return mpl_camera_record(M, rec, scene);
-    if (mpl_word_is(&rec->tok[1], "Background") || mpl_word_is(&rec->tok[1], "Sky")) {
-        int sky = mpl_word_is(&rec->tok[1], "Sky");
-        if (lex_once(&M->lex, rec, &M->background_line, "the background") != 0 ||
-            lex_numbers(&M->lex, rec, 2, sky ? &mpl_sky : &mpl_background, v) < 0)
-            return -1;
-        scene->has_sky = sky;
-        scene->sky = sky ? colour(v[0] * 255, v[1] * 255, v[2] * 255) : colour(0, 0, 0);
-        scene->background = sky ? colour(v[3] * 255, v[4] * 255, v[5] * 255)
-                                : colour(v[0] * 255, v[1] * 255, v[2] * 255);
-        return 0;
-    }
-    if (mpl_word_is(&rec->tok[1], "Ambient")) {
-        if (lex_once(&M->lex, rec, &M->ambient_line, "the ambient light") != 0 ||
-            lex_numbers(&M->lex, rec, 2, &mpl_ambient, v) < 0)
-            return -1;
-        scene->ambient = colour(v[0] * 255, v[1] * 255, v[2] * 255);
-        scene->has_ambient = 1;
-        return 0;
-    }
-    if (mpl_word_is(&rec->tok[1], "Samples")) {
-        if (lex_once(&M->lex, rec, &M->samples_line, "the number of samples per pixel") != 0 ||
-            mpl_need(M, rec, 2, "the number of samples per pixel", "c Samples n") != 0)
-            return -1;
-        if (rec->count > 3)
-            return lex_fail_extra(&M->lex, rec, 3, "the number of samples per pixel");
-        return lex_whole_number(&M->lex, rec, 2, "the number of samples per pixel", "samples",
-                                CAMERA_MAX_SAMPLES, &scene->samples);
-    }
-    mpl_fail(M, &rec->line, rec->tok[1].column,
-             "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO, GI, "
-             "Model or Noise)",
-             lex_quote(q, sizeof q, &rec->tok[1]));
-    return -1;
 }
 
 /* scene -> line* */
