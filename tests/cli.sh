@@ -204,6 +204,15 @@ expect_grep "seed 001's size and samples" "raytrace: 500 x 500 pixels, 4 samples
 "$RT" --gi 0 --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "occlusion open to the sky changes nothing" 1 "152 152 152" "$T/px"
 expect_exit "--gi-bounces by seed 001's model" 0 "$RT" --gi-bounces 2 --size 2x2 "$T/flat-mpl.txt" "$T/b.ppm"
 expect_grep "--gi-bounces note" "raytrace: note: --gi-bounces changes nothing here: seed 001's model gathers the colours its rays meet" "$T/err"
+# The tracer's own rule for the note on --ao: a physical MPL scene whose
+# materials take no ambient light (metal: ka = 0) has nothing to darken,
+# one with a matte material has (c Ambient lights it).
+printf 'c Ambient 0.2 0.2 0.2\nm m METALLIC 1 1 1 0 0 0 N\np Sphere 0 0 3 1 m\nl PointLight 0 0 0 1 1 1 1\n' >"$T/metal-mpl.txt"
+expect_exit "--ao on metal" 0 "$RT" --model physical --ao 4 --size 8x8 "$T/metal-mpl.txt" "$T/m.ppm"
+expect_grep "--ao note on metal" "raytrace: note: --ao changes nothing here" "$T/err"
+sed 's/METALLIC/MATTE/' "$T/metal-mpl.txt" >"$T/matte-mpl.txt"
+expect_exit "--ao on matte" 0 "$RT" --model physical --ao 4 --size 8x8 "$T/matte-mpl.txt" "$T/m.ppm"
+grep -q 'note' "$T/err" && fail "--ao on a matte MPL scene is said to change nothing" "$(cat "$T/err")" || pass
 # Seed 001's files: textures beside the scene's folder (its repository's
 # Scene/ and Textures/), BMP textures, and the layout of raytrace 0.1.
 mkdir -p "$T/repo/Scene" "$T/repo/Textures"

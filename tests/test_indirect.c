@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "render/model.h"
 #include "render/render.h"
 #include "render/trace.h"
 #include "scenefile/course.h"
@@ -29,8 +30,10 @@ static Colour indirect_seen(const Scene *sc, Indirect in, Vec3 o, Vec3 d, RayCou
 {
     TraceSample s = {0, 0, 0, 1, NULL};
     Ray r = {o, vec3_normalize(d)};
-    Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = counts, .indirect = in,
-                .sample = &s};
+    Tracer t = model_tracer(sc, 10, counts);
+
+    t.indirect = in;
+    t.sample = &s;
 
     t.ao_grid = sampler_grid((unsigned)(in.ao_samples ? in.ao_samples : 1));
     t.gi_grid = sampler_grid((unsigned)(in.gi_samples ? in.gi_samples : 1));

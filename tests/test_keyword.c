@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "math/number.h"
+#include "render/model.h"
 #include "render/trace.h"
 #include "rng.h"
 #include "scene/camera.h"
@@ -157,7 +158,7 @@ static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int depth)
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
 
-    Tracer t = {.scene = sc, .max_depth = depth, .cut = NULL, .counts = &counts};
+    Tracer t = model_tracer(sc, depth, &counts);
 
     return trace_ray(&t, &r);
 }

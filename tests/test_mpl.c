@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "render/model.h"
 #include "render/trace.h"
 #include "scenefile/load.h"
 #include "scenefile/mpl.h"
@@ -289,9 +290,10 @@ static Colour seen(Scene *sc, Vec3 o, Vec3 d)
 {
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
-    Tracer t = {.scene = sc, .max_depth = 10, .cut = NULL, .counts = &counts};
+    Tracer t;
 
     sc->model = SCENE_MODEL_PHYSICAL;
+    t = model_tracer(sc, 10, &counts);
     return trace_ray(&t, &r);
 }
 
@@ -461,8 +463,7 @@ static void mpl_saved_scene_reads_back_the_same(void)
                 Ray r = camera_ray(&a.camera, x + 0.5, y + 0.5), s = camera_ray(&b.camera, x + 0.5,
                                                                                 y + 0.5);
                 RayCounts n = {0};
-                Tracer ta = {.scene = &a, .max_depth = 5, .cut = NULL, .counts = &n},
-                       tb = {.scene = &b, .max_depth = 5, .cut = NULL, .counts = &n};
+                Tracer ta = model_tracer(&a, 5, &n), tb = model_tracer(&b, 5, &n);
                 Colour ca = trace_ray(&ta, &r), cb = trace_ray(&tb, &s);
                 if (memcmp(&ca, &cb, sizeof ca) != 0)
                     test_fail(__FILE__, __LINE__, "case %zu: pixel (%d, %d) differs:\n%s", i, x,

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "render/model.h"
 #include "render/render.h"
 #include "render/trace.h"
 #include "rng.h"
@@ -82,7 +83,7 @@ static void check_pixels_are_their_rays(const char *text)
                           c->top_left.z + fx * c->u.z + fy * c->v.z);
             Ray ray = {c->eye, vec3_normalize(vec3_sub(p, c->eye))};
             Ray got = camera_ray(c, i + 0.5, j + 0.5);
-            Tracer t = {.scene = &sc, .max_depth = opts.max_depth, .cut = NULL, .counts = &counts};
+            Tracer t = model_tracer(&sc, opts.max_depth, &counts);
             Colour want = trace_ray(&t, &ray);
             const unsigned char *px = img.rgb + 3 * ((size_t)j * (size_t)img.width + (size_t)i);
             bad += memcmp(&got.dir, &ray.dir, sizeof ray.dir) != 0 ||
@@ -500,12 +501,12 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
             Cut cut;
-            Tracer every = {.scene = &sc, .max_depth = 30, .cut = NULL, .counts = &all},
-                   cutting = {.scene = &sc, .max_depth = 30, .cut = &cut, .counts = &left};
-            Tracer again = {.scene = &sc, .max_depth = 30, .cut = &cut, .counts = &later};
+            Tracer every = model_tracer(&sc, 30, &all), cutting = model_tracer(&sc, 30, &left);
+            Tracer again = model_tracer(&sc, 30, &later);
             Colour full = trace_ray(&every, &ray), part;
             double eta;
 
+            cutting.cut = again.cut = &cut;
             cut_init(&cut, &sc, i % 2 ? 5 : 0.05);
             part = trace_ray(&cutting, &ray);
             eta = 1e-9 * cut_bound(&cut, 30);
@@ -551,10 +552,10 @@ static void render_cutoff_leaves_out_shadow_rays(void)
         Ray ray = {vec3(0, 0, -5),
                    vec3_normalize(vec3(rng_range(-0.2, 0.2), rng_range(-0.2, 0.2), 1))};
         Cut cut;
-        Tracer every = {.scene = &sc, .max_depth = 10, .cut = NULL, .counts = &all},
-               cutting = {.scene = &sc, .max_depth = 10, .cut = &cut, .counts = &left};
+        Tracer every = model_tracer(&sc, 10, &all), cutting = model_tracer(&sc, 10, &left);
         Colour full = trace_ray(&every, &ray), part;
 
+        cutting.cut = &cut;
         cut_init(&cut, &sc, 5);
         part = trace_ray(&cutting, &ray);
         bad += !(full.r - part.r >= 0 && full.r - part.r <= cut.skipped);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "image/image.h"
+#include "render/model.h"
 #include "render/seed001.h"
 #include "render/trace.h"
 #include "scene/mapping.h"
@@ -34,8 +35,10 @@ static Colour seed_seen(const Scene *sc, Vec3 o, Vec3 d, int ao, int gi, int no_
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
     TraceSample sample = {3, 5, 0, 1, NULL};
-    Tracer t = {.scene = sc, .max_depth = SEED001_MAX_DEPTH, .cut = NULL, .counts = &counts,
-                .sample = &sample, .no_shadows = no_shadows};
+    Tracer t = model_tracer(sc, SEED001_MAX_DEPTH, &counts);
+
+    t.sample = &sample;
+    t.no_shadows = no_shadows;
 
     t.indirect.ao_samples = ao;
     t.indirect.ao_distance = SEED001_AO_DISTANCE;

@@ -1,6 +1,7 @@
 /* test_trace.c: shading on tiny scenes whose colours are known exactly. */
 #include <math.h>
 
+#include "render/model.h"
 #include "render/trace.h"
 #include "render/visibility.h"
 #include "scene/scene.h"
@@ -38,7 +39,7 @@ static Colour seen(const Scene *sc, Vec3 o, Vec3 d, int max_depth)
 {
     Ray r = {o, vec3_normalize(d)};
     RayCounts counts = {0};
-    Tracer t = {.scene = sc, .max_depth = max_depth, .cut = NULL, .counts = &counts};
+    Tracer t = model_tracer(sc, max_depth, &counts);
 
     return trace_ray(&t, &r);
 }

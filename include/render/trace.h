@@ -44,6 +44,11 @@ Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
  * the blend of its sky and background by the direction's height. */
 Colour trace_background(const Scene *scene, const Ray *ray);
 
+/* Says whether some point of scene receives ambient light, for ambient
+ * occlusion to darken: the ambient light is not black, and a course
+ * scene sets it, or some named material has ka > 0. */
+int trace_has_ambient(const Scene *scene);
+
 /* Traces the ray d that a cut-off left out, leaving out in turn what t's
  * cut-off allows (and keeping it there, which may move its deferred
  * array); returns what it adds to its sample's colour. */

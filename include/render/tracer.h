@@ -34,7 +34,14 @@ typedef struct {
 /* The kinds of ray that leave a surface. */
 typedef enum { RAY_SHADOW, RAY_REFLECTION, RAY_REFRACTION } RayKind;
 
+/* The branches a path's key follows (sampler_branch()), for every model:
+ * a mirror or refracted ray takes its RayKind's, a gathering ray
+ * TRACER_GATHERED + its number; the occlusion and gathering rays of a
+ * point draw from their own. */
+enum { TRACER_OCCLUSION = 8, TRACER_GATHER = 9, TRACER_GATHERED = 16 };
+
 struct Cut;
+struct Model;
 
 /* Ambient occlusion and global illumination (trace.h): how many rays, how
  * far, how many bounces. Zero samples: off, and not a ray more. */
@@ -74,6 +81,10 @@ typedef struct {
                             (no shadow rays); 0: shadows */
     double footprint_scale; /* a sample's primary ray differentials are the
                             pixel's times this (render.c) */
+    const struct Model *model; /* the scene's lighting model (model.h) */
+    int named;           /* 1: the rules of named materials (the scene has
+                            some), 0: the course's; chosen once, by
+                            model_tracer() */
 } Tracer;
 
 #endif

@@ -376,4 +376,12 @@ size_t scene_object_count(const Scene *scene);
  * camera and its screen. */
 double scene_size(const Scene *scene);
 
+/* Says whether scene is drawn by seed 001's program's rules (its model),
+ * which its texture coordinates follow too (mapping.h); the lighting
+ * models' other choices are render/model.h's. */
+static inline int scene_seed001_rules(const Scene *scene)
+{
+    return scene->model == SCENE_MODEL_SEED001;
+}
+
 #endif

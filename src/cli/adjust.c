@@ -8,7 +8,7 @@
 
 #include "base/hash.h"
 #include "render/noise.h"
-#include "render/seed001.h"
+#include "render/model.h"
 #include "scene/camera.h"
 #include "scene/scene_filter.h"
 
@@ -18,30 +18,19 @@
  * scene's size, seed 001's 2) and the bounces. */
 static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *in)
 {
-    int seed = scene->model == SCENE_MODEL_SEED001;
+    const Model *model = model_of(scene);
     double d = opts->ao_distance > 0 ? opts->ao_distance : scene->ao_distance;
 
-    if (!(d > 0) && seed)
-        d = SEED001_AO_DISTANCE;
-    in->ao_samples = opts->ao >= 0               ? opts->ao
-                     : scene->ao_samples >= 0 ? scene->ao_samples
-                     : seed                   ? SEED001_AO_RAYS
-                                              : 0;
+    if (!(d > 0))
+        d = model->ao_distance;
+    in->ao_samples = opts->ao >= 0 ? opts->ao : scene->ao_samples >= 0 ? scene->ao_samples
+                                                                        : model->ao_rays;
     in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
-    in->gi_samples = opts->gi >= 0               ? opts->gi
-                     : scene->gi_samples >= 0 ? scene->gi_samples
-                     : seed                   ? SEED001_GI_RAYS
-                                              : 0;
+    in->gi_samples = opts->gi >= 0 ? opts->gi : scene->gi_samples >= 0 ? scene->gi_samples
+                                                                        : model->gi_rays;
     in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
                      : scene->gi_bounces > 0 ? scene->gi_bounces
                                              : 1;
-}
-
-/* Says whether the physical model gives scene any ambient light for
- * ambient occlusion to darken. */
-static int adjust_has_ambient(const Scene *scene)
-{
-    return colour_max(scene->ambient) > 0 && (scene->has_ambient || scene->format != SCENE_COURSE);
 }
 
 /* Prints "raytrace: note: WHAT" on standard error, the one place that
@@ -50,6 +39,13 @@ static void adjust_note(const Options *opts, const char *what)
 {
     if (!opts->quiet)
         fprintf(stderr, "raytrace: note: %s\n", what);
+}
+
+/* Prints "raytrace: note: OPTION changes nothing here: WHY". */
+static void adjust_note_why(const Options *opts, const char *option, const char *why)
+{
+    if (!opts->quiet)
+        fprintf(stderr, "raytrace: note: %s changes nothing here: %s\n", option, why);
 }
 
 /* Sets ropts' adaptive sampling from the command line, else the scene
@@ -105,14 +101,14 @@ static int adjust_has_patterns(const Scene *scene)
 
 void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
 {
-    int mpl = scene->format == SCENE_MPL, seed;
+    const Model *model;
 
-    if (opts->model >= 0 && !mpl)
+    if (opts->model >= 0 && !model_choosable(scene))
         adjust_note(opts, "--model changes nothing here: it chooses how MPL scenes are lit; the "
                         "course and keyword formats have one model");
     else if (opts->model >= 0)
         scene->model = (SceneModel)opts->model;
-    seed = scene->model == SCENE_MODEL_SEED001;
+    model = model_of(scene);
     if (opts->width > 0)
         camera_resize(&scene->camera, opts->width, opts->height);
     if (opts->texture_filter >= 0 && !adjust_has_patterns(scene))
@@ -120,21 +116,20 @@ void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
                           "stripes");
     else if (opts->texture_filter >= 0)
         scene_set_texture_filter(scene, (TextureFilter)opts->texture_filter);
-    ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : seed ? SEED001_MAX_DEPTH : 10;
+    ropts->max_depth = opts->max_depth >= 0 ? opts->max_depth : model->max_depth;
     ropts->samples = opts->samples ? opts->samples : scene->samples ? scene->samples : 1;
     ropts->no_shadows = opts->no_shadows;
     adjust_noise(opts, scene, ropts);
     adjust_indirect(opts, scene, &ropts->indirect);
-    if (opts->ao > 0 && !seed && !adjust_has_ambient(scene))
+    if (opts->ao > 0 && !model->occludes(scene))
         adjust_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
                         "light, and this scene has none (add one: the course's ambient:, the "
                         "MPL format's c Ambient)");
     if (opts->ao_distance > 0 && ropts->indirect.ao_samples == 0)
         adjust_note(opts, "--ao-distance changes nothing here: no ambient occlusion rays are cast "
                         "(--ao N)");
-    if (opts->gi_bounces > 0 && seed && ropts->indirect.gi_samples > 0)
-        adjust_note(opts, "--gi-bounces changes nothing here: seed 001's model gathers the colours "
-                        "its rays meet, one bounce (--model physical gathers light)");
+    if (opts->gi_bounces > 0 && model->bounces_note && ropts->indirect.gi_samples > 0)
+        adjust_note_why(opts, "--gi-bounces", model->bounces_note);
     else if (opts->gi_bounces > 0 && ropts->indirect.gi_samples == 0)
         adjust_note(opts, "--gi-bounces changes nothing here: no global illumination rays are "
                         "cast (--gi N)");

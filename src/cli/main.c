@@ -23,7 +23,7 @@
 #include "image/writer.h"
 #include "math/number.h"
 #include "render/render.h"
-#include "render/seed001.h"
+#include "render/model.h"
 #include "scene/scene.h"
 #include "scene/scene_accel.h"
 #include "scene/scene_filter.h"
@@ -477,7 +477,7 @@ static int main_render(const Options *opts)
     }
     if (main_image(opts, &wopts, &scene, rows, &img, &err) != 0)
         goto fail_scene;
-    if ((scene.model == SCENE_MODEL_SEED001 && image_encode_gamma(&img, SEED001_GAMMA) != 0) ||
+    if ((model_of(&scene)->gamma > 0 && image_encode_gamma(&img, model_of(&scene)->gamma) != 0) ||
         main_noise_record(opts, &img, &ropts) != 0) {
         error_set(&err, opts->scene_path, "out of memory");
         goto fail_image_only;

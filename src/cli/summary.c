@@ -7,7 +7,7 @@
 #include "accel/light_buffer.h"
 #include "base/process.h"
 #include "math/number.h"
-#include "render/seed001.h"
+#include "render/model.h"
 
 /* Prints, for -v, light buffer lb (light_buffer.h), around `what`. */
 static void summary_buffer(const char *what, const LightBuffer *lb)
@@ -50,7 +50,7 @@ const char *summary_samples_text(const RenderOptions *ropts)
 
 /* Prints the -v summary: size, threads, rays by kind, the model when it
  * is seed 001's, time, speed, peak memory. */
-static void summary_statistics(const Image *img, const RenderOptions *ropts, SceneModel model,
+static void summary_statistics(const Image *img, const RenderOptions *ropts, const Model *model,
                             int threads, const RayCounts *c, double seconds)
 {
     unsigned long long all = c->primary + c->shadow + c->reflection + c->refraction +
@@ -66,10 +66,10 @@ static void summary_statistics(const Image *img, const RenderOptions *ropts, Sce
             "raytrace: rays: %llu primary, %llu shadow, %llu reflection, %llu refraction, "
             "%s%llu in all\n",
             c->primary, c->shadow, c->reflection, c->refraction, indirect, all);
-    if (model == SCENE_MODEL_SEED001)
-        fprintf(stderr, "raytrace: seed 001's model: its program's light, occlusion and "
-                        "gathering; gamma %g\n",
-                SEED001_GAMMA);
+    if (model->verbose && model->gamma > 0)
+        fprintf(stderr, "raytrace: %s; gamma %g\n", model->verbose, model->gamma);
+    else if (model->verbose)
+        fprintf(stderr, "raytrace: %s\n", model->verbose);
     if (ropts->indirect.ao_samples > 0)
         fprintf(stderr, "raytrace: ambient occlusion: %d rays a point, distance %g\n",
                 ropts->indirect.ao_samples, ropts->indirect.ao_distance);
@@ -124,7 +124,7 @@ void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *
                 scene->accel->node_count, scene->accel->depth, times->accel,
                 scene->accel->avx2 ? ", box tests in AVX2 and FMA" : "");
     summary_buffers(scene);
-    summary_statistics(img, ropts, scene->model, threads, counts, times->render);
+    summary_statistics(img, ropts, model_of(scene), threads, counts, times->render);
     if (ropts->spp)
         summary_noise(ropts, (size_t)img->width * (size_t)img->height, spp_map);
     fprintf(stderr, "raytrace: wrote the image in %.3f s\n", times->write);

@@ -6,9 +6,9 @@
 
 #include "accel/bvh.h"
 #include "render/cut.h"
+#include "render/model.h"
 #include "render/noise.h"
 #include "render/sampler.h"
-#include "render/seed001.h"
 #include "render/trace.h"
 #include "scene/camera.h"
 
@@ -32,12 +32,10 @@ typedef struct {
 } RenderRow;
 
 /* Returns the colour seen along the primary ray `ray` by the rules of the
- * scene's model: the physical model's (trace.h) or seed 001's (seed001.h),
- * chosen here alone. */
+ * scene's model (model.h). */
 RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
-    return t->scene->model == SCENE_MODEL_SEED001 ? seed001_trace_diff(t, ray, diff)
-                                                  : trace_ray_diff(t, ray, diff);
+    return t->model->trace(t, ray, diff);
 }
 
 /* Stores in *out the differentials of pixel (x, y)'s primary rays when
@@ -348,7 +346,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
      * bytes is for linear ones. */
     int noise = opts->noise.level > 0;
     int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0 &&
-                  !img->encode && scene->model == SCENE_MODEL_PHYSICAL && !noise;
+                  !img->encode && model_of(scene)->may_cut && !noise;
     SamplerGrid g = noise ? sampler_progressive() : sampler_grid((unsigned)opts->samples);
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
@@ -367,11 +365,17 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         Cut cut = proto; /* the thread's own: it keeps the rays left out */
         TraceSample sample = {0, 0, 0, g.n, NULL};
         uint32_t occluders[TRACE_OCCLUDERS];
-        Tracer t = {scene, opts->max_depth, cutting ? &cut : NULL, &mine, opts->indirect, &sample,
-                    render_rays_grid(&g, opts->indirect.ao_samples),
-                    render_rays_grid(&g, opts->indirect.gi_samples), g, occluders,
-                    opts->no_shadows,
-                    render_footprint_scale(noise ? noise_most(&opts->noise) : g.n)};
+        Tracer t = model_tracer(scene, opts->max_depth, &mine);
+
+        t.cut = cutting ? &cut : NULL;
+        t.indirect = opts->indirect;
+        t.sample = &sample;
+        t.ao_grid = render_rays_grid(&g, opts->indirect.ao_samples);
+        t.gi_grid = render_rays_grid(&g, opts->indirect.gi_samples);
+        t.path_grid = g;
+        t.occluders = occluders;
+        t.no_shadows = opts->no_shadows;
+        t.footprint_scale = render_footprint_scale(noise ? noise_most(&opts->noise) : g.n);
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;

@@ -12,11 +12,6 @@
 #include "render/trace.h"
 #include "scene/mapping.h"
 
-/* The branches a path's key follows (sampler_branch()), as in trace.c: a
- * mirror or refracted ray takes its RayKind's; the occlusion and gathering
- * rays of a point draw from their own. */
-enum { SEED001_OCCLUSION = 8, SEED001_GATHER = 9 };
-
 /* Returns the ray parameter at which the program put the ray's hit on
  * the infinite cylinder c, or 0 when it found none: it measured the
  * distance to the nearer crossing across the ground (in the xz plane,
@@ -144,7 +139,7 @@ static double seed001_occlusion(const Tracer *t, const Shade *sh, Vec3 n, uint64
     real reach = (real)t->indirect.ao_distance;
     double sum = 0;
 
-    key = sampler_branch(key, SEED001_OCCLUSION);
+    key = sampler_branch(key, TRACER_OCCLUSION);
     for (unsigned i = 0; i < rays; i++) {
         Ray r = seed001_indirect_ray(t, &t->ao_grid, rays, i, key, sh, n);
         Hit hit;
@@ -163,7 +158,7 @@ static Colour seed001_gather(const Tracer *t, const Shade *sh, Vec3 n, uint64_t 
     unsigned rays = (unsigned)t->indirect.gi_samples;
     Colour sum = colour(0, 0, 0);
 
-    key = sampler_branch(key, SEED001_GATHER);
+    key = sampler_branch(key, TRACER_GATHER);
     for (unsigned i = 0; i < rays; i++) {
         Ray r = seed001_indirect_ray(t, &t->gi_grid, rays, i, key, sh, n);
         Hit hit;

@@ -21,11 +21,6 @@ typedef struct {
     const RayDiff *diff;
 } TracePath;
 
-/* The branches a path's key follows (sampler_branch()): a mirror or
- * refracted ray takes its RayKind's, a gathering ray TRACE_GATHERED + its
- * number; the occlusion and gathering rays of a point draw from their own. */
-enum { TRACE_OCCLUSION = 8, TRACE_GATHER = 9, TRACE_GATHERED = 16 };
-
 /* The colour along a ray of depth `depth`, reached with `weight` (the
  * product of the mirror and transparency weights from the primary ray),
  * leaving out the secondary rays t's cut-off allows: in a course scene,
@@ -45,7 +40,6 @@ static inline TracePath trace_branch(const Tracer *t, TracePath path, unsigned b
         path.key = sampler_branch(path.key, branch);
     return path;
 }
-
 
 /* Counts a mirror or refracted ray (kind) as cast. */
 static inline void trace_count_secondary(RayKind kind, RayCounts *counts)
@@ -145,6 +139,27 @@ static inline Colour trace_named_secondary(const Tracer *t, const Ray *ray, cons
     return colour_mul(trace_named_path(t, &d.ray, depth, weight, next), share);
 }
 
+/* Says whether a point of a course scene receives ambient light (for
+ * its occlusion to darken). */
+static inline int trace_course_ambient(const Scene *scene)
+{
+    return scene->has_ambient && colour_max(scene->ambient) > 0;
+}
+
+/* Says whether a point of named material pm receives ambient light. */
+static inline int trace_named_ambient(const Scene *scene, const NamedMaterial *pm)
+{
+    return pm->ka > 0 && colour_max(scene->ambient) > 0;
+}
+
+int trace_has_ambient(const Scene *scene)
+{
+    for (size_t k = 0; k < scene->named_count; k++)
+        if (trace_named_ambient(scene, &scene->named[k]))
+            return 1;
+    return scene->named_count == 0 && trace_course_ambient(scene);
+}
+
 Colour trace_deferred(const Tracer *t, CutRay d)
 {
     /* The cut-off is off under global illumination (render.c), so a
@@ -154,7 +169,7 @@ Colour trace_deferred(const Tracer *t, CutRay d)
     if (d.kind == RAY_SHADOW)
         return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax, NULL)));
     trace_count_secondary(d.kind, t->counts);
-    if (t->scene->named_count > 0)
+    if (t->named)
         return colour_mul(trace_named_path(t, &d.ray, d.depth, d.weight, none), d.weight);
     /* A course scene's weights are grey. */
     return colour_scale(trace_path(t, &d.ray, d.depth, d.weight.r, none), d.weight.r);
@@ -169,7 +184,7 @@ Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
     TracePath primary = {0, 0, diff};
 
-    if (t->scene->named_count > 0)
+    if (t->named)
         return trace_named_path(t, ray, 0, colour(1, 1, 1), primary);
     return trace_path(t, ray, 0, 1, primary);
 }
@@ -183,7 +198,7 @@ static double trace_occlusion(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns)
 {
     const TraceSample *s = t->sample;
     unsigned rays = (unsigned)t->indirect.ao_samples, open = 0;
-    uint64_t key = sampler_branch(0, TRACE_OCCLUSION);
+    uint64_t key = sampler_branch(0, TRACER_OCCLUSION);
 
     for (unsigned i = 0; i < rays; i++) {
         double d[3];
@@ -264,11 +279,11 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
     int first = path.bounce == 0;
     unsigned rays = first ? (unsigned)t->indirect.gi_samples : 1;
     const SamplerGrid *g = first ? &t->gi_grid : &t->path_grid;
-    uint64_t key = sampler_branch(path.key, TRACE_GATHER);
+    uint64_t key = sampler_branch(path.key, TRACER_GATHER);
     Colour sum = colour(0, 0, 0);
 
     for (unsigned i = 0; i < rays; i++) {
-        TracePath next = {sampler_branch(path.key, TRACE_GATHERED + i), path.bounce + 1, NULL};
+        TracePath next = {sampler_branch(path.key, TRACER_GATHERED + i), path.bounce + 1, NULL};
         RayDiff spread;
         double d[3];
         Ray r;
@@ -283,7 +298,7 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
             next.diff = &spread;
         }
         t->counts->gather++;
-        sum = colour_add(sum, t->scene->named_count > 0
+        sum = colour_add(sum, t->named
                                   ? trace_named_path(t, &r, depth, weight, next)
                                   : trace_path(t, &r, depth, weight.r, next));
     }
@@ -407,7 +422,7 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     /* Ambient occlusion at the points the camera sees, where there is
      * ambient light to hide. */
     if (t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
-        scene->named[sh.material.named].ka > 0 && colour_max(scene->ambient) > 0)
+        trace_named_ambient(scene, &scene->named[sh.material.named]))
         sh.ambient = trace_occlusion(t, &sh, n, ns);
     return trace_named(t, ray, &sh, n, ns, depth, weight, path);
 }
@@ -437,7 +452,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     own = 1 - r - tr;
     own = own > 0 ? own : 0;
     if (own > 0 && t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
-        scene->has_ambient && colour_max(scene->ambient) > 0)
+        trace_course_ambient(scene))
         sh.ambient = trace_occlusion(t, &sh, n, ns);
     c = shade_local(t, &sh, n, ns, weight * own);
     if (own > 0 && trace_gathers(t, path))

@@ -52,7 +52,7 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
 {
     int k = -scene->length_exponent;
     /* Its program's own rules under its model; ours under the physical. */
-    int program = scene->model == SCENE_MODEL_SEED001;
+    int program = scene_seed001_rules(scene);
     Vec3 p = vec3_ldexp(sp->point, k);
     double scale = 10;
 
