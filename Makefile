@@ -143,7 +143,14 @@ ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
 
-TEST_SRC := $(wildcard tests/test_*.c) tests/unit.c
+TEST_SRC := $(sort $(wildcard tests/test_*.c)) tests/unit.c
+# The unit suites, one a file: tests/test_NAME.c defines NAME_tests[], and
+# unit.c runs every suite of this list, rewritten when the files change.
+UNIT_SUITES := $(patsubst tests/test_%.c,X(%),$(filter tests/test_%,$(TEST_SRC)))
+SUITES_H := $(BUILD)/tests/suites.h
+ifneq ($(shell cat $(SUITES_H) 2>/dev/null),$(UNIT_SUITES))
+$(shell mkdir -p $(BUILD)/tests && echo '$(UNIT_SUITES)' > $(SUITES_H))
+endif
 FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg tile
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
@@ -204,6 +211,10 @@ $(BUILD)/accel/bvh_query_avx2.o: src/accel/bvh_query.c $(FLAGS_STAMP)
 $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/tests/unit.o: tests/unit.c $(SUITES_H) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CPPFLAGS) -Itests -I$(BUILD)/tests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 # make test, README's second command: the quick suite, at most a minute on
 # two cores from a fresh clone, build included: the unit tests, the golden

@@ -9,7 +9,13 @@
 #  3. No source files call each other in a circle: from the object files
 #     of src/ (in $BUILD, default build), file A calls file B when A uses
 #     a function or object that B defines.
-#  4. The checks themselves fail on a tree with a backward include or a
+#  4. The house's sizes: no function in src/ over 100 lines (help texts,
+#     functions named *_help, aside), no source file over 700 lines,
+#     docs/design.md at most 450 lines.
+#  5. Each tests/test_NAME.c is named after a module, src/*/NAME.c (or
+#     NAME_ASPECT for one side of it, or NAME for a module cut into
+#     src/*/NAME_*.c files), and README's table of tests names it.
+#  6. The checks themselves fail on a tree with a backward include or a
 #     circle planted in a copy of this one, and on two objects that call
 #     each other.
 #
@@ -71,6 +77,42 @@ else
     circles=$(call_circles $objects)
     [ -z "$circles" ] && pass || fail "source files call each other in a circle" "$circles"
 fi
+# long_functions FILE...: "FILE:LINE NAME LENGTH" for each function over
+# 100 lines (a definition starts at column 0 and ends at its closing
+# brace at column 0).
+long_functions() {
+    awk 'FNR == 1 { start = 0 }
+         /^[A-Za-z].*\(/ && !/;[ \t]*$/ && !start { start = FNR; name = $0 }
+         /^}/ && start { if (FNR - start + 1 > 100 && name !~ /_help\(/)
+                             print FILENAME ":" start " " FNR - start + 1 " lines: " name
+                         start = 0 }' "$@"
+}
+
+long=$(long_functions src/*/*.c)
+[ -z "$long" ] && pass || fail "functions over 100 lines" "$long"
+big=$(wc -l src/*/*.c src/*/*.h include/*/*.h | awk '$2 != "total" && $1 > 700')
+[ -z "$big" ] && pass || fail "source files over 700 lines" "$big"
+[ "$(wc -l <docs/design.md)" -le 450 ] && pass || fail "docs/design.md is over 450 lines" "$(wc -l <docs/design.md)"
+printf 'static int f(void)\n{\n' >"$T/long.c"
+i=0; while [ $i -lt 100 ]; do echo '    ;' >>"$T/long.c"; i=$((i + 1)); done
+printf '    return 0;\n}\n' >>"$T/long.c"
+long_functions "$T/long.c" | grep -q 'long.c:1 ' && pass || fail "a function of 103 lines goes unseen"
+
+for t in tests/test_*.c; do
+    name=${t#tests/test_}
+    name=${name%.c}
+    found=
+    for m in src/*/*.c; do
+        m=${m##*/}
+        m=${m%.c}
+        case $name in "$m" | "$m"_*) found=1 ;; esac
+        case $m in "$name"_*) found=1 ;; esac
+    done
+    [ -n "$found" ] || fail "$t is named after no module of src/"
+    grep -q "\`${t#tests/}\`" README.md || fail "README's table of tests does not name ${t#tests/}"
+done
+pass
+
 printf 'int b(void);\nint a(int n) { return n ? b() : 0; }\n' >"$T/a.c"
 printf 'int a(int);\nint b(void) { return a(0); }\n' >"$T/b.c"
 ${CC:-cc} -c "$T/a.c" -o "$T/a.o" && ${CC:-cc} -c "$T/b.c" -o "$T/b.o" &&

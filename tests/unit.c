@@ -13,16 +13,16 @@
 #include "base/error.h"
 #include "test.h"
 
-extern const TestCase sphere_tests[], shape_tests[], parse_tests[], trace_tests[],
-    sampler_tests[], angle_tests[], texture_tests[], render_tests[], ppm_tests[], png_tests[],
-    bvh_tests[], obj_tests[], keyword_tests[], limits_tests[], solid_tests[], mpl_tests[],
-    indirect_tests[], light_buffer_tests[], seed001_tests[], bmp_tests[], noise_tests[], mipmap_tests[], number_tests[],
-    path_tests[];
+/* Every suite: suites.h, made by the Makefile from the files' names,
+ * lists X(NAME) for each tests/test_NAME.c, which defines NAME_tests[]. */
+#define X(name) extern const TestCase name##_tests[];
+#include "suites.h"
+#undef X
 static const TestCase *const unit_suites[] = {
-    sphere_tests, shape_tests,   parse_tests,  trace_tests, sampler_tests,
-    angle_tests,  texture_tests, render_tests, ppm_tests,   png_tests, bvh_tests, obj_tests,
-    keyword_tests, limits_tests, solid_tests, mpl_tests, indirect_tests, light_buffer_tests,
-    seed001_tests, bmp_tests, noise_tests, mipmap_tests, number_tests, path_tests};
+#define X(name) name##_tests,
+#include "suites.h"
+#undef X
+};
 
 int test_failed_checks;
 static const char *unit_current; /* name of the running test */

@@ -9,7 +9,7 @@
  * / 2 of |point| + |plane point| per component. The re-projection
  * p - ((p - q) . n) n rounds a few times (about 8u of those magnitudes); 16
  * leaves the margin that the next intersection test needs to see the offset
- * origin on the right side (tests/test_shapes.c checks it at scales 1e-6 to
+ * origin on the right side (tests/test_ray.c checks it at scales 1e-6 to
  * 1e8, as for spheres).
  */
 #define PLANE_ERROR_ULPS 16.0

@@ -10,7 +10,7 @@
  * a barycentric blend b0 v0 + b1 v1 + b2 v2 (pbrt-v4 bounds it by 7u of
  * sum |b_i v_i|); bounding by the vertices' magnitude with 16u also covers the
  * rounding of the next ray's triple products, which are computed from
- * vertex - origin (tests/test_shapes.c checks it at scales 1e-6 to 1e8).
+ * vertex - origin (tests/test_ray.c checks it at scales 1e-6 to 1e8).
  */
 #define TRIANGLE_ERROR_ULPS 16.0
 

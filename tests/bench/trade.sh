@@ -536,7 +536,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -
     echo "|-------|---|-----------------------------|---------------------|--------------------|----------|"
     cat "$DIR/honest.rows"
     echo
-    echo "Reading these (design.md §6): a bound on every pixel's error costs, in"
+    echo "Reading these (noise.md): a bound on every pixel's error costs, in"
     echo "plain Monte Carlo, what uniform sampling pays for the same RMSE, so"
     echo "\`--noise\` wins on RMSE where pixels converge at different rates — flat"
     echo "walls and sky exact at the first round, filtered textures, edges —"

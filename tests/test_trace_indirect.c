@@ -1,4 +1,4 @@
-/* test_indirect.c: ambient occlusion and global illumination against
+/* test_trace_indirect.c: ambient occlusion and global illumination against
  * shares and colours known in closed form, and their bytes against thread
  * counts and against renders without them. */
 #include <math.h>
@@ -210,7 +210,7 @@ static void indirect_bounces_add_light_and_converge(void)
     scene_free(&sc);
 }
 
-const TestCase indirect_tests[] = {
+const TestCase trace_indirect_tests[] = {
     {"indirect_occlusion_follows_the_cosine_law", indirect_occlusion_follows_the_cosine_law},
     {"indirect_gathering_from_a_uniformly_lit_ball", indirect_gathering_from_a_uniformly_lit_ball},
     {"indirect_bytes_do_not_depend_on_threads", indirect_bytes_do_not_depend_on_threads},

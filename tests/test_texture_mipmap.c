@@ -1,4 +1,4 @@
-/* test_mipmap.c: mip-maps, lookups over a footprint, filtered stripes, and
+/* test_texture_mipmap.c: mip-maps, lookups over a footprint, filtered stripes, and
  * ray differentials. */
 #include <math.h>
 #include <stdlib.h>
@@ -266,7 +266,7 @@ static void differentials_through_glass_follow_snell(void)
     }
 }
 
-const TestCase mipmap_tests[] = {
+const TestCase texture_mipmap_tests[] = {
     {"mipmap_levels_are_the_means_of_the_level_below",
      mipmap_levels_are_the_means_of_the_level_below},
     {"footprint_of_a_texel_reads_as_bilinear", footprint_of_a_texel_reads_as_bilinear},

@@ -1,4 +1,4 @@
-/* test_parse.c: the course-format parser: accepted forms, and every fault
+/* test_course.c: the course-format parser: accepted forms, and every fault
  * with its message, line and column. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -816,7 +816,7 @@ static void parse_file_errors(void)
     scene_free(&sc);
 }
 
-const TestCase parse_tests[] = {
+const TestCase course_tests[] = {
     {"parse_accepts_the_example", parse_accepts_the_example},
     {"parse_sphere_materials_read_back_exactly", parse_sphere_materials_read_back_exactly},
     {"parse_spheres_share_a_material_until_one_changes",

@@ -1,4 +1,4 @@
-/* test_limits.c: the memory limit and the refusals that keep a render from
+/* test_scene_limits.c: the memory limit and the refusals that keep a render from
  * running out of memory (scene.h, obj.h, deflate.h, file.h, writer.h). */
 #include <stdint.h>
 #include <stdio.h>
@@ -245,7 +245,7 @@ static void limits_inputs_that_are_not_files_are_refused(void)
     CHECK_CONTAINS(err.message, "it is a directory");
 }
 
-const TestCase limits_tests[] = {
+const TestCase scene_limits_tests[] = {
     {"limits_sizes_read_for_people", limits_sizes_read_for_people},
     {"limits_scene_stops_at_the_element_that_passes",
      limits_scene_stops_at_the_element_that_passes},
