@@ -213,17 +213,18 @@ static int course_sphere_record(CourseParser *P, const Record *rec, Scene *scene
 /* A record that may follow the header, and what reads it. */
 typedef struct {
     const char *keyword; /* with its colon */
-    int (*parse)(CourseParser *P, const Record *rec, Scene *scene);
+    int (*parse)(CourseParser *P, const Record *rec, Scene *scene); /* NULL: a shape's */
+    int shape;           /* that shape's ShapeKind, for course_shape_record() */
 } RecordKind;
 
 static const RecordKind course_record_kinds[] = {
-    {"sphere:", course_sphere_record},   {"plane:", course_plane_record},
-    {"triangle:", course_triangle_record}, {"light:", course_extra_light_record},
-    {"ambient:", course_ambient_record}, {"samples:", course_samples_record},
-    {"lens:", course_lens_record},       {"texture:", course_texture_record},
-    {"mesh:", course_mesh_record},       {"cube:", course_cube_record},
-    {"square:", course_square_record},   {"cylinder:", course_cylinder_record},
-    {"cone:", course_cone_record},
+    {"sphere:", course_sphere_record, 0},     {"plane:", NULL, SHAPE_PLANE},
+    {"triangle:", NULL, SHAPE_TRIANGLE},      {"light:", course_extra_light_record, 0},
+    {"ambient:", course_ambient_record, 0},   {"samples:", course_samples_record, 0},
+    {"lens:", course_lens_record, 0},         {"texture:", course_texture_record, 0},
+    {"mesh:", course_mesh_record, 0},         {"cube:", NULL, SHAPE_CUBE},
+    {"square:", NULL, SHAPE_SQUARE},          {"cylinder:", NULL, SHAPE_CYLINDER},
+    {"cone:", NULL, SHAPE_CONE},
 };
 
 enum { COURSE_RECORD_KINDS = sizeof course_record_kinds / sizeof course_record_kinds[0] };
@@ -284,7 +285,9 @@ static int course_objects(CourseParser *P, Scene *scene)
             course_fail_keyword(P, &rec);
             return -1;
         }
-        if (course_record_kinds[k].parse(P, &rec, scene) != 0)
+        if (course_record_kinds[k].parse ? course_record_kinds[k].parse(P, &rec, scene) != 0
+                                         : course_shape_record(P, &rec, scene,
+                                                               (ShapeKind)course_record_kinds[k].shape) != 0)
             return -1;
     }
     return rc;

@@ -116,12 +116,17 @@ static ShapeKind course_last_kind(const CourseParser *P)
     return P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind;
 }
 
-/* shape -> 'KIND:' geometry r g b reflection [transparency index]: reads
- * rec, a record of a shape of kind whose numbers spec names, into the
- * scene. */
-static int course_shape_record(CourseParser *P, const Record *rec, Scene *scene, ShapeKind kind,
-                               const RecordSpec *spec)
+/* The numbers of each shape's record but the sphere's (course.c reads
+ * it), by ShapeKind. */
+static const RecordSpec *const course_shape_specs[SHAPE_KINDS] = {
+    [SHAPE_PLANE] = &course_plane_spec,       [SHAPE_TRIANGLE] = &course_triangle_spec,
+    [SHAPE_CUBE] = &course_cube_spec,         [SHAPE_SQUARE] = &course_square_spec,
+    [SHAPE_CYLINDER] = &course_cylinder_spec, [SHAPE_CONE] = &course_cone_spec,
+};
+
+int course_shape_record(CourseParser *P, const Record *rec, Scene *scene, ShapeKind kind)
 {
+    const RecordSpec *spec = course_shape_specs[kind];
     double v[SHAPES_NUMBERS_MAX + 6];
     int n = lex_numbers(&P->lex, rec, 1, spec, v), rc, field = 0;
     const char *fault = NULL;
@@ -138,44 +143,6 @@ static int course_shape_record(CourseParser *P, const Record *rec, Scene *scene,
         return course_fail_memory(P, rec, scene, rc);
     course_note_object(P, kind, scene_count_of(scene, kind) - 1);
     return 0;
-}
-
-/* plane -> 'plane:' px py pz nx ny nz r g b reflection [transparency index] */
-int course_plane_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_PLANE, &course_plane_spec);
-}
-
-/* triangle -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection
- *             [transparency index] */
-int course_triangle_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_TRIANGLE, &course_triangle_spec);
-}
-
-/* cube -> 'cube:' cx cy cz half-edge r g b reflection [transparency index] */
-int course_cube_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_CUBE, &course_cube_spec);
-}
-
-/* square -> 'square:' cx cy cz nx ny nz half-edge r g b reflection
- *           [transparency index] */
-int course_square_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_SQUARE, &course_square_spec);
-}
-
-/* cylinder -> 'cylinder:' x y z radius r g b reflection [transparency index] */
-int course_cylinder_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_CYLINDER, &course_cylinder_spec);
-}
-
-/* cone -> 'cone:' x y z radius height r g b reflection [transparency index] */
-int course_cone_record(CourseParser *P, const Record *rec, Scene *scene)
-{
-    return course_shape_record(P, rec, scene, SHAPE_CONE, &course_cone_spec);
 }
 
 /* light -> 'light:' x y z r g b */

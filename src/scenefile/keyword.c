@@ -223,11 +223,21 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     return names_add(&K->names, scene, (size_t)index) != 0 ? keyword_fail_memory(K) : 0;
 }
 
-/* shape -> KEYWORD numbers material: reads rec, an element of a shape of
- * kind whose numbers spec names, into the scene. */
-static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, ShapeKind kind,
-                                const RecordSpec *spec)
+/* The numbers of each shape's element, by ShapeKind. */
+static const RecordSpec *const keyword_shape_specs[SHAPE_KINDS] = {
+    [SHAPE_SPHERE] = &keyword_sphere, [SHAPE_PLANE] = &keyword_plane,
+    [SHAPE_TRIANGLE] = &keyword_triangle, [SHAPE_CUBE] = &keyword_cube,
+    [SHAPE_SQUARE] = &keyword_square, [SHAPE_CYLINDER] = &keyword_cylinder,
+    [SHAPE_CONE] = &keyword_cone,
+};
+
+/* shape -> KEYWORD numbers material (sphere: xC yC zC radius; plane: px py
+ * pz nx ny nz; triangle: three corners; cube: xC yC zC half; square: xC
+ * yC zC nx ny nz half; cylinder: x y z radius; cone: x y z radius
+ * height): reads rec, an element of a shape of kind, into the scene. */
+static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, ShapeKind kind)
 {
+    const RecordSpec *spec = keyword_shape_specs[kind];
     double v[SHAPES_NUMBERS_MAX];
     const char *fault = NULL;
     int rc, field = 0;
@@ -241,48 +251,6 @@ static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, Sha
         return -1;
     }
     return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
-}
-
-/* sphere -> 'sphere' xC yC zC radius material */
-static int keyword_sphere_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_SPHERE, &keyword_sphere);
-}
-
-/* plane -> 'plane' px py pz nx ny nz material */
-static int keyword_plane_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_PLANE, &keyword_plane);
-}
-
-/* triangle -> 'triangle' x0 y0 z0 x1 y1 z1 x2 y2 z2 material */
-static int keyword_triangle_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_TRIANGLE, &keyword_triangle);
-}
-
-/* cube -> 'cube' xC yC zC half material */
-static int keyword_cube_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_CUBE, &keyword_cube);
-}
-
-/* square -> 'square' xC yC zC nx ny nz half material */
-static int keyword_square_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_SQUARE, &keyword_square);
-}
-
-/* cylinder -> 'cylinder' x y z radius material */
-static int keyword_cylinder_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_CYLINDER, &keyword_cylinder);
-}
-
-/* cone -> 'cone' x y z radius height material */
-static int keyword_cone_record(Keyword *K, const Record *rec, Scene *scene)
-{
-    return keyword_shape_record(K, rec, scene, SHAPE_CONE, &keyword_cone);
 }
 
 /* mesh -> 'mesh' path material */
@@ -371,17 +339,18 @@ static int keyword_background_record(Keyword *K, const Record *rec, Scene *scene
 /* An element and what reads it. */
 typedef struct {
     const char *keyword;
-    int (*parse)(Keyword *K, const Record *rec, Scene *scene);
+    int (*parse)(Keyword *K, const Record *rec, Scene *scene); /* NULL: a shape's */
+    int shape;           /* that shape's ShapeKind, for keyword_shape_record() */
 } KeywordKind;
 
 static const KeywordKind keyword_kinds[] = {
-    {"camera", keyword_camera_record},   {"material", keyword_material_record},
-    {"sphere", keyword_sphere_record},   {"plane", keyword_plane_record},
-    {"triangle", keyword_triangle_record}, {"mesh", keyword_mesh_record},
-    {"light", keyword_light_record},     {"ambient", keyword_ambient_record},
-    {"background", keyword_background_record}, {"cube", keyword_cube_record},
-    {"square", keyword_square_record},   {"cylinder", keyword_cylinder_record},
-    {"cone", keyword_cone_record},
+    {"camera", keyword_camera_record, 0},   {"material", keyword_material_record, 0},
+    {"sphere", NULL, SHAPE_SPHERE},         {"plane", NULL, SHAPE_PLANE},
+    {"triangle", NULL, SHAPE_TRIANGLE},     {"mesh", keyword_mesh_record, 0},
+    {"light", keyword_light_record, 0},     {"ambient", keyword_ambient_record, 0},
+    {"background", keyword_background_record, 0}, {"cube", NULL, SHAPE_CUBE},
+    {"square", NULL, SHAPE_SQUARE},         {"cylinder", NULL, SHAPE_CYLINDER},
+    {"cone", NULL, SHAPE_CONE},
 };
 
 enum { KEYWORD_KINDS = sizeof keyword_kinds / sizeof keyword_kinds[0] };
@@ -437,7 +406,9 @@ static int keyword_elements(Keyword *K, Scene *scene)
             keyword_fail_keyword(K, &rec);
             return -1;
         }
-        if (keyword_kinds[k].parse(K, &rec, scene) != 0)
+        if (keyword_kinds[k].parse ? keyword_kinds[k].parse(K, &rec, scene) != 0
+                                   : keyword_shape_record(K, &rec, scene,
+                                                          (ShapeKind)keyword_kinds[k].shape) != 0)
             return -1;
     }
     if (rc == 0 && !K->camera_line) {
