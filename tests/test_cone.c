@@ -3,15 +3,8 @@
 #include <math.h>
 
 #include "geometry/cone.h"
+#include "solid.h"
 #include "test.h"
-
-static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
-
-static Ray ray_from(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-    Ray r = {{ox, oy, oz}, {dx, dy, dz}};
-    return r;
-}
 
 static void cone_hits_its_nappe_only(void)
 {
@@ -23,7 +16,7 @@ static void cone_hits_its_nappe_only(void)
     double uv[2];
     SurfacePoint sp;
 
-    cone_make(&c, vec3(0, 0, 0), 1, 1, plain); /* apex at y = 1, widening downwards */
+    cone_make(&c, vec3(0, 0, 0), 1, 1, solid_plain()); /* apex at y = 1, widening downwards */
     CHECK(cone_intersect(&c, &across, 0, INFINITY, &t));
     CHECK_NEAR(4.5, t, 1e-15); /* radius 0.5 at y = 0.5 */
     CHECK_INT(2, cone_crossings(&c, &across, 0, INFINITY));
@@ -43,7 +36,7 @@ static void cone_hits_its_nappe_only(void)
     CHECK_NEAR(0.5, uv[0], 1e-15);
     CHECK_NEAR(0.25, uv[1], 1e-15);
     /* Upside down: apex below, opening upwards. */
-    cone_make(&c, vec3(0, 0, 0), 1, -1, plain);
+    cone_make(&c, vec3(0, 0, 0), 1, -1, solid_plain());
     above = ray_from(-5, 0.5, 0, 1, 0, 0);
     CHECK(cone_intersect(&c, &above, 0, INFINITY, &t));
     CHECK_NEAR(3.5, t, 1e-15); /* radius 1.5 at y = 0.5 */

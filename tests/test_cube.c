@@ -3,15 +3,8 @@
 #include <math.h>
 
 #include "geometry/cube.h"
+#include "solid.h"
 #include "test.h"
-
-static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
-
-static Ray ray_from(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-    Ray r = {{ox, oy, oz}, {dx, dy, dz}};
-    return r;
-}
 
 static void cube_hits_from_outside_inside_and_along_axes(void)
 {
@@ -21,7 +14,7 @@ static void cube_hits_from_outside_inside_and_along_axes(void)
     Ray corner = ray_from(-3, -3, -3, 1, 1, 1), edge = ray_from(-5, 1, 1, 1, 0, 0);
     real t = 0;
 
-    cube_make(&c, vec3(0, 0, 0), 1, plain);
+    cube_make(&c, vec3(0, 0, 0), 1, solid_plain());
     CHECK(cube_intersect(&c, &out, 0, INFINITY, &t));
     CHECK_NEAR(4, t, 0);
     CHECK_INT(2, cube_crossings(&c, &out, 0, INFINITY));
@@ -47,7 +40,7 @@ static void cube_surface_points_lie_on_their_face(void)
     Ray down = ray_from(1e7 + 0.2, 10, 3.1, 0, -1, 0), ahead = ray_from(1e7 - 0.25, 2.25, -5, 0, 0, 1);
     real t = 0;
 
-    cube_make(&c, vec3(1e7, 2, 3), 0.5, plain);
+    cube_make(&c, vec3(1e7, 2, 3), 0.5, solid_plain());
     CHECK(cube_intersect(&c, &down, 0, INFINITY, &t));
     sp = cube_surface_at(&c, &down, t);
     CHECK(sp.normal.y == 1 && sp.normal.x == 0 && sp.normal.z == 0);
@@ -83,7 +76,7 @@ static void cube_edges_belong_to_the_face_the_ray_crosses(void)
                    vec3(-1, 0, 0), vec3(0, 0, -1)};
     real t = 0;
 
-    cube_make(&c, vec3(0, 0, 2), 1, plain);
+    cube_make(&c, vec3(0, 0, 2), 1, solid_plain());
     for (size_t i = 0; i < sizeof rays / sizeof rays[0]; i++) {
         SurfacePoint sp;
         if (!cube_intersect(&c, &rays[i], 0, INFINITY, &t)) {

@@ -3,19 +3,12 @@
 #include <math.h>
 
 #include "geometry/cylinder.h"
+#include "solid.h"
 #include "test.h"
-
-static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
-
-static Ray ray_from(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-    Ray r = {{ox, oy, oz}, {dx, dy, dz}};
-    return r;
-}
 
 static void cylinder_hits_at_known_t_and_not_along_its_axis(void)
 {
-    Cylinder c = {{0, 3, 0}, 1, plain, 0};
+    Cylinder c = {{0, 3, 0}, 1, solid_plain(), 0};
     Ray across = ray_from(-5, 100, 0, 1, 0, 0), along = ray_from(0.5, -5, 0, 0, 1, 0);
     Ray slanted = ray_from(-5, 0, 0, 1, 1, 0), tangent = ray_from(-5, 0, 1, 1, 0, 0);
     Ray inside = ray_from(0, 7, 0, 0, 0, 3);

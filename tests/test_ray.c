@@ -12,11 +12,10 @@
 #include "geometry/square.h"
 #include "geometry/triangle.h"
 #include "rng.h"
+#include "solid.h"
 #include "test.h"
 
 static const Material white = {{255, 255, 255}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
-
-static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
 
 /* Spawns rays from a surface point at cosines down to 1e-12 to either side
  * of the facing normal n; returns how many of them meet the surface again
@@ -167,16 +166,16 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         s.kind = i % 4;
         switch (s.kind) {
         case 0:
-            cube_make(&s.cube, c, r, plain);
+            cube_make(&s.cube, c, r, solid_plain());
             break;
         case 1:
-            CHECK_INT(0, square_make(&s.square, c, rng_unit_vector(), r, plain));
+            CHECK_INT(0, square_make(&s.square, c, rng_unit_vector(), r, solid_plain()));
             break;
         case 2:
-            s.cylinder = (Cylinder){c, r, plain, 0};
+            s.cylinder = (Cylinder){c, r, solid_plain(), 0};
             break;
         default:
-            cone_make(&s.cone, c, r, r * rng_range(0.3, 3) * (i % 8 < 4 ? 1 : -1), plain);
+            cone_make(&s.cone, c, r, r * rng_range(0.3, 3) * (i % 8 < 4 ? 1 : -1), solid_plain());
             break;
         }
         aim = vec3_add(c, vec3_scale(rng_unit_vector(), 0.6 * r * rng_uniform()));

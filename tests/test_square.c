@@ -3,15 +3,8 @@
 #include <math.h>
 
 #include "geometry/square.h"
+#include "solid.h"
 #include "test.h"
-
-static Material plain = {{200, 200, 200}, 0, 0, 1, -1, TEXTURE_NEAREST, -1, 0};
-
-static Ray ray_from(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-    Ray r = {{ox, oy, oz}, {dx, dy, dz}};
-    return r;
-}
 
 static void square_hits_inside_its_edges_on_both_sides(void)
 {
@@ -21,8 +14,8 @@ static void square_hits_inside_its_edges_on_both_sides(void)
     real t = 0;
     double uv[2];
 
-    CHECK_INT(-1, square_make(&s, vec3(0, 0, 0), vec3(0, 0, 0), 1, plain));
-    CHECK_INT(0, square_make(&s, vec3(0, 0, 0), vec3(0, 0, -3), 1, plain));
+    CHECK_INT(-1, square_make(&s, vec3(0, 0, 0), vec3(0, 0, 0), 1, solid_plain()));
+    CHECK_INT(0, square_make(&s, vec3(0, 0, 0), vec3(0, 0, -3), 1, solid_plain()));
     /* A wall facing -z: u along +x, v along +y, as seen from in front. */
     CHECK(s.axis_u.x == 1 && s.axis_v.y == 1);
     CHECK(square_intersect(&s, &front, 0, INFINITY, &t));
@@ -35,7 +28,7 @@ static void square_hits_inside_its_edges_on_both_sides(void)
     CHECK_NEAR(0.5, uv[0], 1e-15);
     CHECK_NEAR(-0.25, uv[1], 1e-15);
     /* A floor: u along +x, v along +z. */
-    CHECK_INT(0, square_make(&s, vec3(0, -1, 0), vec3(0, 1, 0), 50, plain));
+    CHECK_INT(0, square_make(&s, vec3(0, -1, 0), vec3(0, 1, 0), 50, solid_plain()));
     CHECK(s.axis_u.x == 1 && s.axis_v.z == 1);
 }
 
