@@ -153,6 +153,15 @@ expect_line "both sizes" 1 "raytrace-diff: error: the sizes differ: $T/course.pp
 expect_exit "unreadable" 2 "$DIFF" "$T/course.ppm" "$T/nothing.ppm"
 expect_exit "not an image" 2 "$DIFF" "$T/course.ppm" "$scene"
 expect_exit "diff usage" 2 "$DIFF" "$T/course.ppm"
+# raytrace-diff's options read by the shared parser (cli/args.c): every
+# spelling, and a clear refusal of what an option does not take.
+expect_exit "diff --tolerance=N -mN" 0 "$DIFF" --tolerance=0 -m0 "$T/course.ppm" "$T/course.ppm"
+expect_exit "diff -t inf" 2 "$DIFF" -t inf "$T/course.ppm" "$T/course.ppm"
+expect_grep "diff -t inf message" "option '--tolerance' takes a number >= 0, found 'inf'" "$T/err"
+expect_exit "diff -m 1.5" 2 "$DIFF" -m 1.5 "$T/course.ppm" "$T/course.ppm"
+expect_grep "diff -m message" "option '--max-pixels' takes a whole number >= 0, found '1.5'" "$T/err"
+expect_exit "diff too many" 2 "$DIFF" "$T/course.ppm" "$T/course.ppm" "$T/course.ppm"
+expect_grep "diff too many message" "too many arguments: '$T/course.ppm' after REFERENCE and IMAGE" "$T/err"
 expect_exit "diff bad tolerance" 2 "$DIFF" -t -1 "$T/course.ppm" "$T/course.ppm"
 head -c 1000 "$T/course.png" >"$T/cut.png"
 expect_exit "truncated png" 2 "$DIFF" "$T/course.ppm" "$T/cut.png"

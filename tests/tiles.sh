@@ -134,6 +134,14 @@ got:      $line"
 }
 tiles course 4 rows ppm
 c=$T/course
+# Its command line, read by the shared parser (cli/args.c): exit 2 and
+# one clear line.
+"$MERGE" --jpeg-quality 0 "$T/x.jpg" "$c-1.ppm" 2>"$T/err"
+[ $? = 2 ] && grep -qF "raytrace-merge: option '--jpeg-quality' takes a whole number from 1 to 100, found '0'" "$T/err" &&
+    pass || fail "--jpeg-quality 0 is not refused clearly" "$(cat "$T/err")"
+"$MERGE" "$T/x.ppm" 2>"$T/err"
+[ $? = 2 ] && grep -qF "raytrace-merge: missing TILE" "$T/err" && pass ||
+    fail "a missing TILE is not said" "$(cat "$T/err")"
 refused "missing" "raytrace-merge: $c-1.ppm: error: 2 tiles of this render are missing: 2/4, 4/4" \
     "$c-1.ppm" "$c-3.ppm"
 refused "repeated" "raytrace-merge: $c-3.ppm: error: tile 3/4 again: $c-3.ppm is that tile" \
