@@ -4,13 +4,6 @@
 #include "render/seed001.h"
 #include "render/trace.h"
 
-/* The physical model darkens the ambient light where there is some for
- * a point to receive (the tracer's rule, trace.h). */
-static int model_physical_occludes(const Scene *scene)
-{
-    return trace_has_ambient(scene);
-}
-
 /* Seed 001's model darkens its own ambient term, which every scene has. */
 static int model_seed001_occludes(const Scene *scene)
 {
@@ -20,7 +13,7 @@ static int model_seed001_occludes(const Scene *scene)
 
 static const Model model_table[] = {
     {SCENE_MODEL_PHYSICAL, "physical", trace_ray_diff, 10, 0, 0, 0, 0, 1, NULL, NULL,
-     model_physical_occludes},
+     trace_has_ambient}, /* the tracer's own ambient rule */
     {SCENE_MODEL_SEED001, "seed001", seed001_trace_diff, SEED001_MAX_DEPTH, SEED001_AO_RAYS,
      SEED001_GI_RAYS, SEED001_AO_DISTANCE, SEED001_GAMMA, 0,
      "seed 001's model: its program's light, occlusion and gathering",
