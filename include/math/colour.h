@@ -28,6 +28,12 @@ static inline Colour colour_add(Colour a, Colour b)
     return colour(a.r + b.r, a.g + b.g, a.b + b.b);
 }
 
+/* Returns a - b, channel by channel. */
+static inline Colour colour_sub(Colour a, Colour b)
+{
+    return colour(a.r - b.r, a.g - b.g, a.b - b.b);
+}
+
 /* Returns s * a. */
 static inline Colour colour_scale(Colour a, double s)
 {

@@ -1,0 +1,125 @@
+/*
+ * gicache.h: the irradiance cache (Ward, Rubinstein and Clear 1988, with
+ * the gradients of Ward and Heckbert 1992): records of the light gathered
+ * over the hemisphere at a few points, interpolated elsewhere.
+ *
+ * A record at point P with unit normal N keeps, for each bounce level, the
+ * mean G of the colours its gathering rays brought back (the quantity
+ * trace.h reflects: kd C * G / 255), its rotational gradient (how G
+ * changes as the normal turns) and translational gradient (as the point
+ * moves on the surface), and a radius R: the harmonic mean of the
+ * distances its rays met something at, clamped. Its error at a point x of
+ * normal n is
+ *     e = |x - P| / R + sqrt(1 - n . N),
+ * and it is valid there when e < a, a the cache's accuracy (--gi-cache-error)
+ * and the record not in front of x. The light at x is the weighted mean over
+ * the valid records of G + (N x n) . rot + (x - P) . trans, each weighing
+ * 1/e - 1/a (which falls to 0 at the edge of validity, so a record
+ * coming into reach adds no step).
+ *
+ * The gathering is stratified: M x N cells of the cosine-weighted
+ * hemisphere (M in cos^2 theta, N in phi, M N close to the rays asked for,
+ * N about pi M), one ray a cell jittered by a hash of the record's key, so
+ * that a record depends on nothing but its point, normal and key.
+ *
+ * This module holds the records and their arithmetic; render/irradiance.h
+ * places them over a picture. A GiCache is read by any number of threads
+ * at once; adding to it is for one thread at a time.
+ */
+#ifndef RAYTRACE_GICACHE_H
+#define RAYTRACE_GICACHE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "math/colour.h"
+#include "math/vec3.h"
+
+/* Defaults: the accuracy a, and the cache's cell count cap. */
+#define GICACHE_DEFAULT_ERROR 0.3
+#define GICACHE_MIN_ERROR 0.01
+#define GICACHE_MAX_ERROR 2.0
+
+/* What one record keeps for one bounce level: the mean colour of its
+ * gathering rays (0..255 per channel, as trace.h's) and its gradients,
+ * channel by channel, in scene units. */
+typedef struct {
+    Colour g;
+    Vec3 rot[3];   /* dG / d(rotation of the normal about an axis w) = w . rot */
+    Vec3 trans[3]; /* dG / d(move of the point by v, in the tangent plane) = v . trans */
+} GiValue;
+
+/* A record's place: its point, unit normal and radius. */
+typedef struct {
+    Vec3 point;
+    Vec3 normal;
+    double radius; /* R, scene units, > 0 */
+} GiPlace;
+
+/* The colour a ray leaving the record's point in direction dir (unit)
+ * brings back into *c, returning the distance at which it met something
+ * (INFINITY: nothing); ctx is the caller's. */
+typedef double (*GiSample)(void *ctx, Vec3 dir, Colour *c);
+
+/* Stores in *m and *n the strata of a gathering of `rays` rays (>= 1):
+ * m x n is the rays cast, within a stratum of `rays`. */
+void gicache_strata(int rays, int *m, int *n);
+
+/* Gathers at a point of unit normal `normal` over m x n strata (jitter
+ * drawn from key) through sample(ctx, ...); stores the mean and gradients
+ * in *v and returns the harmonic mean of the distances met (INFINITY when
+ * no ray met anything). Returns -1 when memory runs out. */
+int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, void *ctx,
+                   GiValue *v, double *harmonic);
+
+/* Returns record `place`'s error e at point x of unit normal nx (above),
+ * or INFINITY when the record lies in front of x (seen from x's side). */
+double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx);
+
+/* Returns the weight of a record of error e under accuracy a: 1/e - 1/a
+ * when e < a (1e12 at e = 0), else 0. */
+double gicache_weight(double e, double a);
+
+/* Returns value v of a record at place, carried to point x of normal nx by
+ * its gradients (each channel at least 0). */
+Colour gicache_extrapolate(const GiPlace *place, const GiValue *v, Vec3 x, Vec3 nx);
+
+/* The cache: records, their values (levels of them each), and a hash grid
+ * over space by which a lookup finds the records near a point. */
+typedef struct GiCache {
+    double a;          /* accuracy: the error a record is valid within */
+    int levels;        /* bounce levels each record keeps, >= 1 */
+    GiPlace *places;   /* count of them, in the order added */
+    GiValue *values;   /* count x levels: record i's level k at i x levels + k */
+    uint32_t *next;    /* the next record in the same cell, or UINT32_MAX */
+    size_t count, capacity;
+    struct GiCell *cells; /* open addressing, cell_capacity (a power of 2) */
+    size_t cell_count, cell_capacity;
+    int scales[64];    /* the cell sizes in use, as exponents of 2, ascending */
+    int scale_count;
+    size_t limit;      /* bytes the cache may take; 0: no limit */
+} GiCache;
+
+/* Makes *c an empty cache of accuracy a with `levels` bounce levels whose
+ * memory may not pass limit bytes (0: no limit). */
+void gicache_init(GiCache *c, double a, int levels, size_t limit);
+
+/* Releases what *c holds and leaves it empty. */
+void gicache_free(GiCache *c);
+
+/* Appends a record at place with values[0..levels-1]; returns 0, -1 when
+ * memory runs out, or -2 when it would pass the cache's limit. */
+int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values);
+
+/* Sets the value of level `level` of record i. */
+void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);
+
+/* Interpolates level `level` at point x of unit normal nx from the records
+ * valid there under accuracy c->a times `reach` (1: the cache's own) into
+ * *out; returns the number of records used (0: none valid, *out untouched). */
+int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
+
+/* Returns the bytes *c holds. */
+size_t gicache_memory(const GiCache *c);
+
+#endif

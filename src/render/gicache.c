@@ -1,0 +1,377 @@
+/* gicache.c: the irradiance cache's records and arithmetic (see gicache.h). */
+#include "render/gicache.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/hash.h"
+#include "math/angle.h"
+
+/* The most a lookup's reach may widen the accuracy by: a record is filed
+ * in a cell of at least GICACHE_MAX_REACH a R a side. */
+#define GICACHE_MAX_REACH 2.0
+
+/* A record is in front of a point when their offset along the mean of
+ * their normals is below -GICACHE_FRONT R (Ward's test). */
+#define GICACHE_FRONT 0.05
+
+enum { GICACHE_NONE = UINT32_MAX };
+
+/* A cell of the hash grid: a cube of 2^scale a side at (ix, iy, iz) in
+ * units of its side; head is its last record added (then next[]). */
+typedef struct GiCell {
+    int64_t ix, iy, iz;
+    int scale;
+    uint32_t head; /* GICACHE_NONE: an empty slot */
+} GiCell;
+
+void gicache_strata(int rays, int *m, int *n)
+{
+    int mm = (int)lround(sqrt(rays / ANGLE_PI));
+
+    if (mm < 1)
+        mm = 1;
+    *m = mm;
+    *n = (rays + mm / 2) / mm > 0 ? (rays + mm / 2) / mm : 1;
+}
+
+/* Returns a uniform number in [0, 1) from the 32 bits of h at shift. */
+static double gicache_unit(uint64_t h, int shift)
+{
+    return (double)((h >> shift) & 0xffffffffu) * (1.0 / 4294967296.0);
+}
+
+/* Adds s times colour c into the gradient vectors g[3] along dir. */
+static void gicache_add_gradient(Vec3 g[3], Vec3 dir, double s, Colour c)
+{
+    g[0] = vec3_add(g[0], vec3_scale(dir, (real)(s * c.r)));
+    g[1] = vec3_add(g[1], vec3_scale(dir, (real)(s * c.g)));
+    g[2] = vec3_add(g[2], vec3_scale(dir, (real)(s * c.b)));
+}
+
+/* Returns the translational gradient of the mean over the m x n strata of
+ * colours lc met at distances r (Ward and Heckbert's, for strata of equal
+ * projected solid angle): across each boundary of constant theta and of
+ * constant phi, the change of colour times how fast the boundary sweeps
+ * projected solid angle as the point moves, over the nearer distance. */
+static void gicache_translation(Vec3 t1, Vec3 t2, int m, int n, const Colour *lc,
+                                const double *r, Vec3 g[3])
+{
+    for (int c = 0; c < 3; c++)
+        g[c] = vec3(0, 0, 0);
+    for (int k = 0; k < n; k++) {
+        double pc = 2 * ANGLE_PI * (k + 0.5) / n, pm = 2 * ANGLE_PI * k / n;
+        Vec3 u = vec3_add(vec3_scale(t1, (real)cos(pc)), vec3_scale(t2, (real)sin(pc)));
+        Vec3 v = vec3_add(vec3_scale(t1, (real)-sin(pm)), vec3_scale(t2, (real)cos(pm)));
+        int kp = (k + n - 1) % n;
+
+        for (int j = 1; j < m; j++) {
+            double s2 = (double)j / m, near = fmin(r[j * n + k], r[(j - 1) * n + k]);
+            double w = 2 * ANGLE_PI / n * sqrt(s2) * (1 - s2) / near;
+            gicache_add_gradient(g, u, w, colour_sub(lc[j * n + k], lc[(j - 1) * n + k]));
+        }
+        for (int j = 0; n > 1 && j < m; j++) {
+            double near = fmin(r[j * n + k], r[j * n + kp]);
+            double w = (sqrt((double)(j + 1) / m) - sqrt((double)j / m)) / near;
+            gicache_add_gradient(g, v, w, colour_sub(lc[j * n + k], lc[j * n + kp]));
+        }
+    }
+    for (int c = 0; c < 3; c++)
+        g[c] = vec3_scale(g[c], (real)(1 / ANGLE_PI)); /* of E, to of E / pi */
+}
+
+/* Returns the integral over stratum (j, k) of m x n of sin theta times
+ * the unit vector turned a right angle from phi, against solid angle. */
+static Vec3 gicache_turn(Vec3 t1, Vec3 t2, int j, int k, int m, int n)
+{
+    double lo = asin(sqrt((double)j / m)), hi = asin(sqrt((double)(j + 1) / m));
+    double p0 = 2 * ANGLE_PI * k / n, p1 = 2 * ANGLE_PI * (k + 1) / n;
+    /* sin^2 theta d theta, and (-sin phi, cos phi) d phi. */
+    double s = (hi - lo) / 2 - (sin(2 * hi) - sin(2 * lo)) / 4;
+
+    return vec3_add(vec3_scale(t1, (real)(s * (cos(p1) - cos(p0)))),
+                    vec3_scale(t2, (real)(s * (sin(p1) - sin(p0)))));
+}
+
+int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, void *ctx,
+                   GiValue *v, double *harmonic)
+{
+    size_t cells = (size_t)m * (size_t)n;
+    Colour *lc = malloc(cells * sizeof *lc);
+    double *r = malloc(cells * sizeof *r), inverse = 0;
+    Vec3 t1 = vec3_from_frame(normal, 1, 0, 0), t2 = vec3_from_frame(normal, 0, 1, 0);
+    Colour sum = colour(0, 0, 0);
+
+    if (!lc || !r) {
+        free(lc);
+        free(r);
+        return -1;
+    }
+    memset(v, 0, sizeof *v);
+    for (int j = 0; j < m; j++)
+        for (int k = 0; k < n; k++) {
+            size_t i = (size_t)j * (size_t)n + (size_t)k;
+            uint64_t h = hash_u64(key, i);
+            double u1 = (j + gicache_unit(h, 0)) / m, phi = 2 * ANGLE_PI * (k + gicache_unit(h, 32)) / n;
+            double st = sqrt(u1), ct = sqrt(1 - u1), cp = cos(phi), sp = sin(phi);
+            Vec3 dir = vec3_from_frame(normal, (real)(st * cp), (real)(st * sp), (real)ct);
+
+            r[i] = sample(ctx, dir, &lc[i]);
+            if (r[i] < INFINITY)
+                inverse += 1 / r[i];
+            sum = colour_add(sum, lc[i]);
+            /* Turning the normal about w changes cos theta by w . (N x dir),
+             * N x dir = sin theta (-sin phi t1 + cos phi t2): over the
+             * stratum, its light times the integral of that over the solid
+             * angle, over pi (exact for light constant over each stratum;
+             * a tan theta weight at the ray itself grows without bound
+             * near the horizon). */
+            gicache_add_gradient(v->rot, gicache_turn(t1, t2, j, k, m, n), 1 / ANGLE_PI, lc[i]);
+        }
+    v->g = colour_scale(sum, 1.0 / (double)cells);
+    gicache_translation(t1, t2, m, n, lc, r, v->trans);
+    *harmonic = inverse > 0 ? (double)cells / inverse : INFINITY;
+    free(lc);
+    free(r);
+    return 0;
+}
+
+double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx)
+{
+    Vec3 d = vec3_sub(x, place->point);
+    double cosine = (double)vec3_dot(nx, place->normal);
+    double ahead = (double)vec3_dot(d, vec3_add(nx, place->normal)) / 2;
+
+    if (ahead < -GICACHE_FRONT * place->radius)
+        return INFINITY;
+    return (double)vec3_length(d) / place->radius + sqrt(cosine < 1 ? 1 - cosine : 0);
+}
+
+double gicache_weight(double e, double a)
+{
+    if (!(e < a))
+        return 0;
+    return e > 1e-12 ? 1 / e - 1 / a : 1e12;
+}
+
+Colour gicache_extrapolate(const GiPlace *place, const GiValue *v, Vec3 x, Vec3 nx)
+{
+    Vec3 turn = vec3_cross(place->normal, nx), move = vec3_sub(x, place->point);
+    double c[3] = {v->g.r, v->g.g, v->g.b};
+
+    for (int k = 0; k < 3; k++) {
+        c[k] += (double)vec3_dot(turn, v->rot[k]) + (double)vec3_dot(move, v->trans[k]);
+        c[k] = c[k] > 0 ? c[k] : 0;
+    }
+    return colour(c[0], c[1], c[2]);
+}
+
+void gicache_init(GiCache *c, double a, int levels, size_t limit)
+{
+    memset(c, 0, sizeof *c);
+    c->a = a;
+    c->levels = levels;
+    c->limit = limit;
+}
+
+void gicache_free(GiCache *c)
+{
+    free(c->places);
+    free(c->values);
+    free(c->next);
+    free(c->cells);
+    gicache_init(c, c->a, c->levels, c->limit);
+}
+
+/* Returns the bytes of records of `records` slots and a grid of `cells`. */
+static size_t gicache_bytes(const GiCache *c, size_t records, size_t cells)
+{
+    return records * (sizeof(GiPlace) + sizeof(uint32_t) + (size_t)c->levels * sizeof(GiValue)) +
+           cells * sizeof(GiCell);
+}
+
+size_t gicache_memory(const GiCache *c)
+{
+    return gicache_bytes(c, c->capacity, c->cell_capacity);
+}
+
+/* Returns the scale (exponent of 2) of the cells a record of radius R is
+ * filed in: a side of at least its widest reach. */
+static int gicache_scale_of(const GiCache *c, double radius)
+{
+    int e;
+
+    frexp(GICACHE_MAX_REACH * c->a * radius, &e);
+    return e;
+}
+
+/* Returns the cell coordinate of x at scale s, clamped far inside int64. */
+static int64_t gicache_coord(real x, int s)
+{
+    double q = floor(ldexp((double)x, -s));
+
+    return q > 4e18 ? (int64_t)4e18 : q < -4e18 ? (int64_t)-4e18 : (int64_t)q;
+}
+
+/* Returns the slot of cell (s, ix, iy, iz): its own, or the empty one it
+ * would take. */
+static size_t gicache_slot(const GiCache *c, int s, int64_t ix, int64_t iy, int64_t iz)
+{
+    uint64_t h = hash_u64(hash_u64(hash_u64(hash_u64(0, (uint64_t)(int64_t)s), (uint64_t)ix),
+                                   (uint64_t)iy),
+                          (uint64_t)iz);
+    size_t mask = c->cell_capacity - 1, i = (size_t)(h ^ (h >> 29)) & mask;
+
+    while (c->cells[i].head != GICACHE_NONE &&
+           !(c->cells[i].scale == s && c->cells[i].ix == ix && c->cells[i].iy == iy &&
+             c->cells[i].iz == iz))
+        i = (i + 1) & mask;
+    return i;
+}
+
+/* Grows the grid to `capacity` slots (a power of 2), refiling its cells;
+ * returns 0 or -1. */
+static int gicache_regrid(GiCache *c, size_t capacity)
+{
+    GiCell *old = c->cells;
+    size_t old_capacity = c->cell_capacity;
+
+    c->cells = malloc(capacity * sizeof *c->cells);
+    if (!c->cells) {
+        c->cells = old;
+        return -1;
+    }
+    for (size_t i = 0; i < capacity; i++)
+        c->cells[i].head = GICACHE_NONE;
+    c->cell_capacity = capacity;
+    for (size_t i = 0; i < old_capacity; i++)
+        if (old[i].head != GICACHE_NONE)
+            c->cells[gicache_slot(c, old[i].scale, old[i].ix, old[i].iy, old[i].iz)] = old[i];
+    free(old);
+    return 0;
+}
+
+/* Makes room for one more record and cell; returns 0, -1 or -2. */
+static int gicache_reserve(GiCache *c)
+{
+    size_t records = c->capacity, cells = c->cell_capacity;
+
+    if (c->count == records)
+        records = records ? 2 * records : 256;
+    if (2 * (c->cell_count + 1) > cells)
+        cells = cells ? 2 * cells : 512;
+    if (records == c->capacity && cells == c->cell_capacity)
+        return 0;
+    if (records >= GICACHE_NONE)
+        return -2;
+    if (c->limit && gicache_bytes(c, records, cells) > c->limit)
+        return -2;
+    if (records != c->capacity) {
+        GiPlace *p = realloc(c->places, records * sizeof *p);
+        uint32_t *nx;
+        GiValue *v;
+
+        if (!p)
+            return -1;
+        c->places = p;
+        nx = realloc(c->next, records * sizeof *nx);
+        if (!nx)
+            return -1;
+        c->next = nx;
+        v = realloc(c->values, records * (size_t)c->levels * sizeof *v);
+        if (!v)
+            return -1;
+        c->values = v;
+        c->capacity = records;
+    }
+    return cells != c->cell_capacity ? gicache_regrid(c, cells) : 0;
+}
+
+/* Notes that cells of scale s hold records (kept ascending). */
+static void gicache_use_scale(GiCache *c, int s)
+{
+    int i = 0;
+
+    while (i < c->scale_count && c->scales[i] < s)
+        i++;
+    if (i < c->scale_count && c->scales[i] == s)
+        return;
+    if (c->scale_count == (int)(sizeof c->scales / sizeof c->scales[0]))
+        return; /* cannot happen: radii are clamped within 2^60 of each other */
+    memmove(&c->scales[i + 1], &c->scales[i], (size_t)(c->scale_count - i) * sizeof c->scales[0]);
+    c->scales[i] = s;
+    c->scale_count++;
+}
+
+int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values)
+{
+    int rc = gicache_reserve(c), s;
+    size_t i, slot;
+
+    if (rc != 0)
+        return rc;
+    i = c->count++;
+    c->places[i] = *place;
+    memcpy(&c->values[i * (size_t)c->levels], values, (size_t)c->levels * sizeof *values);
+    s = gicache_scale_of(c, place->radius);
+    slot = gicache_slot(c, s, gicache_coord(place->point.x, s), gicache_coord(place->point.y, s),
+                        gicache_coord(place->point.z, s));
+    if (c->cells[slot].head == GICACHE_NONE) {
+        c->cells[slot].scale = s;
+        c->cells[slot].ix = gicache_coord(place->point.x, s);
+        c->cells[slot].iy = gicache_coord(place->point.y, s);
+        c->cells[slot].iz = gicache_coord(place->point.z, s);
+        c->cell_count++;
+        c->next[i] = GICACHE_NONE;
+    } else {
+        c->next[i] = c->cells[slot].head;
+    }
+    c->cells[slot].head = (uint32_t)i;
+    gicache_use_scale(c, s);
+    return 0;
+}
+
+void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
+{
+    c->values[i * (size_t)c->levels + (size_t)level] = *v;
+}
+
+int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+{
+    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH), total = 0;
+    double sum[3] = {0, 0, 0};
+    int used = 0;
+
+    if (c->count == 0 || level >= c->levels)
+        return 0;
+    for (int k = 0; k < c->scale_count; k++) {
+        int s = c->scales[k];
+        int64_t cx = gicache_coord(x.x, s), cy = gicache_coord(x.y, s), cz = gicache_coord(x.z, s);
+
+        for (int dz = -1; dz <= 1; dz++)
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    size_t slot = gicache_slot(c, s, cx + dx, cy + dy, cz + dz);
+
+                    for (uint32_t i = c->cells[slot].head; i != GICACHE_NONE; i = c->next[i]) {
+                        double w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
+                        Colour g;
+
+                        if (w <= 0)
+                            continue;
+                        g = gicache_extrapolate(&c->places[i],
+                                                &c->values[i * (size_t)c->levels + (size_t)level],
+                                                x, nx);
+                        sum[0] += w * g.r;
+                        sum[1] += w * g.g;
+                        sum[2] += w * g.b;
+                        total += w;
+                        used++;
+                    }
+                }
+    }
+    if (used)
+        *out = colour(sum[0] / total, sum[1] / total, sum[2] / total);
+    return used;
+}

@@ -1,0 +1,219 @@
+/* test_gicache.c: the irradiance cache's records: a furnace, the validity
+ * radius, the gradients of known fields, the interpolation's weights. */
+#include <math.h>
+#include <string.h>
+
+#include "render/gicache.h"
+#include "test.h"
+
+/* A field of light around a point: what a gathering ray brings back. */
+typedef struct {
+    Vec3 origin;   /* the point gathered at */
+    int kind;      /* 0: uniform, 1: a sky brightening along +x, 2: a
+                      ceiling at height 1 lit by tanh(x), 3: uniform at a
+                      distance of 1 + dir.z */
+    double inverse; /* sum of 1 / distance returned */
+} GiField;
+
+static double field_sample(void *ctx, Vec3 dir, Colour *c)
+{
+    GiField *f = ctx;
+    double d = INFINITY;
+
+    switch (f->kind) {
+    case 0:
+        *c = colour(100, 50, 25);
+        d = 2;
+        break;
+    case 1:
+        *c = colour(100 + 60 * (double)dir.x, 100, 100);
+        break;
+    case 2:
+        d = 1 / (double)dir.z;
+        *c = colour(100 + 80 * tanh((double)(f->origin.x + d * dir.x)), 100, 100);
+        break;
+    default:
+        d = 1 + (double)dir.z;
+        *c = colour(10, 10, 10);
+        break;
+    }
+    f->inverse += 1 / d;
+    return d;
+}
+
+/* Gathers field kind at point p, normal nz, with m x n strata. */
+static GiValue field_gather(int kind, Vec3 p, Vec3 normal, int m, int n, double *radius)
+{
+    GiField f = {p, kind, 0};
+    GiValue v;
+    double r;
+
+    CHECK(gicache_gather(normal, m, n, 7, field_sample, &f, &v, &r) == 0);
+    if (radius)
+        *radius = r;
+    return v;
+}
+
+static void gicache_strata_cover_the_rays(void)
+{
+    int m, n;
+
+    gicache_strata(1, &m, &n);
+    CHECK_INT(1, m * n);
+    gicache_strata(64, &m, &n);
+    CHECK_INT(5, m);
+    CHECK_INT(13, n);
+    gicache_strata(4096, &m, &n);
+    CHECK(fabs(m * n - 4096.0) <= m / 2.0);
+    CHECK(n >= 3 * m && n <= 4 * m);
+}
+
+/* A furnace: the same light from everywhere. A record holds it exactly, no
+ * gradient, and every lookup near it returns it. */
+static void gicache_furnace_gives_the_light_everywhere(void)
+{
+    double r;
+    GiValue v = field_gather(0, vec3(0, 0, 0), vec3(0, 0, 1), 5, 13, &r);
+    GiCache c;
+    GiValue levels[1];
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0};
+    Colour out = {0, 0, 0};
+
+    CHECK_NEAR(100, v.g.r, 1e-9);
+    CHECK_NEAR(50, v.g.g, 1e-9);
+    CHECK_NEAR(25, v.g.b, 1e-9);
+    CHECK_NEAR(2, r, 1e-12);
+    for (int k = 0; k < 3; k++) {
+        CHECK(vec3_length(v.trans[k]) < 1e-9);
+        CHECK(vec3_length(v.rot[k]) < 1e-9);
+    }
+    gicache_init(&c, 0.3, 1, 0);
+    place.radius = r;
+    levels[0] = v;
+    CHECK(gicache_add(&c, &place, levels) == 0);
+    CHECK(gicache_lookup(&c, 0, 1, vec3(0.3, 0.2, 0), vec3(0, 0, 1), &out) == 1);
+    CHECK_NEAR(100, out.r, 1e-9);
+    CHECK_NEAR(25, out.b, 1e-9);
+    gicache_free(&c);
+}
+
+/* The radius is the harmonic mean of the distances the rays met. */
+static void gicache_radius_is_the_harmonic_mean_distance(void)
+{
+    GiField f = {vec3(0, 0, 0), 3, 0};
+    GiValue v;
+    double r;
+
+    CHECK(gicache_gather(vec3(0, 0, 1), 6, 19, 3, field_sample, &f, &v, &r) == 0);
+    CHECK_NEAR(6 * 19 / f.inverse, r, 1e-12);
+    CHECK(r > 1 && r < 2);
+}
+
+/* A sky brightening along +x: G(N) = 100 + 40 N.x, so turning the normal
+ * from +z towards +x (about +y) adds 40 per radian. */
+static void gicache_rotation_gradient_of_a_sky(void)
+{
+    GiValue v = field_gather(1, vec3(0, 0, 0), vec3(0, 0, 1), 36, 113, NULL);
+    Vec3 turned = vec3_normalize(vec3(0.1, 0, 1));
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1};
+    Colour guess = gicache_extrapolate(&place, &v, vec3(0, 0, 0), turned);
+    GiValue there = field_gather(1, vec3(0, 0, 0), turned, 36, 113, NULL);
+
+    CHECK_NEAR(100, v.g.r, 0.05);
+    CHECK_NEAR(40, v.rot[0].y, 1.0);
+    CHECK_NEAR(0, v.rot[0].x, 0.5);
+    CHECK_NEAR(0, v.rot[1].y, 1e-9); /* green is the same everywhere */
+    CHECK_NEAR(there.g.r, guess.r, 0.1);
+}
+
+/* A ceiling at height 1 lit by 100 + 80 tanh(x): the translational
+ * gradient against the difference of two gatherings 0.02 apart. */
+static void gicache_translation_gradient_of_a_ceiling(void)
+{
+    GiValue v = field_gather(2, vec3(0, 0, 0), vec3(0, 0, 1), 40, 126, NULL);
+    GiValue left = field_gather(2, vec3(-0.01, 0, 0), vec3(0, 0, 1), 40, 126, NULL);
+    GiValue right = field_gather(2, vec3(0.01, 0, 0), vec3(0, 0, 1), 40, 126, NULL);
+    double slope = (right.g.r - left.g.r) / 0.02;
+
+    CHECK(slope > 20);
+    CHECK_NEAR(slope, v.trans[0].x, 0.05 * slope);
+    CHECK_NEAR(0, v.trans[0].y, 0.05 * slope);
+    CHECK_NEAR(0, v.trans[1].x, 1e-9);
+}
+
+/* Error and weight: the distance over the radius plus the normals'
+ * deviation; nothing at or beyond a, nothing in front. */
+static void gicache_error_and_weight(void)
+{
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2};
+
+    CHECK_NEAR(0.5, gicache_error(&place, vec3(1, 0, 0), vec3(0, 0, 1)), 1e-12);
+    CHECK_NEAR(sqrt(1 - cos(0.2)), gicache_error(&place, vec3(0, 0, 0),
+                                                 vec3(sin(0.2), 0, cos(0.2))), 1e-12);
+    CHECK(isinf(gicache_error(&place, vec3(1, 0, -0.5), vec3(0, 0, 1)))); /* record in front */
+    CHECK_NEAR(1 / 0.1 - 1 / 0.3, gicache_weight(0.1, 0.3), 1e-12);
+    CHECK(gicache_weight(0.3, 0.3) == 0);
+    CHECK(gicache_weight(0.5, 0.3) == 0);
+    CHECK(gicache_weight(0, 0.3) > 1e11);
+}
+
+/* Interpolation is the mean of the valid records' values by their weights
+ * (which sum to one once normalised); records out of reach add nothing. */
+static void gicache_lookup_is_the_weighted_mean(void)
+{
+    GiCache c;
+    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2},
+                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1}};
+    double values[4] = {10, 20, 40, 1000}, want = 0, total = 0;
+    Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
+    Colour out = {0, 0, 0};
+
+    gicache_init(&c, 0.4, 2, 0);
+    for (int i = 0; i < 4; i++) {
+        GiValue v[2];
+
+        memset(v, 0, sizeof v);
+        v[0].g = colour(values[i], 0, 0);
+        double w = gicache_weight(gicache_error(&p[i], x, n), 0.4);
+        CHECK(gicache_add(&c, &p[i], v) == 0);
+        want += w * values[i];
+        total += w;
+    }
+    CHECK_INT(3, gicache_lookup(&c, 0, 1, x, n, &out));
+    CHECK_NEAR(want / total, out.r, 1e-9);
+    CHECK(out.r > 10 && out.r < 40);
+    CHECK_INT(3, gicache_lookup(&c, 1, 1, x, n, &out)); /* the second level: zeros */
+    CHECK_NEAR(0, out.r, 1e-12);
+    CHECK_INT(0, gicache_lookup(&c, 0, 1, vec3(10, 10, 10), n, &out));
+    CHECK_INT(0, gicache_lookup(&c, 0, 1, x, vec3(0, 0, -1), &out)); /* facing away */
+    CHECK(gicache_memory(&c) > 0);
+    gicache_free(&c);
+}
+
+/* A cache whose limit is too small refuses the record, unchanged. */
+static void gicache_limit_refuses_records(void)
+{
+    GiCache c;
+    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1};
+    GiValue v[1];
+
+    memset(v, 0, sizeof v);
+    gicache_init(&c, 0.3, 1, 1000);
+    CHECK_INT(-2, gicache_add(&c, &p, v));
+    CHECK_INT(0, (int)c.count);
+    gicache_free(&c);
+}
+
+const TestCase gicache_tests[] = {
+    {"gicache_strata_cover_the_rays", gicache_strata_cover_the_rays},
+    {"gicache_furnace_gives_the_light_everywhere", gicache_furnace_gives_the_light_everywhere},
+    {"gicache_radius_is_the_harmonic_mean_distance", gicache_radius_is_the_harmonic_mean_distance},
+    {"gicache_rotation_gradient_of_a_sky", gicache_rotation_gradient_of_a_sky},
+    {"gicache_translation_gradient_of_a_ceiling", gicache_translation_gradient_of_a_ceiling},
+    {"gicache_error_and_weight", gicache_error_and_weight},
+    {"gicache_lookup_is_the_weighted_mean", gicache_lookup_is_the_weighted_mean},
+    {"gicache_limit_refuses_records", gicache_limit_refuses_records},
+    {NULL, NULL},
+};
