@@ -46,9 +46,9 @@ static GiValue field_gather(int kind, Vec3 p, Vec3 normal, int m, int n, double 
 {
     GiField f = {p, kind, 0};
     GiValue v;
-    double r;
+    double r, open;
 
-    CHECK(gicache_gather(normal, m, n, 7, field_sample, &f, &v, &r) == 0);
+    CHECK(gicache_gather(normal, m, n, 7, 0, field_sample, &f, &v, &r, &open) == 0);
     if (radius)
         *radius = r;
     return v;
@@ -76,7 +76,7 @@ static void gicache_furnace_gives_the_light_everywhere(void)
     GiValue v = field_gather(0, vec3(0, 0, 0), vec3(0, 0, 1), 5, 13, &r);
     GiCache c;
     GiValue levels[1];
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0};
     Colour out = {0, 0, 0};
 
     CHECK_NEAR(100, v.g.r, 1e-9);
@@ -102,10 +102,11 @@ static void gicache_radius_is_the_harmonic_mean_distance(void)
 {
     GiField f = {vec3(0, 0, 0), 3, 0};
     GiValue v;
-    double r;
+    double r, open;
 
-    CHECK(gicache_gather(vec3(0, 0, 1), 6, 19, 3, field_sample, &f, &v, &r) == 0);
+    CHECK(gicache_gather(vec3(0, 0, 1), 6, 19, 3, 0, field_sample, &f, &v, &r, &open) == 0);
     CHECK_NEAR(6 * 19 / f.inverse, r, 1e-12);
+    CHECK_NEAR(0, open, 0);
     CHECK(r > 1 && r < 2);
 }
 
@@ -115,7 +116,7 @@ static void gicache_rotation_gradient_of_a_sky(void)
 {
     GiValue v = field_gather(1, vec3(0, 0, 0), vec3(0, 0, 1), 36, 113, NULL);
     Vec3 turned = vec3_normalize(vec3(0.1, 0, 1));
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0};
     Colour guess = gicache_extrapolate(&place, &v, vec3(0, 0, 0), turned);
     GiValue there = field_gather(1, vec3(0, 0, 0), turned, 36, 113, NULL);
 
@@ -145,7 +146,7 @@ static void gicache_translation_gradient_of_a_ceiling(void)
  * deviation; nothing at or beyond a, nothing in front. */
 static void gicache_error_and_weight(void)
 {
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2, 0};
 
     CHECK_NEAR(0.5, gicache_error(&place, vec3(1, 0, 0), vec3(0, 0, 1)), 1e-12);
     CHECK_NEAR(sqrt(1 - cos(0.2)), gicache_error(&place, vec3(0, 0, 0),
@@ -162,10 +163,10 @@ static void gicache_error_and_weight(void)
 static void gicache_lookup_is_the_weighted_mean(void)
 {
     GiCache c;
-    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1},
-                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2},
-                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5},
-                    {vec3(50, 0, 0), vec3(0, 0, 1), 1}};
+    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0},
+                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5, 0},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0}};
     double values[4] = {10, 20, 40, 1000}, want = 0, total = 0;
     Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
     Colour out = {0, 0, 0};
@@ -176,11 +177,14 @@ static void gicache_lookup_is_the_weighted_mean(void)
 
         memset(v, 0, sizeof v);
         v[0].g = colour(values[i], 0, 0);
-        double w = gicache_weight(gicache_error(&p[i], x, n), 0.4);
         CHECK(gicache_add(&c, &p[i], v) == 0);
+    }
+    for (int i = 0; i < 4; i++) { /* the radii as neighbour clamping left them */
+        double w = gicache_weight(gicache_error(&c.places[i], x, n), 0.4);
         want += w * values[i];
         total += w;
     }
+    CHECK_NEAR(0.5 + 0.1, c.places[0].radius, 1e-12); /* no more than record 2's + 0.1 */
     CHECK_INT(3, gicache_lookup(&c, 0, 1, x, n, &out));
     CHECK_NEAR(want / total, out.r, 1e-9);
     CHECK(out.r > 10 && out.r < 40);
@@ -196,7 +200,7 @@ static void gicache_lookup_is_the_weighted_mean(void)
 static void gicache_limit_refuses_records(void)
 {
     GiCache c;
-    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1};
+    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0};
     GiValue v[1];
 
     memset(v, 0, sizeof v);

@@ -64,7 +64,7 @@ static void render_eye_on_the_screen_sees_background(void)
  * summed left to right, its direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
     RayCounts counts = {0};
     Scene sc;
     Error err;
@@ -118,9 +118,9 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL},
-                  two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL},
-                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL},
+                  two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL},
+                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -196,7 +196,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             double s = scales[si], o = offsets[oi];
             Scene sc;
             Material m = material_plain(base_colour, base_refl);
-            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -264,7 +264,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
     Scene sc;
     Error err;
     int e;
@@ -312,7 +312,7 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
     Scene sc;
     Error err;
 
@@ -574,7 +574,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Scene sc;
     Error err;
     Image img;
-    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
@@ -646,7 +646,7 @@ static void render_noisy(const Scene *sc, NoiseOptions noise, Indirect in, int t
                          int row_first, int row_step, Image *img, unsigned *spp, float *error)
 {
     RenderOptions opts = {10, 1, 0.1, threads, NULL, NULL, in, row_first, row_step, 0, noise, spp,
-                          error};
+                          error, NULL};
     int rows = row_step ? (sc->camera.height - row_first + row_step - 1) / row_step
                         : sc->camera.height;
 
@@ -660,7 +660,7 @@ static void render_noise_is_each_pixels_own(void)
     NoiseOptions noise = {3, 16, 256};
 
     for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
-        Indirect in = {s == 1 ? 2 : 0, 0.5, s == 1 ? 2 : 0, 1};
+        Indirect in = {s == 1 ? 2 : 0, 0.5, s == 1 ? 2 : 0, 1, 0, 0};
         unsigned spp[3][40 * 30];
         float error[3][40 * 30];
         Image img[3], tile;
@@ -703,7 +703,7 @@ static void render_noise_spends_samples_where_the_pixel_varies(void)
     const char *text = "0 0 -1\n-1 1 0\n1 1 0\n-1 -1 0\n16\n0 0 0\n0 0 -10 255 255 255\n"
                        "sphere: 0 0 5 1.3 200 100 50 0\n";
     NoiseOptions noise = {0.5, 16, 1024};
-    Indirect none = {0, 0, 0, 0};
+    Indirect none = {0, 0, 0, 0, 0, 0};
     unsigned spp[16 * 16];
     float error[16 * 16];
     int flat = 0, more = 0;

@@ -60,7 +60,7 @@ static void indirect_occlusion_follows_the_cosine_law(void)
     if (indirect_scene(text, &sc) != 0)
         return;
     for (int k = 0; k < 3; k++) {
-        Indirect in = {4096, distances[k], 0, 1};
+        Indirect in = {4096, distances[k], 0, 1, 0, 0};
         double c = 0.5 / distances[k], hidden = (acos(c) - c * sqrt(1 - c * c)) / PI;
         Colour got = indirect_seen(&sc, in, vec3(0, 1, 0), vec3(0, -1, 0), &counts);
         CHECK_NEAR(255 * (1 - hidden), got.r, 0.6); /* 0.0024 of the share */
@@ -69,7 +69,7 @@ static void indirect_occlusion_follows_the_cosine_law(void)
     CHECK_INT(3 * 4096, (long long)counts.occlusion);
     /* Nearer than nothing: nothing is hidden, the colour is the ambient's. */
     {
-        Indirect none = {64, 0.01, 0, 1};
+        Indirect none = {64, 0.01, 0, 1, 0, 0};
         CHECK_NEAR(255, indirect_seen(&sc, none, vec3(0, 1, 0), vec3(0, -1, 0), &counts).g, 0);
     }
     scene_free(&sc);
@@ -86,7 +86,7 @@ static void indirect_gathering_from_a_uniformly_lit_ball(void)
                                "triangle: -1 -1 10 1 -1 10 0 1 10 200 100 50 0\n";
     Scene sc;
     RayCounts counts = {0};
-    Indirect off = {0, 1, 0, 1}, gi = {0, 1, 64, 1};
+    Indirect off = {0, 1, 0, 1, 0, 0}, gi = {0, 1, 64, 1, 0, 0};
     Vec3 o = vec3(0, 0, -5), d = vec3(0, 0, 1);
 
     if (indirect_scene(text, &sc) != 0)
@@ -107,7 +107,7 @@ static void indirect_gathering_from_a_uniformly_lit_ball(void)
 static void indirect_render(const char *text, Indirect in, int spp, int threads, Image *img,
                             RayCounts *counts)
 {
-    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
     Scene sc;
 
     img->rgb = NULL;
@@ -133,7 +133,7 @@ static const char indirect_balls[] =
  * same bytes on 1, 2 and 7 threads, with one sample a pixel or four. */
 static void indirect_bytes_do_not_depend_on_threads(void)
 {
-    Indirect in = {8, 1.5, 8, 2};
+    Indirect in = {8, 1.5, 8, 2, 0, 0};
     size_t size;
     Image one, two, seven;
     RayCounts counts = {0};
@@ -165,7 +165,7 @@ static void indirect_that_finds_nothing_changes_nothing(void)
     static const char dark[] = "0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n12\n20 30 40\n"
                                "-4 6 -3 255 240 220\n"
                                "sphere: 0 0 0 1 220 80 60 0\nsphere: 0 -3 0 1.8 90 90 90 0\n";
-    Indirect off = {0, 1, 0, 1}, near = {16, 1e-9, 0, 1}, escaping = {0, 1, 16, 3};
+    Indirect off = {0, 1, 0, 1, 0, 0}, near = {16, 1e-9, 0, 1, 0, 0}, escaping = {0, 1, 16, 3, 0, 0};
     Image a, b;
     RayCounts counts = {0};
 
@@ -197,7 +197,7 @@ static void indirect_bounces_add_light_and_converge(void)
     if (indirect_scene(indirect_balls, &sc) != 0)
         return;
     for (int b = 1; b <= 6; b++) {
-        Indirect in = {0, 1, 256, b};
+        Indirect in = {0, 1, 256, b, 0, 0};
         Colour c = indirect_seen(&sc, in, o, d, &counts);
         double sum = c.r + c.g + c.b;
         CHECK(sum >= last);

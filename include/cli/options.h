@@ -35,6 +35,12 @@ typedef struct {
                                 of its size */
     int gi;                  /* --gi: gathering rays; -1: the scene's */
     int gi_bounces;          /* --gi-bounces; 0: the scene's, else 1 */
+    int gi_cache;            /* --gi-cache: gathered light through the
+                                irradiance cache (else the scene's choice) */
+    double gi_cache_error;   /* --gi-cache-error E; 0: the scene's, else
+                                GICACHE_DEFAULT_ERROR */
+    const char *gi_cache_map; /* --gi-cache-map FILE: where the records
+                                fell, or NULL */
     int jpeg_quality;        /* --jpeg-quality, 1..100 (default 90) */
     int jpeg_444;            /* --jpeg-subsampling 444: chroma kept whole */
     const char *tile;        /* --tile K/N as given, or NULL */

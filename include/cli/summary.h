@@ -9,6 +9,8 @@
 #define RAYTRACE_SUMMARY_H
 
 #include "image/image.h"
+#include "render/gicache.h"
+#include "render/irradiance.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
@@ -28,6 +30,13 @@ const char *summary_samples_text(const RenderOptions *ropts);
 void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,
                      const char *spp_map, const SummaryTimes *times, int threads,
                      const RayCounts *counts);
+
+/* Prints -v's lines of the irradiance cache: records made (of which the
+ * camera's rays reach), rays its pre-pass spent and its time, the share
+ * of lookups it served in the render (counts), and its map's file (map,
+ * or NULL). */
+void summary_gi_cache(const GiCache *cache, const IrradianceStats *stats, const RayCounts *counts,
+                      const char *map);
 
 /* Prints "raytrace: wrote OUTPUT: W x H pixels, N objects, SAMPLES, T s,
  * N threads". */

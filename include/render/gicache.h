@@ -35,10 +35,10 @@
 #include "math/colour.h"
 #include "math/vec3.h"
 
-/* Defaults: the accuracy a, and the cache's cell count cap. */
-#define GICACHE_DEFAULT_ERROR 0.3
-#define GICACHE_MIN_ERROR 0.01
-#define GICACHE_MAX_ERROR 2.0
+/* The accuracy a when none is given (SCENE_GI_CACHE_MIN_ERROR to
+ * SCENE_GI_CACHE_MAX_ERROR): a typical room's error about a level
+ * (docs/trade.md). */
+#define GICACHE_DEFAULT_ERROR 0.2
 
 /* What one record keeps for one bounce level: the mean colour of its
  * gathering rays (0..255 per channel, as trace.h's) and its gradients,
@@ -49,11 +49,13 @@ typedef struct {
     Vec3 trans[3]; /* dG / d(move of the point by v, in the tangent plane) = v . trans */
 } GiValue;
 
-/* A record's place: its point, unit normal and radius. */
+/* A record's place: its point, unit normal and radius, and the share of
+ * its rays that met nothing. */
 typedef struct {
     Vec3 point;
     Vec3 normal;
     double radius; /* R, scene units, > 0 */
+    double open;   /* 0..1 */
 } GiPlace;
 
 /* The colour a ray leaving the record's point in direction dir (unit)
@@ -67,10 +69,20 @@ void gicache_strata(int rays, int *m, int *n);
 
 /* Gathers at a point of unit normal `normal` over m x n strata (jitter
  * drawn from key) through sample(ctx, ...); stores the mean and gradients
- * in *v and returns the harmonic mean of the distances met (INFINITY when
- * no ray met anything). Returns -1 when memory runs out. */
-int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, void *ctx,
-                   GiValue *v, double *harmonic);
+ * in *v, in *harmonic the harmonic mean of the distances met (INFINITY
+ * when no ray met anything) and in *open the share of rays that met
+ * nothing. The translational gradient takes distances
+ * below `near` as near (>= 0): a surface meeting the point's at a corner
+ * would make it grow without bound. Returns 0, or -1 when memory runs
+ * out. */
+int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSample sample,
+                   void *ctx, GiValue *v, double *harmonic, double *open);
+
+/* Shortens v's translational gradients so that none changes its channel
+ * by more than the channel's own value over `reach` (scene units): the
+ * extrapolation then stays within 0 and twice the value (a ray meeting a
+ * wall at a corner makes the estimate grow without bound). */
+void gicache_limit(GiValue *v, double reach);
 
 /* Returns record `place`'s error e at point x of unit normal nx (above),
  * or INFINITY when the record lies in front of x (seen from x's side). */
@@ -91,7 +103,8 @@ typedef struct GiCache {
     int levels;        /* bounce levels each record keeps, >= 1 */
     GiPlace *places;   /* count of them, in the order added */
     GiValue *values;   /* count x levels: record i's level k at i x levels + k */
-    uint32_t *next;    /* the next record in the same cell, or UINT32_MAX */
+    struct GiEntry *entries; /* the records' places in the grid's cells */
+    size_t entry_count;
     size_t count, capacity;
     struct GiCell *cells; /* open addressing, cell_capacity (a power of 2) */
     size_t cell_count, cell_capacity;
@@ -107,9 +120,15 @@ void gicache_init(GiCache *c, double a, int levels, size_t limit);
 /* Releases what *c holds and leaves it empty. */
 void gicache_free(GiCache *c);
 
-/* Appends a record at place with values[0..levels-1]; returns 0, -1 when
- * memory runs out, or -2 when it would pass the cache's limit. */
+/* Appends a record at place with values[0..levels-1], its radius and its
+ * neighbours' clamped so that none exceeds another's plus their distance
+ * (Krivanek et al. 2006, the records whose cells hold the point); returns
+ * 0, -1 when memory runs out, or -2 when it would pass the cache's limit. */
 int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values);
+
+/* Files every record again in the grid by its radius as neighbour clamping
+ * left it (lookups then read fewer records). */
+void gicache_refile(GiCache *c);
 
 /* Sets the value of level `level` of record i. */
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);

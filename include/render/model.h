@@ -33,6 +33,8 @@ typedef struct Model {
     const char *verbose;    /* what -v says of it (then its gamma), or NULL */
     const char *bounces_note; /* non-NULL: --gi-bounces changes nothing
                                under it while rays gather, and why */
+    const char *cache_note; /* non-NULL: it gathers without the irradiance
+                               cache (--gi-cache changes nothing), and why */
     /* Says whether ambient occlusion darkens anything in scene. */
     int (*occludes)(const Scene *scene);
 } Model;

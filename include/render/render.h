@@ -47,6 +47,9 @@ typedef struct {
                                 took (img's layout, one a pixel), or NULL */
     float *error;            /* under noise, receives each pixel's
                                 estimated error (noise_error()), or NULL */
+    const struct GiCache *gicache; /* under indirect.gi_cache, the records
+                                irradiance_build() placed (NULL: none, every
+                                point gathers) */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's

@@ -40,6 +40,20 @@ Colour trace_ray(const Tracer *t, const Ray *ray);
  * read over the pixel's footprint at every hit. */
 Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
 
+/* What a ray met: how far (INFINITY: nothing) and whether it met the
+ * surface from behind (against its outward normal). */
+typedef struct {
+    double t;
+    int behind;
+} TraceMet;
+
+/* Returns the colour a gathering ray `ray` brings back to the point it
+ * leaves, whose path has taken bounce - 1 diffuse bounces (bounce >= 1):
+ * what trace_gather() averages, at depth 0, its own gathering drawn from
+ * key; stores in *met what it met. For the irradiance cache's records
+ * (irradiance.h). */
+Colour trace_gathered(const Tracer *t, const Ray *ray, int bounce, uint64_t key, TraceMet *met);
+
 /* Returns the colour of the sky the ray sees: the scene's background, or
  * the blend of its sky and background by the direction's height. */
 Colour trace_background(const Scene *scene, const Ray *ray);

@@ -29,6 +29,8 @@ typedef struct {
     unsigned long long refined;    /* pixels whose left-out rays were traced */
     unsigned long long occlusion;  /* ambient occlusion rays */
     unsigned long long gather;     /* global illumination rays */
+    unsigned long long lookups;    /* points that asked the irradiance cache */
+    unsigned long long served;     /* of them, those it answered */
 } RayCounts;
 
 /* The kinds of ray that leave a surface. */
@@ -42,6 +44,26 @@ enum { TRACER_OCCLUSION = 8, TRACER_GATHER = 9, TRACER_GATHERED = 16 };
 
 struct Cut;
 struct Model;
+struct GiCache;
+
+/* A point where a ray's path gathers light (trace.h): on its surface,
+ * with the error bound of its position, the normal facing the ray and the
+ * shading normal on its side, and the diffuse bounces taken to it. */
+typedef struct {
+    Vec3 point, error, n, ns;
+    int bounce;
+} GatherPoint;
+
+/* A list of them, as the irradiance cache's pre-pass collects them;
+ * failed is set when memory ran out adding one. */
+typedef struct {
+    GatherPoint *items;
+    size_t count, capacity;
+    int failed;
+} GatherPoints;
+
+/* Appends *p to list (or sets its failed). */
+void gather_points_add(GatherPoints *list, const GatherPoint *p);
 
 /* Ambient occlusion and global illumination (trace.h): how many rays, how
  * far, how many bounces. Zero samples: off, and not a ray more. */
@@ -50,6 +72,9 @@ typedef struct {
     double ao_distance; /* what is nearer occludes, > 0 */
     int gi_samples;     /* gathering rays at a primary hit, 0..SCENE_MAX_INDIRECT */
     int gi_bounces;     /* diffuse bounces gathered, 1..SCENE_MAX_BOUNCES */
+    int gi_cache;       /* 1: gathered light through the irradiance cache
+                           (irradiance.h): gi_samples rays a record */
+    double gi_cache_error; /* the cache's accuracy a (gicache.h) */
 } Indirect;
 
 /* The sample being traced: the pixel, the sample's number among the
@@ -85,6 +110,10 @@ typedef struct {
     int named;           /* 1: the rules of named materials (the scene has
                             some), 0: the course's; chosen once, by
                             model_tracer() */
+    const struct GiCache *gicache; /* where diffuse points look their
+                            gathered light up first (gicache.h), or NULL */
+    GatherPoints *collect; /* non-NULL: diffuse points gather nothing, but
+                            are added here (the cache's pre-pass) */
 } Tracer;
 
 #endif

@@ -63,6 +63,9 @@ typedef enum {
  * and the most diffuse bounces gathered. */
 enum { SCENE_MAX_INDIRECT = 4096, SCENE_MAX_BOUNCES = 64 };
 enum { SCENE_MAX_SPP = 1 << 20 }; /* most samples a pixel under --noise */
+/* The irradiance cache's accuracy (render/gicache.h): least and most. */
+#define SCENE_GI_CACHE_MIN_ERROR 0.01
+#define SCENE_GI_CACHE_MAX_ERROR 2.0
 
 /* The scene formats raytrace reads; SCENE_AUTO asks the loader to tell
  * them apart by content. */
@@ -196,6 +199,9 @@ typedef struct Scene {
     int gi_samples;         /* global illumination rays it asks for (c GI);
                                -1 when it does not say */
     int gi_bounces;         /* their bounces; 0: not said */
+    int gi_cache;           /* 1: their light through the irradiance cache
+                               (MPL c GICache, keyword gicache) */
+    double gi_cache_error;  /* its accuracy; 0: not said */
     double noise;           /* the error a pixel may keep (MPL c Noise;
                                render/noise.h), levels; 0: not said */
     int noise_min_spp;      /* its least and most samples a pixel, 1 to

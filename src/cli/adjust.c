@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/hash.h"
+#include "render/gicache.h"
 #include "render/noise.h"
 #include "render/model.h"
 #include "scene/camera.h"
@@ -31,6 +32,10 @@ static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *i
     in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
                      : scene->gi_bounces > 0 ? scene->gi_bounces
                                              : 1;
+    in->gi_cache = opts->gi_cache || scene->gi_cache;
+    in->gi_cache_error = opts->gi_cache_error > 0   ? opts->gi_cache_error
+                         : scene->gi_cache_error > 0 ? scene->gi_cache_error
+                                                     : GICACHE_DEFAULT_ERROR;
 }
 
 /* Prints "raytrace: note: WHAT" on standard error, the one place that
@@ -46,6 +51,27 @@ static void adjust_note_why(const Options *opts, const char *option, const char 
 {
     if (!opts->quiet)
         fprintf(stderr, "raytrace: note: %s changes nothing here: %s\n", option, why);
+}
+
+/* Turns the irradiance cache off where it can change nothing, saying so
+ * of the options given: no gathering rays, or a model that keeps its own
+ * gathering; and of --gi-cache-error and --gi-cache-map without it. */
+static void adjust_gi_cache(const Options *opts, const Model *model, Indirect *in)
+{
+    const char *option = opts->gi_cache ? "--gi-cache" : NULL;
+
+    if (in->gi_cache && in->gi_samples == 0) {
+        if (option)
+            adjust_note_why(opts, option, "no global illumination rays are cast (--gi N)");
+        in->gi_cache = 0;
+    } else if (in->gi_cache && model->cache_note) {
+        if (option)
+            adjust_note_why(opts, option, model->cache_note);
+        in->gi_cache = 0;
+    }
+    if (!in->gi_cache && (opts->gi_cache_error > 0 || opts->gi_cache_map) && !option)
+        adjust_note(opts, "--gi-cache-error and --gi-cache-map change nothing without the "
+                          "irradiance cache (--gi-cache)");
 }
 
 /* Sets ropts' adaptive sampling from the command line, else the scene
@@ -121,6 +147,7 @@ void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
     ropts->no_shadows = opts->no_shadows;
     adjust_noise(opts, scene, ropts);
     adjust_indirect(opts, scene, &ropts->indirect);
+    adjust_gi_cache(opts, model, &ropts->indirect);
     if (opts->ao > 0 && !model->occludes(scene))
         adjust_note(opts, "--ao changes nothing here: ambient occlusion darkens the ambient "
                         "light, and this scene has none (add one: the course's ambient:, the "
@@ -160,6 +187,12 @@ uint64_t adjust_fingerprint(const Scene *scene, const RenderOptions *ropts)
         memcpy(&bits, &level, sizeof bits);
         h = hash_u64(h, bits);
         h = hash_u64(h, (uint64_t)ropts->noise.min_spp << 32 | ropts->noise.max_spp);
+    }
+    if (ropts->indirect.gi_cache) { /* else the hash of earlier versions */
+        double a = ropts->indirect.gi_cache_error;
+        uint64_t bits;
+        memcpy(&bits, &a, sizeof bits);
+        h = hash_u64(hash_u64(h, 0x6763), bits);
     }
     h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
     return hash_u64(h, sizeof(real)); /* a float build's pixels differ */

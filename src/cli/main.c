@@ -22,8 +22,9 @@
 #include "image/tile.h"
 #include "image/writer.h"
 #include "math/number.h"
-#include "render/render.h"
+#include "render/irradiance.h"
 #include "render/model.h"
+#include "render/render.h"
 #include "scene/scene.h"
 #include "scene/scene_accel.h"
 #include "scene/scene_filter.h"
@@ -328,16 +329,58 @@ static int main_tile(const Options *opts, const Scene *scene, const RenderOption
     return -1;
 }
 
-/* Says, in *err, why opts' --spp-map may not be written: it is the
- * output itself; returns 0 when it may. */
-static int main_spp_map_target(const Options *opts, Error *err)
+/* Says, in *err, why the map `path` of option `option` may not be
+ * written: it is the output itself or a file the scene reads, or cannot
+ * be made; returns 0 when it may. */
+static int main_map_target(const Options *opts, const Scene *scene, const char *path,
+                           const char *option, Error *err)
 {
-    if (strcmp(opts->spp_map, "-") == 0 || strcmp(opts->spp_map, opts->output_path) == 0 ||
-        (strcmp(opts->output_path, "-") != 0 && file_same(opts->output_path, opts->spp_map))) {
-        error_set(err, opts->spp_map,
-                  "--spp-map must name a file of its own, not the output or standard output");
+    if (strcmp(path, "-") == 0 || strcmp(path, opts->output_path) == 0 ||
+        (strcmp(opts->output_path, "-") != 0 && file_same(opts->output_path, path))) {
+        error_set(err, path, "%s must name a file of its own, not the output or standard output",
+                  option);
         return -1;
     }
+    return main_check_target(opts, scene, path, err) != 0 || outfile_check(path, err) != 0 ? -1
+                                                                                           : 0;
+}
+
+/* Says, in *err, why the maps opts asks for may not be written (the
+ * render's choices in ropts); returns 0 when they may. */
+static int main_maps_target(const Options *opts, const Scene *scene,
+                            const RenderOptions *ropts, Error *err)
+{
+    if (ropts->noise.level > 0 && opts->spp_map &&
+        main_map_target(opts, scene, opts->spp_map, "--spp-map", err) != 0)
+        return -1;
+    if (!ropts->indirect.gi_cache || !opts->gi_cache_map)
+        return 0;
+    if (opts->tile) {
+        error_set(err, opts->gi_cache_map,
+                  "--gi-cache-map draws the whole picture: render it without --tile");
+        return -1;
+    }
+    return main_map_target(opts, scene, opts->gi_cache_map, "--gi-cache-map", err);
+}
+
+/* Places the irradiance cache's records of scene under ropts into *cache
+ * and has ropts use them; returns 0, or -1 with *err. */
+static int main_gi_cache(const Options *opts, const Scene *scene, RenderOptions *ropts,
+                         GiCache *cache, IrradianceStats *stats, RayCounts *counts, Error *err)
+{
+    int rc = irradiance_build(scene, ropts, cache, counts, stats);
+
+    if (rc == SCENE_OVER_LIMIT) {
+        error_set(err, opts->scene_path,
+                  "the irradiance cache would pass the memory limit (--memory-limit; a larger "
+                  "--gi-cache-error makes fewer records)");
+        return -1;
+    }
+    if (rc != 0) {
+        error_set(err, opts->scene_path, "out of memory for the irradiance cache");
+        return -1;
+    }
+    ropts->gicache = cache;
     return 0;
 }
 
@@ -426,6 +469,26 @@ static int main_spp_map(const Options *opts, const RenderOptions *ropts, int wid
     return rc;
 }
 
+/* Writes opts' --gi-cache-map: the picture img darkened, the records the
+ * camera's rays reach in red; returns 0, or -1 with *err. */
+static int main_gi_cache_map(const Options *opts, const Scene *scene, const GiCache *cache,
+                             const IrradianceStats *stats, const Image *img, Error *err)
+{
+    WriterOptions w = {writer_format_for(opts->gi_cache_map), 0, DEFLATE_FIXED, 95, 1, NULL};
+    Image map;
+    int rc;
+
+    if (image_init(&map, img->width, img->height) != 0) {
+        error_set(err, opts->gi_cache_map, "out of memory for the map of records");
+        return -1;
+    }
+    memcpy(map.rgb, img->rgb, 3 * (size_t)img->width * (size_t)img->height);
+    irradiance_map(scene, cache, stats->seen, &map);
+    rc = main_write(opts->gi_cache_map, &map, &w, err);
+    image_free(&map);
+    return rc;
+}
+
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
@@ -434,8 +497,10 @@ static int main_render(const Options *opts)
                            opts->jpeg_444, NULL};
     /* The linear colours of PFM would show what the cut-off leaves out. */
     RenderOptions ropts = {0, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL, {0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL};
+                           opts->threads, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
     RayCounts counts = {0};
+    GiCache cache;
+    IrradianceStats gi_stats = {0, 0, 0, 0};
     Tile tile;
     char record[TILE_RECORD_MAX];
     int rows;
@@ -445,6 +510,7 @@ static int main_render(const Options *opts)
     Error err;
     int threads;
 
+    gicache_init(&cache, 0, 1, 0);
     if (main_load(opts, &scene) != 0)
         return 1;
     read_time = process_seconds() - start;
@@ -456,10 +522,7 @@ static int main_render(const Options *opts)
     /* An output that cannot be made is said before a long render. */
     if (main_check_target(opts, &scene, opts->output_path, &err) != 0 ||
         outfile_check(opts->output_path, &err) != 0 ||
-        (ropts.noise.level > 0 && opts->spp_map &&
-         (main_check_target(opts, &scene, opts->spp_map, &err) != 0 ||
-          main_spp_map_target(opts, &err) != 0 || outfile_check(opts->spp_map, &err) != 0)) ||
-        main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
+        main_maps_target(opts, &scene, &ropts, &err) != 0 || main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
         goto fail_scene;
     accel_time = process_seconds() - start - read_time;
     rows = scene.camera.height;
@@ -485,20 +548,28 @@ static int main_render(const Options *opts)
     /* The render needs no file: the output is created once the picture is
      * done, so that nothing is left of it whatever ends the render. */
     interrupt_catch("raytrace: interrupted\n");
+    if (ropts.indirect.gi_cache &&
+        main_gi_cache(opts, &scene, &ropts, &cache, &gi_stats, &counts, &err) != 0)
+        goto fail_image_only;
     threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
     write_time = process_seconds();
     if (main_write(opts->output_path, &img, &wopts, &err) != 0 ||
-        (opts->spp_map && ropts.spp && main_spp_map(opts, &ropts, img.width, img.height, &err) != 0))
+        (opts->spp_map && ropts.spp && main_spp_map(opts, &ropts, img.width, img.height, &err) != 0) ||
+        (opts->gi_cache_map && ropts.gicache &&
+         main_gi_cache_map(opts, &scene, &cache, &gi_stats, &img, &err) != 0))
         goto fail_image;
     write_time = process_seconds() - write_time;
     if (opts->verbose) {
         SummaryTimes times = {read_time, accel_time, render_time, write_time};
         summary_verbose(&scene, &img, &ropts, opts->spp_map, &times, threads, &counts);
+        if (ropts.gicache)
+            summary_gi_cache(&cache, &gi_stats, &counts, opts->gi_cache_map);
     } else if (!opts->quiet && file_is_terminal(stderr)) {
         summary_line(strcmp(opts->output_path, "-") == 0 ? "<stdout>" : opts->output_path,
                      &scene, &img, &ropts, process_seconds() - start, threads);
     }
     main_noise_free(&ropts);
+    gicache_free(&cache);
     image_free(&img);
     scene_free(&scene);
     return 0;
@@ -507,6 +578,7 @@ fail_image:
     interrupt_watch(NULL);
 fail_image_only:
     main_noise_free(&ropts);
+    gicache_free(&cache);
     image_free(&img);
 fail_scene:
     main_report(&err, "error");

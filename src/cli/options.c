@@ -89,6 +89,12 @@ const char *const *options_help(void)
         "                     reflect onto its diffuse part (default: 0; seed\n"
         "                     001's model: 10 rays gathering the colours they meet)\n"
         "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
+        "  --gi-cache         gather through an irradiance cache: --gi N rays at\n"
+        "                     a few points placed before the render, their light\n"
+        "                     interpolated between them (smooth, faster; biased)\n"
+        "  --gi-cache-error E the cache's accuracy, 0.01 to 2 (default 0.2;\n"
+        "                     smaller: more records, closer to gathering)\n"
+        "  --gi-cache-map FILE also write where the cache's records fell\n"
         "  --tile K/N         render only the K-th of N tiles (1 <= K <= N <= 65536)\n"
         "                     to OUTPUT, a PPM, PNG or PFM that records where it\n"
         "                     belongs; raytrace-merge puts the tiles together\n"
@@ -184,6 +190,10 @@ static const ArgSpec options_table[] = {
     {"--ao-distance", OPT(NULL, ARG_REAL, ao_distance), 0, 1e300, NULL, 0},
     {"--gi", OPT(NULL, ARG_INT, gi), 0, SCENE_MAX_INDIRECT, NULL, 0},
     {"--gi-bounces", OPT(NULL, ARG_INT, gi_bounces), 1, SCENE_MAX_BOUNCES, NULL, 0},
+    {"--gi-cache", OPT(NULL, ARG_FLAG, gi_cache), 0, 0, NULL, 0},
+    {"--gi-cache-error", OPT(NULL, ARG_REAL, gi_cache_error), SCENE_GI_CACHE_MIN_ERROR,
+     SCENE_GI_CACHE_MAX_ERROR, NULL, 0},
+    {"--gi-cache-map", OPT(NULL, ARG_TEXT, gi_cache_map), 0, 0, NULL, 0},
     {"--noise", OPT(NULL, ARG_REAL, noise), 0, 255, NULL, 0},
     {"--min-spp", OPT(NULL, ARG_INT, min_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
     {"--max-spp", OPT(NULL, ARG_INT, max_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
@@ -294,6 +304,10 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     }
     if (opts->spp_map && !*opts->spp_map) {
         snprintf(msg, msg_size, "--spp-map needs a file name");
+        return OPTIONS_USAGE;
+    }
+    if (opts->gi_cache_map && !*opts->gi_cache_map) {
+        snprintf(msg, msg_size, "--gi-cache-map needs a file name");
         return OPTIONS_USAGE;
     }
     return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;

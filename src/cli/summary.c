@@ -108,6 +108,9 @@ static void summary_noise(const RenderOptions *ropts, size_t n, const char *spp_
     fprintf(stderr, "\nraytrace: estimated error (one standard error, 68%% confidence): mean "
                     "%.3f, worst %.3f levels; %zu pixel%s short of %g at --max-spp\n",
             s.mean_error, s.worst_error, short_of, short_of == 1 ? "" : "s", ropts->noise.level);
+    if (ropts->indirect.gi_cache)
+        fprintf(stderr, "raytrace: under --gi-cache the estimate sees only the spread of the "
+                        "camera's samples: the cache's error is the same in every sample\n");
     if (spp_map)
         fprintf(stderr, "raytrace: map of samples: %s (black %u or fewer, white %u, log scale)\n",
                 spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
@@ -128,6 +131,22 @@ void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *
     if (ropts->spp)
         summary_noise(ropts, (size_t)img->width * (size_t)img->height, spp_map);
     fprintf(stderr, "raytrace: wrote the image in %.3f s\n", times->write);
+}
+
+void summary_gi_cache(const GiCache *cache, const IrradianceStats *stats, const RayCounts *counts,
+                      const char *map)
+{
+    fprintf(stderr,
+            "raytrace: irradiance cache: error %g, %zu records (%zu where the camera's rays "
+            "reach), %llu rays in its pre-pass, %.3f s\n",
+            cache->a, stats->records, stats->seen, stats->rays, stats->seconds);
+    fprintf(stderr, "raytrace: irradiance cache: %llu of %llu lookups served (%.1f%%), the rest "
+                    "gathered\n",
+            counts->served, counts->lookups,
+            counts->lookups ? 100.0 * (double)counts->served / (double)counts->lookups : 100.0);
+    if (map)
+        fprintf(stderr, "raytrace: map of records: %s (red: a record the camera's rays reach)\n",
+                map);
 }
 
 void summary_line(const char *output, const Scene *scene, const Image *img,

@@ -18,8 +18,16 @@
 
 enum { GICACHE_NONE = UINT32_MAX };
 
+/* A record's entry in a cell: the record, and the cell's next entry. */
+typedef struct GiEntry {
+    uint32_t record, next;
+} GiEntry;
+
 /* A cell of the hash grid: a cube of 2^scale a side at (ix, iy, iz) in
- * units of its side; head is its last record added (then next[]). */
+ * units of its side; head is its last entry added (then the entries'
+ * next). A record is entered in every cell of its scale its reach
+ * overlaps (at most 8: it is no wider than a cell), so a lookup reads one
+ * cell a scale. */
 typedef struct GiCell {
     int64_t ix, iy, iz;
     int scale;
@@ -94,12 +102,12 @@ static Vec3 gicache_turn(Vec3 t1, Vec3 t2, int j, int k, int m, int n)
                     vec3_scale(t2, (real)(s * (sin(p1) - sin(p0)))));
 }
 
-int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, void *ctx,
-                   GiValue *v, double *harmonic)
+int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSample sample,
+                   void *ctx, GiValue *v, double *harmonic, double *open)
 {
     size_t cells = (size_t)m * (size_t)n;
     Colour *lc = malloc(cells * sizeof *lc);
-    double *r = malloc(cells * sizeof *r), inverse = 0;
+    double *r = malloc(cells * sizeof *r), inverse = 0, escaped = 0;
     Vec3 t1 = vec3_from_frame(normal, 1, 0, 0), t2 = vec3_from_frame(normal, 0, 1, 0);
     Colour sum = colour(0, 0, 0);
 
@@ -120,6 +128,9 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, voi
             r[i] = sample(ctx, dir, &lc[i]);
             if (r[i] < INFINITY)
                 inverse += 1 / r[i];
+            else
+                escaped++;
+            r[i] = r[i] > near ? r[i] : near;
             sum = colour_add(sum, lc[i]);
             /* Turning the normal about w changes cos theta by w . (N x dir),
              * N x dir = sin theta (-sin phi t1 + cos phi t2): over the
@@ -132,9 +143,22 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, GiSample sample, voi
     v->g = colour_scale(sum, 1.0 / (double)cells);
     gicache_translation(t1, t2, m, n, lc, r, v->trans);
     *harmonic = inverse > 0 ? (double)cells / inverse : INFINITY;
+    *open = escaped / (double)cells;
     free(lc);
     free(r);
     return 0;
+}
+
+void gicache_limit(GiValue *v, double reach)
+{
+    double g[3] = {v->g.r, v->g.g, v->g.b};
+
+    for (int c = 0; c < 3; c++) {
+        double slope = (double)vec3_length(v->trans[c]);
+        if (slope * reach > g[c])
+            v->trans[c] = slope > 0 ? vec3_scale(v->trans[c], (real)(g[c] / (slope * reach)))
+                                    : v->trans[c];
+    }
 }
 
 double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx)
@@ -179,7 +203,7 @@ void gicache_free(GiCache *c)
 {
     free(c->places);
     free(c->values);
-    free(c->next);
+    free(c->entries);
     free(c->cells);
     gicache_init(c, c->a, c->levels, c->limit);
 }
@@ -187,7 +211,7 @@ void gicache_free(GiCache *c)
 /* Returns the bytes of records of `records` slots and a grid of `cells`. */
 static size_t gicache_bytes(const GiCache *c, size_t records, size_t cells)
 {
-    return records * (sizeof(GiPlace) + sizeof(uint32_t) + (size_t)c->levels * sizeof(GiValue)) +
+    return records * (sizeof(GiPlace) + 8 * sizeof(GiEntry) + (size_t)c->levels * sizeof(GiValue)) +
            cells * sizeof(GiCell);
 }
 
@@ -259,7 +283,7 @@ static int gicache_reserve(GiCache *c)
 
     if (c->count == records)
         records = records ? 2 * records : 256;
-    if (2 * (c->cell_count + 1) > cells)
+    if (2 * (c->cell_count + 8) > cells)
         cells = cells ? 2 * cells : 512;
     if (records == c->capacity && cells == c->cell_capacity)
         return 0;
@@ -269,16 +293,16 @@ static int gicache_reserve(GiCache *c)
         return -2;
     if (records != c->capacity) {
         GiPlace *p = realloc(c->places, records * sizeof *p);
-        uint32_t *nx;
+        GiEntry *e;
         GiValue *v;
 
         if (!p)
             return -1;
         c->places = p;
-        nx = realloc(c->next, records * sizeof *nx);
-        if (!nx)
+        e = realloc(c->entries, 8 * records * sizeof *e);
+        if (!e)
             return -1;
-        c->next = nx;
+        c->entries = e;
         v = realloc(c->values, records * (size_t)c->levels * sizeof *v);
         if (!v)
             return -1;
@@ -304,32 +328,107 @@ static void gicache_use_scale(GiCache *c, int s)
     c->scale_count++;
 }
 
+/* Enters record i in cell (s, ix, iy, iz). */
+static void gicache_enter(GiCache *c, uint32_t i, int s, int64_t ix, int64_t iy, int64_t iz)
+{
+    size_t slot = gicache_slot(c, s, ix, iy, iz);
+    GiEntry *e = &c->entries[c->entry_count];
+
+    if (c->cells[slot].head == GICACHE_NONE) {
+        c->cells[slot].scale = s;
+        c->cells[slot].ix = ix;
+        c->cells[slot].iy = iy;
+        c->cells[slot].iz = iz;
+        c->cell_count++;
+    }
+    e->record = i;
+    e->next = c->cells[slot].head;
+    c->cells[slot].head = (uint32_t)c->entry_count++;
+}
+
+/* A record whose rays met nothing GICACHE_SEAM more often than a
+ * neighbour's sits on a seam of the geometry (a corner's edge, where rays
+ * leave between two surfaces): it is kept to half their distance. */
+#define GICACHE_SEAM 0.15
+
+/* Neighbour clamping (Krivanek et al. 2006): no record's radius exceeds a
+ * neighbour's plus their distance, so that the small radius of a record
+ * near a corner reaches those beside it; and a record on a seam is kept
+ * from its neighbours. Applied between record i and every record whose
+ * cells hold its point. Shrinking a radius keeps the record's cells
+ * valid: they cover more than its reach. */
+static void gicache_clamp_neighbours(GiCache *c, uint32_t i)
+{
+    GiPlace *p = &c->places[i];
+
+    for (int k = 0; k < c->scale_count; k++) {
+        int s = c->scales[k];
+        size_t slot = gicache_slot(c, s, gicache_coord(p->point.x, s), gicache_coord(p->point.y, s),
+                                   gicache_coord(p->point.z, s));
+
+        for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
+            GiPlace *q = &c->places[c->entries[e].record];
+            double d = (double)vec3_length(vec3_sub(p->point, q->point));
+
+            if (c->entries[e].record == i)
+                continue;
+            if (p->radius > q->radius + d)
+                p->radius = q->radius + d;
+            if (q->radius > p->radius + d)
+                q->radius = p->radius + d;
+            if (p->open > q->open + GICACHE_SEAM && d > 0)
+                p->radius = fmin(p->radius, d / 2);
+            if (q->open > p->open + GICACHE_SEAM && d > 0)
+                q->radius = fmin(q->radius, d / 2);
+        }
+    }
+}
+
+/* Enters record i in the cells of its scale its reach overlaps. */
+static void gicache_file(GiCache *c, uint32_t i)
+{
+    const GiPlace *place = &c->places[i];
+    double reach = GICACHE_MAX_REACH * c->a * place->radius;
+    int s = gicache_scale_of(c, place->radius);
+    int64_t lo[3], hi[3];
+
+    lo[0] = gicache_coord((real)(place->point.x - reach), s);
+    lo[1] = gicache_coord((real)(place->point.y - reach), s);
+    lo[2] = gicache_coord((real)(place->point.z - reach), s);
+    hi[0] = gicache_coord((real)(place->point.x + reach), s);
+    hi[1] = gicache_coord((real)(place->point.y + reach), s);
+    hi[2] = gicache_coord((real)(place->point.z + reach), s);
+    for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 1; z++)
+        for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 1; y++)
+            for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 1; x++)
+                gicache_enter(c, i, s, x, y, z);
+    gicache_use_scale(c, s);
+}
+
 int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values)
 {
-    int rc = gicache_reserve(c), s;
-    size_t i, slot;
+    int rc = gicache_reserve(c);
+    uint32_t i;
 
     if (rc != 0)
         return rc;
-    i = c->count++;
+    i = (uint32_t)c->count++;
     c->places[i] = *place;
-    memcpy(&c->values[i * (size_t)c->levels], values, (size_t)c->levels * sizeof *values);
-    s = gicache_scale_of(c, place->radius);
-    slot = gicache_slot(c, s, gicache_coord(place->point.x, s), gicache_coord(place->point.y, s),
-                        gicache_coord(place->point.z, s));
-    if (c->cells[slot].head == GICACHE_NONE) {
-        c->cells[slot].scale = s;
-        c->cells[slot].ix = gicache_coord(place->point.x, s);
-        c->cells[slot].iy = gicache_coord(place->point.y, s);
-        c->cells[slot].iz = gicache_coord(place->point.z, s);
-        c->cell_count++;
-        c->next[i] = GICACHE_NONE;
-    } else {
-        c->next[i] = c->cells[slot].head;
-    }
-    c->cells[slot].head = (uint32_t)i;
-    gicache_use_scale(c, s);
+    memcpy(&c->values[(size_t)i * (size_t)c->levels], values, (size_t)c->levels * sizeof *values);
+    gicache_clamp_neighbours(c, i);
+    gicache_file(c, i);
     return 0;
+}
+
+void gicache_refile(GiCache *c)
+{
+    for (size_t k = 0; k < c->cell_capacity; k++)
+        c->cells[k].head = GICACHE_NONE;
+    c->cell_count = 0;
+    c->entry_count = 0;
+    c->scale_count = 0;
+    for (size_t i = 0; i < c->count; i++)
+        gicache_file(c, (uint32_t)i);
 }
 
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
@@ -347,29 +446,24 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
         return 0;
     for (int k = 0; k < c->scale_count; k++) {
         int s = c->scales[k];
-        int64_t cx = gicache_coord(x.x, s), cy = gicache_coord(x.y, s), cz = gicache_coord(x.z, s);
+        size_t slot = gicache_slot(c, s, gicache_coord(x.x, s), gicache_coord(x.y, s),
+                                   gicache_coord(x.z, s));
 
-        for (int dz = -1; dz <= 1; dz++)
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dx = -1; dx <= 1; dx++) {
-                    size_t slot = gicache_slot(c, s, cx + dx, cy + dy, cz + dz);
+        for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
+            uint32_t i = c->entries[e].record;
+            double w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
+            Colour g;
 
-                    for (uint32_t i = c->cells[slot].head; i != GICACHE_NONE; i = c->next[i]) {
-                        double w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
-                        Colour g;
-
-                        if (w <= 0)
-                            continue;
-                        g = gicache_extrapolate(&c->places[i],
-                                                &c->values[i * (size_t)c->levels + (size_t)level],
-                                                x, nx);
-                        sum[0] += w * g.r;
-                        sum[1] += w * g.g;
-                        sum[2] += w * g.b;
-                        total += w;
-                        used++;
-                    }
-                }
+            if (w <= 0)
+                continue;
+            g = gicache_extrapolate(&c->places[i], &c->values[i * (size_t)c->levels + (size_t)level],
+                                    x, nx);
+            sum[0] += w * g.r;
+            sum[1] += w * g.g;
+            sum[2] += w * g.b;
+            total += w;
+            used++;
+        }
     }
     if (used)
         *out = colour(sum[0] / total, sum[1] / total, sum[2] / total);

@@ -327,6 +327,8 @@ static void render_add_counts(RayCounts *a, const RayCounts *b)
     a->refined += b->refined;
     a->occlusion += b->occlusion;
     a->gather += b->gather;
+    a->lookups += b->lookups;
+    a->served += b->served;
 }
 
 /* Returns the grid of the `rays` indirect rays (occlusion or gathering,
@@ -375,6 +377,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         t.path_grid = g;
         t.occluders = occluders;
         t.no_shadows = opts->no_shadows;
+        t.gicache = opts->indirect.gi_cache ? opts->gicache : NULL;
         t.footprint_scale = render_footprint_scale(noise ? noise_most(&opts->noise) : g.n);
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)

@@ -5,7 +5,9 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "base/grow.h"
 #include "math/angle.h"
+#include "render/gicache.h"
 #include "render/cut.h"
 #include "render/sampler.h"
 #include "render/shade.h"
@@ -13,12 +15,15 @@
 
 /* Where a ray is on its way from the camera: the key its indirect rays
  * draw their directions from (sampler.h; 0 when there are none), the
- * diffuse bounces (gathering rays) taken so far, and its differentials
- * (geometry/ray.h; NULL when the scene reads nothing over a footprint). */
+ * diffuse bounces (gathering rays) taken so far, its differentials
+ * (geometry/ray.h; NULL when the scene reads nothing over a footprint),
+ * and where to say what it meets, or NULL (set for a gathering ray of the
+ * irradiance cache's, not for those it sends on). */
 typedef struct {
     uint64_t key;
     int bounce;
     const RayDiff *diff;
+    TraceMet *met;
 } TracePath;
 
 /* The colour along a ray of depth `depth`, reached with `weight` (the
@@ -96,6 +101,7 @@ static inline TracePath trace_child(const Tracer *t, const Ray *ray, const Shade
 {
     TracePath next = trace_branch(t, path, kind);
 
+    next.met = NULL;
     d->ray.dir = dir;
     d->ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
     d->has_diff = path.diff && sh->footprint;
@@ -164,7 +170,7 @@ Colour trace_deferred(const Tracer *t, CutRay d)
 {
     /* The cut-off is off under global illumination (render.c), so a
      * deferred ray's path draws nothing. */
-    TracePath none = {0, 0, d.has_diff ? &d.diff : NULL};
+    TracePath none = {0, 0, d.has_diff ? &d.diff : NULL, NULL};
 
     if (d.kind == RAY_SHADOW)
         return colour_mul(d.lit, colour_scale(d.weight, shade_light_share(t, &d.ray, d.tmax, NULL)));
@@ -175,6 +181,29 @@ Colour trace_deferred(const Tracer *t, CutRay d)
     return colour_scale(trace_path(t, &d.ray, d.depth, d.weight.r, none), d.weight.r);
 }
 
+void gather_points_add(GatherPoints *list, const GatherPoint *p)
+{
+    void *items = list->items;
+
+    if (grow_reserve(&items, &list->capacity, list->count, sizeof *list->items) != 0) {
+        list->failed = 1;
+        return;
+    }
+    list->items = items;
+    list->items[list->count++] = *p;
+}
+
+Colour trace_gathered(const Tracer *t, const Ray *ray, int bounce, uint64_t key, TraceMet *met)
+{
+    TracePath path = {key, bounce, NULL, met};
+
+    met->t = INFINITY;
+    met->behind = 0;
+    if (t->named)
+        return trace_named_path(t, ray, 0, colour(1, 1, 1), path);
+    return trace_path(t, ray, 0, 1, path);
+}
+
 Colour trace_ray(const Tracer *t, const Ray *ray)
 {
     return trace_ray_diff(t, ray, NULL);
@@ -182,7 +211,7 @@ Colour trace_ray(const Tracer *t, const Ray *ray)
 
 Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
-    TracePath primary = {0, 0, diff};
+    TracePath primary = {0, 0, diff, NULL};
 
     if (t->named)
         return trace_named_path(t, ray, 0, colour(1, 1, 1), primary);
@@ -283,7 +312,8 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
     Colour sum = colour(0, 0, 0);
 
     for (unsigned i = 0; i < rays; i++) {
-        TracePath next = {sampler_branch(path.key, TRACER_GATHERED + i), path.bounce + 1, NULL};
+        TracePath next = {sampler_branch(path.key, TRACER_GATHERED + i), path.bounce + 1, NULL,
+                          NULL};
         RayDiff spread;
         double d[3];
         Ray r;
@@ -310,7 +340,22 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
 static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, int depth,
                              Colour weight, TracePath path, double kd)
 {
-    Colour g = trace_gather(t, sh, n, ns, depth, weight, path);
+    Colour g;
+
+    if (t->collect) { /* the irradiance cache's pre-pass: where, not how much */
+        GatherPoint p = {sh->sp.point, sh->sp.error, n, ns, path.bounce};
+        gather_points_add(t->collect, &p);
+        return colour(0, 0, 0);
+    }
+    if (t->gicache) {
+        t->counts->lookups++;
+        if (gicache_lookup(t->gicache, path.bounce, 1, sh->sp.point, ns, &g))
+            t->counts->served++;
+        else
+            g = trace_gather(t, sh, n, ns, depth, weight, path);
+    } else {
+        g = trace_gather(t, sh, n, ns, depth, weight, path);
+    }
 
     return colour(kd * (sh->colour.r * g.r / 255), kd * (sh->colour.g * g.g / 255),
                   kd * (sh->colour.b * g.b / 255));
@@ -417,6 +462,10 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
+    if (path.met) {
+        path.met->t = (double)hit.t;
+        path.met->behind = vec3_dot(ray->dir, sh.sp.normal) > 0;
+    }
     n = ray_facing_normal(sh.sp.normal, ray->dir);
     ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
     /* Ambient occlusion at the points the camera sees, where there is
@@ -442,6 +491,10 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     if (!visibility_nearest(scene, ray, INFINITY, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
+    if (path.met) {
+        path.met->t = (double)hit.t;
+        path.met->behind = vec3_dot(ray->dir, sh.sp.normal) > 0;
+    }
     /* n, the surface's normal facing the ray, decides where secondary rays
      * start; ns, the shading normal on n's side, how light and mirrors
      * behave. They are the same but on smooth triangles. */

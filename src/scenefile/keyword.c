@@ -39,6 +39,7 @@ typedef struct {
     Lexer lex;              /* the cursor over the input */
     int camera_line;        /* line of the camera, 0 before it */
     int ambient_line;       /* line of the ambient record, 0 before it */
+    int gi_line, gicache_line; /* the gi and gicache records' */
     int background_line;    /* line of the background record, 0 before it */
     Names names;            /* the materials by name */
 } Keyword;
@@ -97,6 +98,11 @@ static const RecordSpec keyword_ambient = {"the ambient light", "r g b", 3, 0, 0
                                            keyword_rgb_names, keyword_rgb_kinds};
 static const RecordSpec keyword_background = {"the background", "r g b", 3, 0, 0,
                                               keyword_rgb_names, keyword_rgb_kinds};
+
+static const char *const keyword_gicache_names[] = {"error"};
+static const FieldKind keyword_gicache_kinds[] = {FIELD_POSITIVE};
+static const RecordSpec keyword_gicache = {"the irradiance cache", "[error]", 1, 0, 0,
+                                           keyword_gicache_names, keyword_gicache_kinds};
 
 /* Records a fault at column of line. */
 #define keyword_fail(K, line, column, ...) lex_fail(&(K)->lex, line, column, __VA_ARGS__)
@@ -336,6 +342,51 @@ static int keyword_background_record(Keyword *K, const Record *rec, Scene *scene
     return 0;
 }
 
+/* gi -> 'gi' rays [bounces]: global illumination, as --gi and
+ * --gi-bounces (docs/scene-format.md) */
+static int keyword_gi_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    if (lex_once(&K->lex, rec, &K->gi_line, "the global illumination") != 0)
+        return -1;
+    if (rec->count < 2) {
+        keyword_fail(K, &rec->line, rec->tok[0].column + (int)rec->tok[0].len,
+                     "missing the number of global illumination rays (expected gi rays "
+                     "[bounces])");
+        return -1;
+    }
+    if (rec->count > 3)
+        return lex_fail_extra(&K->lex, rec, 3, "the number of bounces");
+    if (lex_whole_number_in(&K->lex, rec, 1, "the number of global illumination rays", "rays", 0,
+                            SCENE_MAX_INDIRECT, &scene->gi_samples) != 0)
+        return -1;
+    return rec->count == 3 ? lex_whole_number(&K->lex, rec, 2, "the number of bounces",
+                                              "bounces", SCENE_MAX_BOUNCES, &scene->gi_bounces)
+                           : 0;
+}
+
+/* gicache -> 'gicache' [error]: global illumination's light through the
+ * irradiance cache, as --gi-cache and --gi-cache-error */
+static int keyword_gicache_record(Keyword *K, const Record *rec, Scene *scene)
+{
+    if (lex_once(&K->lex, rec, &K->gicache_line, "the irradiance cache") != 0)
+        return -1;
+    scene->gi_cache = 1;
+    if (rec->count > 2)
+        return lex_fail_extra(&K->lex, rec, 2, "the irradiance cache's error");
+    if (rec->count == 2 &&
+        lex_number(&K->lex, rec, 1, &keyword_gicache, 0, &scene->gi_cache_error) != 0)
+        return -1;
+    if (rec->count == 2 && !(scene->gi_cache_error >= SCENE_GI_CACHE_MIN_ERROR &&
+                             scene->gi_cache_error <= SCENE_GI_CACHE_MAX_ERROR)) {
+        keyword_fail(K, &rec->line, rec->tok[1].column,
+                     "the irradiance cache's error must be from %g to %g (smaller: more "
+                     "records)",
+                     SCENE_GI_CACHE_MIN_ERROR, SCENE_GI_CACHE_MAX_ERROR);
+        return -1;
+    }
+    return 0;
+}
+
 /* An element and what reads it. */
 typedef struct {
     const char *keyword;
@@ -350,7 +401,8 @@ static const KeywordKind keyword_kinds[] = {
     {"light", keyword_light_record, 0},     {"ambient", keyword_ambient_record, 0},
     {"background", keyword_background_record, 0}, {"cube", NULL, SHAPE_CUBE},
     {"square", NULL, SHAPE_SQUARE},         {"cylinder", NULL, SHAPE_CYLINDER},
-    {"cone", NULL, SHAPE_CONE},
+    {"cone", NULL, SHAPE_CONE},             {"gi", keyword_gi_record, 0},
+    {"gicache", keyword_gicache_record, 0},
 };
 
 enum { KEYWORD_KINDS = sizeof keyword_kinds / sizeof keyword_kinds[0] };
@@ -429,6 +481,7 @@ int keyword_parse_text(const char *name, const char *text, size_t len, size_t me
     scene->format = SCENE_KEYWORD;
     lex_init(&K.lex, name, text, len, err);
     K.camera_line = K.ambient_line = K.background_line = 0;
+    K.gi_line = K.gicache_line = 0;
     names_init(&K.names);
     rc = keyword_elements(&K, scene);
     names_free(&K.names);

@@ -453,6 +453,7 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     scene->background = colour(255, 255, 255);
     lex_init(&M.lex, name, text, len, err);
     M.camera_line = M.background_line = M.ambient_line = M.samples_line = M.noise_line = 0;
+    M.gicache_line = 0;
     M.ao_line = M.gi_line = M.model_line = 0;
     M.strict = strict;
     names_init(&M.names);

@@ -28,6 +28,7 @@ typedef struct {
     int gi_line;
     int model_line;
     int noise_line;
+    int gicache_line;
     Names names;         /* the materials by name */
     int strict;          /* 1: lines seed 001's program read leniently are
                             errors; 0: read as it did, with a warning */

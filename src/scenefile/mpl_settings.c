@@ -25,6 +25,9 @@ static const RecordSpec mpl_ao_distance = {"the ambient occlusion", NULL, 1, 0, 
 static const char *const mpl_noise_names[] = {"level"};
 static const FieldKind mpl_noise_kinds[] = {FIELD_POSITIVE};
 static const RecordSpec mpl_noise = {"the noise", NULL, 1, 0, 0, mpl_noise_names, mpl_noise_kinds};
+static const char *const mpl_gicache_names[] = {"error"};
+static const RecordSpec mpl_gicache = {"the irradiance cache", NULL, 1, 0, 0, mpl_gicache_names,
+                                       mpl_noise_kinds};
 static const RecordSpec mpl_camera = {"the camera", "x y z tx ty tz fov width height", 7, 0, 0,
                                       mpl_camera_names, mpl_camera_kinds};
 static const RecordSpec mpl_background = {"the background", "r g b", 3, 0, 0, mpl_rgb_names,
@@ -144,6 +147,28 @@ static int mpl_noise_record(Mpl *M, const Record *rec, Scene *scene)
     return 0;
 }
 
+/* gicache -> 'c' GICache [error]: global illumination's light through the
+ * irradiance cache (render/irradiance.h), of accuracy error. */
+static int mpl_gicache_record(Mpl *M, const Record *rec, Scene *scene)
+{
+    if (lex_once(&M->lex, rec, &M->gicache_line, "the irradiance cache") != 0)
+        return -1;
+    scene->gi_cache = 1;
+    if (rec->count > 3)
+        return lex_fail_extra(&M->lex, rec, 3, "the irradiance cache's error");
+    if (rec->count == 3 &&
+        lex_number(&M->lex, rec, 2, &mpl_gicache, 0, &scene->gi_cache_error) != 0)
+        return -1;
+    if (rec->count == 3 && !(scene->gi_cache_error >= SCENE_GI_CACHE_MIN_ERROR &&
+                             scene->gi_cache_error <= SCENE_GI_CACHE_MAX_ERROR)) {
+        mpl_fail(M, &rec->line, rec->tok[2].column,
+                 "the irradiance cache's error must be from %g to %g (smaller: more records)",
+                 SCENE_GI_CACHE_MIN_ERROR, SCENE_GI_CACHE_MAX_ERROR);
+        return -1;
+    }
+    return 0;
+}
+
 /* model -> 'c' Model seed001 | 'c' Model physical: the rules the picture
  * is made by (scene.h). */
 static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
@@ -172,12 +197,14 @@ int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
     char q[64];
 
     if (mpl_need(M, rec, 1, "the setting",
-                 "Camera, Background, Sky, Ambient, Samples, AO, GI, Model or Noise") != 0)
+                 "Camera, Background, Sky, Ambient, Samples, AO, GI, GICache, Model or Noise") != 0)
         return -1;
     if (mpl_word_is(&rec->tok[1], "Model"))
         return mpl_model_record(M, rec, scene);
     if (mpl_word_is(&rec->tok[1], "Noise"))
         return mpl_noise_record(M, rec, scene);
+    if (mpl_word_is(&rec->tok[1], "GICache"))
+        return mpl_gicache_record(M, rec, scene);
     if (mpl_word_is(&rec->tok[1], "AO") || mpl_word_is(&rec->tok[1], "GI"))
         return mpl_indirect_record(M, rec, scene, mpl_word_is(&rec->tok[1], "GI"));
     if (mpl_word_is(&rec->tok[1], "Camera"))
@@ -212,7 +239,7 @@ int mpl_setting_record(Mpl *M, const Record *rec, Scene *scene)
     }
     mpl_fail(M, &rec->line, rec->tok[1].column,
              "unknown setting %s (expected Camera, Background, Sky, Ambient, Samples, AO, GI, "
-             "Model or Noise)",
+             "GICache, Model or Noise)",
              lex_quote(q, sizeof q, &rec->tok[1]));
     return -1;
 }

@@ -260,6 +260,12 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
             fprintf(fp, " %d", scene->gi_bounces);
         fputc('\n', fp);
     }
+    if (scene->gi_cache) {
+        fputs("c GICache", fp);
+        if (scene->gi_cache_error > 0)
+            save_numbers(fp, &scene->gi_cache_error, 1);
+        fputc('\n', fp);
+    }
     if (scene->noise > 0) {
         fputs("c Noise", fp);
         save_numbers(fp, &scene->noise, 1);
