@@ -489,6 +489,35 @@ ln -s keep.ppm "$T/link.ppm"
 expect_exit "through a link" 0 "$RT" "$T/small.txt" "$T/link.ppm"
 [ -L "$T/link.ppm" ] && head -c 2 "$T/keep.ppm" | grep -q P6 && pass || fail "link replaced"
 
+# --- the irradiance cache: the same bytes on any threads (tiles:
+# tests/tiles.sh), its
+# -v lines, its map, its notes, its memory limit ---
+sed 's/^200 .*/48    # horizontal resolution/' scenes/room.txt >"$T/room.txt"
+"$RT" -q -j1 --gi 32 --gi-cache --gi-bounces 2 "$T/room.txt" "$T/gc1.ppm" &&
+    "$RT" -q -j2 --gi 32 --gi-cache --gi-bounces 2 "$T/room.txt" "$T/gc2.ppm" &&
+    cmp -s "$T/gc1.ppm" "$T/gc2.ppm" && pass || fail "--gi-cache: -j1 and -j2 differ"
+"$RT" -q --gi 32 "$T/room.txt" "$T/gc0.ppm" && ! cmp -s "$T/gc0.ppm" "$T/gc1.ppm" && pass ||
+    fail "--gi-cache changes no byte"
+"$RT" -v --gi 32 --gi-cache --gi-cache-map "$T/gcmap.png" "$T/room.txt" "$T/gcv.ppm" 2>"$T/err"
+expect_grep "--gi-cache -v records" "irradiance cache: error 0.2, " "$T/err"
+expect_grep "--gi-cache -v lookups" "lookups served" "$T/err"
+[ -s "$T/gcmap.png" ] && pass || fail "--gi-cache-map wrote no map"
+expect_exit "--gi-cache-map with --tile" 1 "$RT" -q --gi 32 --gi-cache --gi-cache-map "$T/m.png" --tile 1/2 "$T/room.txt" "$T/t.ppm"
+"$RT" --gi-cache "$T/room.txt" "$T/n.ppm" 2>"$T/err"
+expect_grep "--gi-cache without --gi" "note: --gi-cache changes nothing here: no global illumination rays" "$T/err"
+"$RT" --gi 8 --gi-cache --model seed001 scenes/indirect.txt --size 8x8 "$T/n.ppm" 2>"$T/err"
+expect_grep "--gi-cache under seed 001's model" "note: --gi-cache changes nothing here: seed 001's model" "$T/err"
+"$RT" --gi-cache-error 0.1 "$T/room.txt" "$T/n.ppm" 2>"$T/err"
+expect_grep "--gi-cache-error alone" "note: --gi-cache-error and --gi-cache-map change nothing" "$T/err"
+expect_exit "--gi-cache-error 0" 2 "$RT" --gi 8 --gi-cache --gi-cache-error 0 "$T/room.txt" "$T/n.ppm"
+printf 'old\n' >"$T/keep.ppm"
+"$RT" -q --gi 64 --gi-cache --gi-cache-error 0.01 --memory-limit 40K "$T/room.txt" "$T/keep.ppm" 2>"$T/err"
+expect_grep "--gi-cache over the memory limit" "irradiance cache would pass the memory limit" "$T/err"
+expect_grep "--gi-cache over the limit keeps the output" "old" "$T/keep.ppm"
+{ sed -n '1,20p' scenes/indirect.txt | sed 's/ 400 400$/ 24 24/'; echo "c GI 16"; echo "c GICache 0.3"; } >"$T/gc.mpl"
+"$RT" -q "$T/gc.mpl" "$T/gcs.ppm" && "$RT" -q --gi 16 --gi-cache --gi-cache-error 0.3 --scene-format mpl "$T/gc.mpl" "$T/gco.ppm" &&
+    cmp -s "$T/gcs.ppm" "$T/gco.ppm" && pass || fail "c GICache 0.3 differs from --gi-cache --gi-cache-error 0.3"
+
 # --- an interrupted render leaves the old output and no temporary file ---
 awk 'BEGIN {
     print "0 0 0"; print "-1 1 1"; print "1 1 1"; print "-1 -1 1"; print "3000";

@@ -182,8 +182,10 @@ static const BadMpl mpl_bad[] = {
     {"c Camera 0 0 0 0 0 1 90 8 8\nc Camera 0 0 0 0 0 1 90 8 8\n", 2, 1,
      "the camera is already set, on line 1"},
     {"c Fog 1\n", 1, 3,
-     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO, GI, Model "
-     "or Noise)"},
+     "unknown setting 'Fog' (expected Camera, Background, Sky, Ambient, Samples, AO, GI, "
+     "GICache, Model or Noise)"},
+    {"c GICache 5\n", 1, 11, "the irradiance cache's error must be from 0.01 to 2 (smaller: more "
+                            "records)"},
     {"c Noise\n", 1, 8,
      "expected the noise level (c Noise level [min-spp [max-spp]]), found the end of the line"},
     {"c Noise 0\n", 1, 9, "the noise's level must be greater than 0, found '0'"},

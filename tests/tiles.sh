@@ -252,4 +252,18 @@ if full && have sbatch slurm-wlm; then
 fi
 cd "$TOP" || exit 2
 
+# --- the irradiance cache: each tile runs the whole picture's pre-pass,
+# so its tiles merge to the whole render, in both layouts ---
+sed 's/^200 .*/40    # horizontal resolution/' scenes/room.txt >"$T/room.txt"
+"$RT" -q --gi 24 --gi-cache --gi-bounces 2 "$T/room.txt" "$T/gc.ppm" || fail "--gi-cache: the whole render"
+for layout in rows bands; do
+    rm -f "$T"/gct-*.ppm
+    for k in 1 2 3; do
+        "$RT" -q --gi 24 --gi-cache --gi-bounces 2 --tile "$k/3" --tile-layout $layout "$T/room.txt" \
+            "$T/gct-$k.ppm" || fail "--gi-cache: tile $k/3 $layout"
+    done
+    "$MERGE" -q "$T/gcm.ppm" "$T"/gct-*.ppm && cmp -s "$T/gcm.ppm" "$T/gc.ppm" && pass ||
+        fail "--gi-cache: the $layout tiles merged differ from the whole picture"
+done
+
 finish
