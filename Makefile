@@ -21,7 +21,10 @@
 # make seed001 SEED001=DIR  render seed 001's four scenes (DIR: a checkout of
 #                   its program's repository) and compare them with its renders
 # make trade        measure error against time for every speed/accuracy knob;
-#                   writes docs/trade.md and docs/trade-*.svg
+#                   writes docs/trade.md and docs/trade-*.svg (and make
+#                   trade-cache's page)
+# make trade-cache  the irradiance cache against uniform sampling and
+#                   --noise: docs/gicache.md and docs/gicache.svg
 # make fuzz         fuzz every parser with libFuzzer (clang), FUZZ_TIME seconds
 #                   each (default 60); tests/fuzz/fuzz.sh says more
 # make fuzz-long    the same, 30 minutes a parser, with totals
@@ -165,7 +168,7 @@ GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.
 	docs/gallery/seed001-modelphysical.png docs/gallery/materials-noise4maxspp1024.png \
 	docs/gallery/horizon-texturefilterbilinear.png docs/gallery/materials-texturefilterbilinear.png
 
-.PHONY: all test check clean install uninstall gallery bench race trade report fuzz fuzz-long memcheck seed001
+.PHONY: all test check clean install uninstall gallery bench race trade trade-cache report fuzz fuzz-long memcheck seed001
 
 # The programs go to OUT (default: here), named NAME.exe on Windows; NAME
 # stands for them in the rules. make test-musl builds its own in a folder
@@ -394,6 +397,11 @@ report:
 # The speed/accuracy trade of each knob: docs/trade.md and its SVG plots.
 trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 	sh tests/bench/trade.sh ./raytrace ./raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
+	sh tests/bench/gicache.sh ./raytrace ./raytrace-diff
+
+# The irradiance cache's error against time: docs/gicache.md and its plot.
+trade-cache: raytrace raytrace-diff
+	sh tests/bench/gicache.sh ./raytrace ./raytrace-diff
 
 # Seed 001's scenes against its program's renders (docs/seed001.md): give
 # the path of a checkout of its repository, SEED001=DIR.
