@@ -33,6 +33,21 @@ typedef struct {
     unsigned long long served;     /* of them, those it answered */
 } RayCounts;
 
+/* Adds the counts of b to a. */
+static inline void ray_counts_add(RayCounts *a, const RayCounts *b)
+{
+    a->primary += b->primary;
+    a->shadow += b->shadow;
+    a->reflection += b->reflection;
+    a->refraction += b->refraction;
+    a->cut += b->cut;
+    a->refined += b->refined;
+    a->occlusion += b->occlusion;
+    a->gather += b->gather;
+    a->lookups += b->lookups;
+    a->served += b->served;
+}
+
 /* The kinds of ray that leave a surface. */
 typedef enum { RAY_SHADOW, RAY_REFLECTION, RAY_REFRACTION } RayKind;
 

@@ -201,16 +201,7 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
 #ifdef _OPENMP
 #pragma omp critical(irradiance_counts)
 #endif
-        {
-            RayCounts *c = &irr->counts;
-            c->primary += mine.primary;
-            c->shadow += mine.shadow;
-            c->reflection += mine.reflection;
-            c->refraction += mine.refraction;
-            c->gather += mine.gather;
-            c->lookups += mine.lookups;
-            c->served += mine.served;
-        }
+        ray_counts_add(&irr->counts, &mine);
     }
     for (size_t i = 0; i < count; i++)
         failed |= works[i].failed;
@@ -324,12 +315,7 @@ static void irr_trace_pixels(Irr *irr, const int *xy, size_t count, GatherPoints
 #ifdef _OPENMP
 #pragma omp critical(irradiance_counts)
 #endif
-        {
-            irr->counts.primary += mine.primary;
-            irr->counts.shadow += mine.shadow;
-            irr->counts.reflection += mine.reflection;
-            irr->counts.refraction += mine.refraction;
-        }
+        ray_counts_add(&irr->counts, &mine);
     }
 }
 

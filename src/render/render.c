@@ -316,21 +316,6 @@ static int render_tile_order(int k, int tiles, int noise)
     return (int)(k * stride % tiles);
 }
 
-/* Adds the counts of b to a. */
-static void render_add_counts(RayCounts *a, const RayCounts *b)
-{
-    a->primary += b->primary;
-    a->shadow += b->shadow;
-    a->reflection += b->reflection;
-    a->refraction += b->refraction;
-    a->cut += b->cut;
-    a->refined += b->refined;
-    a->occlusion += b->occlusion;
-    a->gather += b->gather;
-    a->lookups += b->lookups;
-    a->served += b->served;
-}
-
 /* Returns the grid of the `rays` indirect rays (occlusion or gathering,
  * 0: none) a point casts for each of a pixel's samples laid out by g. */
 static SamplerGrid render_rays_grid(const SamplerGrid *g, int rays)
@@ -401,7 +386,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
 #ifdef _OPENMP
 #pragma omp critical(render_counts)
 #endif
-            render_add_counts(counts, &mine);
+            ray_counts_add(counts, &mine);
         }
         if (cutting)
             cut_free(&cut);
