@@ -16,7 +16,8 @@
  * their normals is below -GICACHE_FRONT R (Ward's test). */
 #define GICACHE_FRONT 0.05
 
-enum { GICACHE_NONE = UINT32_MAX };
+/* An empty slot's head, a list's end. */
+#define GICACHE_NONE UINT32_MAX
 
 /* A record's entry in a cell: the record, and the cell's next entry. */
 typedef struct GiEntry {
