@@ -63,6 +63,9 @@ run "--noise, -v and the map of samples" 0 "$RT" -q -j 2 -v --noise 4 --max-spp 
     --spp-map "$T/map.png" scenes/.memcheck-materials.txt "$T/materials-noise.png"
 run "ambient occlusion and global illumination" 0 "$RT" -q -j 2 --ao 4 --gi 3 --gi-bounces 2 \
     scenes/.memcheck-indirect.txt "$T/indirect.ppm"
+run "the irradiance cache: its pre-pass on two threads, two bounces, its map" 0 "$RT" -q -j 2 \
+    --gi 16 --gi-bounces 2 --gi-cache --gi-cache-map "$T/cache-map.png" \
+    scenes/.memcheck-indirect.txt "$T/indirect-cache.ppm"
 run "seed 001's model: its example, textures, occlusion, gathering" 0 "$RT" -q -j 2 \
     --size 16x16 scenes/seed001.txt "$T/seed001.png"
 run "raytrace-diff, a BMP and --box" 0 "$DIFF" -q --box 2x1 tests/fuzz/corpus/picture/rgb24.bmp \
