@@ -90,17 +90,36 @@ static void gicache_translation(Vec3 t1, Vec3 t2, int m, int n, const Colour *lc
         g[c] = vec3_scale(g[c], (real)(1 / ANGLE_PI)); /* of E, to of E / pi */
 }
 
-/* Returns the integral over stratum (j, k) of m x n of sin theta times
- * the unit vector turned a right angle from phi, against solid angle. */
-static Vec3 gicache_turn(Vec3 t1, Vec3 t2, int j, int k, int m, int n)
+/* Stores in s[j], for each band j of m, the integral of sin^2 theta over
+ * its theta (the band's share of a turn's change of cos theta). */
+static void gicache_band_turns(int m, double *s)
 {
-    double lo = asin(sqrt((double)j / m)), hi = asin(sqrt((double)(j + 1) / m));
-    double p0 = 2 * ANGLE_PI * k / n, p1 = 2 * ANGLE_PI * (k + 1) / n;
-    /* sin^2 theta d theta, and (-sin phi, cos phi) d phi. */
-    double s = (hi - lo) / 2 - (sin(2 * hi) - sin(2 * lo)) / 4;
+    for (int j = 0; j < m; j++) {
+        double lo = asin(sqrt((double)j / m)), hi = asin(sqrt((double)(j + 1) / m));
 
-    return vec3_add(vec3_scale(t1, (real)(s * (cos(p1) - cos(p0)))),
-                    vec3_scale(t2, (real)(s * (sin(p1) - sin(p0)))));
+        s[j] = (hi - lo) / 2 - (sin(2 * hi) - sin(2 * lo)) / 4;
+    }
+}
+
+/* Stores in dc[k] and ds[k], for each wedge k of n, the integral over its
+ * phi of the unit vector turned a right angle from phi, (-sin phi,
+ * cos phi): its parts along the frame's first and second tangents. */
+static void gicache_wedge_turns(int n, double *dc, double *ds)
+{
+    for (int k = 0; k < n; k++) {
+        double p0 = 2 * ANGLE_PI * k / n, p1 = 2 * ANGLE_PI * (k + 1) / n;
+
+        dc[k] = cos(p1) - cos(p0);
+        ds[k] = sin(p1) - sin(p0);
+    }
+}
+
+/* Returns the integral over stratum (j, k) of sin theta times the unit
+ * vector turned a right angle from phi, against solid angle, in the frame
+ * (t1, t2): band j's share times wedge k's vector. */
+static Vec3 gicache_turn(Vec3 t1, Vec3 t2, double band, double dc, double ds)
+{
+    return vec3_add(vec3_scale(t1, (real)(band * dc)), vec3_scale(t2, (real)(band * ds)));
 }
 
 int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSample sample,
@@ -109,15 +128,20 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
     size_t cells = (size_t)m * (size_t)n;
     Colour *lc = malloc(cells * sizeof *lc);
     double *r = malloc(cells * sizeof *r), inverse = 0, escaped = 0;
+    double *band = malloc(((size_t)m + 2 * (size_t)n) * sizeof *band);
+    double *dc = band + m, *ds = dc + n;
     Vec3 t1 = vec3_from_frame(normal, 1, 0, 0), t2 = vec3_from_frame(normal, 0, 1, 0);
     Colour sum = colour(0, 0, 0);
 
-    if (!lc || !r) {
+    if (!lc || !r || !band) {
         free(lc);
         free(r);
+        free(band);
         return -1;
     }
     memset(v, 0, sizeof *v);
+    gicache_band_turns(m, band);
+    gicache_wedge_turns(n, dc, ds);
     for (int j = 0; j < m; j++)
         for (int k = 0; k < n; k++) {
             size_t i = (size_t)j * (size_t)n + (size_t)k;
@@ -139,7 +163,8 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
              * angle, over pi (exact for light constant over each stratum;
              * a tan theta weight at the ray itself grows without bound
              * near the horizon). */
-            gicache_add_gradient(v->rot, gicache_turn(t1, t2, j, k, m, n), 1 / ANGLE_PI, lc[i]);
+            gicache_add_gradient(v->rot, gicache_turn(t1, t2, band[j], dc[k], ds[k]), 1 / ANGLE_PI,
+                                 lc[i]);
         }
     v->g = colour_scale(sum, 1.0 / (double)cells);
     gicache_translation(t1, t2, m, n, lc, r, v->trans);
@@ -147,6 +172,7 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
     *open = escaped / (double)cells;
     free(lc);
     free(r);
+    free(band);
     return 0;
 }
 
@@ -452,9 +478,15 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
 
         for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
             uint32_t i = c->entries[e].record;
-            double w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
+            Vec3 d = vec3_sub(x, c->places[i].point);
+            double reach = a * c->places[i].radius, w;
             Colour g;
 
+            /* Out of reach by distance alone (its error is at least
+             * |d| / R): skipped before the square roots. */
+            if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6))
+                continue;
+            w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
             if (w <= 0)
                 continue;
             g = gicache_extrapolate(&c->places[i], &c->values[i * (size_t)c->levels + (size_t)level],
