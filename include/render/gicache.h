@@ -35,10 +35,16 @@
 #include "math/colour.h"
 #include "math/vec3.h"
 
-/* The accuracy a when none is given (SCENE_GI_CACHE_MIN_ERROR to
- * SCENE_GI_CACHE_MAX_ERROR): a typical room's error about a level
- * (docs/trade.md). */
-#define GICACHE_DEFAULT_ERROR 0.2
+/* The accuracy a, and the rays a record gathers, when none are given
+ * (SCENE_GI_CACHE_MIN_ERROR to SCENE_GI_CACHE_MAX_ERROR; --gi N): a
+ * typical room at -s 16 within about a level of its converged render
+ * (docs/gicache.md, make trade-cache). */
+#define GICACHE_DEFAULT_ERROR 0.3
+#define GICACHE_DEFAULT_RAYS 2048
+
+/* How far, in a, a point none of the records covers looks before it
+ * gathers its own light: the widest a lookup reaches. */
+#define GICACHE_FALLBACK_REACH 2.0
 
 /* What one record keeps for one bounce level: the mean colour of its
  * gathering rays (0..255 per channel, as trace.h's) and its gradients,

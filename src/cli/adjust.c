@@ -27,12 +27,15 @@ static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *i
     in->ao_samples = opts->ao >= 0 ? opts->ao : scene->ao_samples >= 0 ? scene->ao_samples
                                                                         : model->ao_rays;
     in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
-    in->gi_samples = opts->gi >= 0 ? opts->gi : scene->gi_samples >= 0 ? scene->gi_samples
-                                                                        : model->gi_rays;
+    in->gi_cache = opts->gi_cache || scene->gi_cache;
+    /* The cache asked for without a count of rays: its own default. */
+    in->gi_samples = opts->gi >= 0                       ? opts->gi
+                     : scene->gi_samples >= 0            ? scene->gi_samples
+                     : in->gi_cache && !model->cache_note ? GICACHE_DEFAULT_RAYS
+                                                          : model->gi_rays;
     in->gi_bounces = opts->gi_bounces > 0 ? opts->gi_bounces
                      : scene->gi_bounces > 0 ? scene->gi_bounces
                                              : 1;
-    in->gi_cache = opts->gi_cache || scene->gi_cache;
     in->gi_cache_error = opts->gi_cache_error > 0   ? opts->gi_cache_error
                          : scene->gi_cache_error > 0 ? scene->gi_cache_error
                                                      : GICACHE_DEFAULT_ERROR;
@@ -62,7 +65,7 @@ static void adjust_gi_cache(const Options *opts, const Model *model, Indirect *i
 
     if (in->gi_cache && in->gi_samples == 0) {
         if (option)
-            adjust_note_why(opts, option, "no global illumination rays are cast (--gi N)");
+            adjust_note_why(opts, option, "no global illumination rays are cast (--gi 0)");
         in->gi_cache = 0;
     } else if (in->gi_cache && model->cache_note) {
         if (option)

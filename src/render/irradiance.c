@@ -21,9 +21,10 @@
  * the margin leaves room for the samples between the pixels' centres. */
 #define IRR_PLACE 0.75
 
-/* A record's validity radius a R: at least IRR_FINEST pixels, at most
+/* A record's validity radius a R: at least IRR_FINEST pixels (POV-Ray's
+ * minimum_reuse, 1.5% of a 200-pixel picture), at most
  * IRR_WIDEST of the picture's width, seen at its distance from the eye. */
-#define IRR_FINEST 1.5
+#define IRR_FINEST 3
 #define IRR_WIDEST 0.25
 
 /* Where in its pixel a round traces: near the centre, but not on it, nor

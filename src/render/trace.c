@@ -349,7 +349,8 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
     }
     if (t->gicache) {
         t->counts->lookups++;
-        if (gicache_lookup(t->gicache, path.bounce, 1, sh->sp.point, ns, &g))
+        if (gicache_lookup(t->gicache, path.bounce, 1, sh->sp.point, ns, &g) ||
+            gicache_lookup(t->gicache, path.bounce, GICACHE_FALLBACK_REACH, sh->sp.point, ns, &g))
             t->counts->served++;
         else
             g = trace_gather(t, sh, n, ns, depth, weight, path);
