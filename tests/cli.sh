@@ -178,6 +178,18 @@ expect_grep "--box says so" "compared:  2 x 2 boxes, each the mean of the pixels
 expect_grep "--box mean" "mean error: 0," "$T/out"
 expect_exit "--box larger than the image" 2 "$DIFF" --box 5x5 "$T/flat.ppm" "$T/checker.ppm"
 expect_exit "--box bad" 2 "$DIFF" --box 2 "$T/flat.ppm" "$T/checker.ppm"
+# The worst 1%: every pixel 127 apart; then of 100 pixels, one pixel 30
+# apart (within the 1% let pass), and two.
+"$DIFF" "$T/flat.ppm" "$T/checker.ppm" >"$T/out"
+expect_grep "worst 1%, all apart" "worst 1% of pixels: error over 127 " "$T/out"
+for off in 1 2; do
+    awk -v off=$off 'BEGIN { print "P3\n10 10\n255"; for (k = 0; k < 100; k++) print 100, 100 + (k < off ? 30 : 0), 100 }' >"$T/off$off.ppm"
+done
+awk 'BEGIN { print "P3\n10 10\n255"; for (k = 0; k < 100; k++) print 100, 100, 100 }' >"$T/grey.ppm"
+"$DIFF" "$T/grey.ppm" "$T/off1.ppm" >"$T/out"
+expect_grep "worst 1%, one pixel of 100" "worst 1% of pixels: error over 0 " "$T/out"
+"$DIFF" "$T/grey.ppm" "$T/off2.ppm" >"$T/out"
+expect_grep "worst 1%, two pixels of 100" "worst 1% of pixels: error over 17.375 " "$T/out"
 expect_grep "--box bad message" "--box takes WxH, the boxes across and down (as 100x100), found '2'" "$T/err"
 
 # --- --size, --no-shadows, --model, and options that change nothing ---

@@ -59,7 +59,13 @@ typedef struct {
     size_t over;         /* pixels with some channel more than tolerance apart */
     size_t channels_over; /* channels more than tolerance apart */
     size_t pixels;       /* pixels compared */
+    double worst;        /* the error 1% of pixels pass: a pixel's error the
+                            RMS over its channels, rounded up to a sixteenth
+                            of a level; COMPARE_WORST_CAP when past it */
 } Comparison;
+
+/* The largest error Comparison.worst resolves, in levels. */
+#define COMPARE_WORST_CAP 256
 
 /* Compares two pictures of the same size, a pixel being over when some
  * channel differs by more than tolerance. */

@@ -47,8 +47,9 @@ static const char diff_help[] =
     "  -V, --version       print the version and exit\n"
     "\n"
     "Prints both sizes and formats, the largest difference with its pixel and\n"
-    "both values, the mean and RMS differences, the PSNR, and the number of\n"
-    "pixels over the tolerance.\n"
+    "both values, the mean and RMS differences, the PSNR, the error that the\n"
+    "worst 1% of pixels pass (a pixel's: the RMS of its channels), and the\n"
+    "number of pixels over the tolerance.\n"
     "\n"
     "Exit status: 0 at most --max-pixels pixels exceed the tolerance; 1 more\n"
     "do; 2 an image cannot be read, the sizes differ, or the command line is\n"
@@ -263,6 +264,8 @@ static void diff_print(const DiffOptions *o, const Picture *a, const Picture *b,
         printf("infinite\n");
     else
         printf("%.2f dB\n", c->psnr);
+    printf("worst 1%% of pixels: error over %s%g (a pixel's: the RMS of its channels)\n",
+           c->worst >= COMPARE_WORST_CAP ? "at least " : "", c->worst);
     printf("over tolerance %g: %zu of %zu pixels (%.4f%%), at most %zu allowed: %s\n",
            o->tolerance, c->over, c->pixels, pixels > 0 ? 100.0 * (double)c->over / pixels : 0,
            o->max_pixels, c->over <= o->max_pixels ? "same" : "DIFFERENT");

@@ -191,8 +191,26 @@ int picture_box(Picture *pic, int width, int height, Error *err)
     return 0;
 }
 
+enum { COMPARE_STEPS = 16 }; /* worst's resolution: steps a level */
+
+/* Returns the least error that at most 1% of the n pixels counted in
+ * hist (hist[i]: pixels whose error rounds up to i steps) pass. */
+static double compare_worst(const size_t *hist, size_t bins, size_t n)
+{
+    size_t keep = n - n / 100, seen = 0; /* pixels at or below the answer */
+
+    for (size_t i = 0; i < bins; i++) {
+        seen += hist[i];
+        if (seen >= keep)
+            return (double)i / COMPARE_STEPS;
+    }
+    return COMPARE_WORST_CAP;
+}
+
 Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance)
 {
+    static const size_t bins = COMPARE_WORST_CAP * COMPARE_STEPS + 1;
+    size_t hist[COMPARE_WORST_CAP * COMPARE_STEPS + 1] = {0};
     Comparison c;
     size_t n = (size_t)a->width * (size_t)a->height;
     double sum = 0, sum2 = 0;
@@ -202,6 +220,7 @@ Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance
     c.max_error = -1;
     for (size_t k = 0; k < n; k++) {
         int over = 0;
+        double pixel2 = 0, steps;
         for (int ch = 0; ch < 3; ch++) {
             double d = fabs(a->rgb[3 * k + ch] - b->rgb[3 * k + ch]);
             /* NaN in a PFM counts as the largest difference. */
@@ -209,6 +228,7 @@ Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance
                 d = INFINITY;
             sum += d;
             sum2 += d * d;
+            pixel2 += d * d;
             if (d > c.max_error) {
                 c.max_error = d;
                 c.max_x = (int)(k % (size_t)a->width);
@@ -219,7 +239,10 @@ Comparison compare_pictures(const Picture *a, const Picture *b, double tolerance
             c.channels_over += d > tolerance;
         }
         c.over += over;
+        steps = ceil(sqrt(pixel2 / 3) * COMPARE_STEPS);
+        hist[steps < (double)(bins - 1) ? (size_t)steps : bins - 1]++;
     }
+    c.worst = compare_worst(hist, bins, n);
     if (c.max_error < 0)
         c.max_error = 0;
     c.mean_error = n ? sum / (3.0 * n) : 0;
