@@ -55,13 +55,15 @@ typedef struct {
     Vec3 trans[3]; /* dG / d(move of the point by v, in the tangent plane) = v . trans */
 } GiValue;
 
-/* A record's place: its point, unit normal and radius, and the share of
- * its rays that met nothing. */
+/* A record's place: its point, unit normal and radius, the share of its
+ * rays that met nothing, and the first level it holds (lookups of the
+ * levels before pass it by). */
 typedef struct {
     Vec3 point;
     Vec3 normal;
     double radius; /* R, scene units, > 0 */
     double open;   /* 0..1 */
+    int first;     /* 0: every level */
 } GiPlace;
 
 /* The colour a ray leaving the record's point in direction dir (unit)
@@ -140,8 +142,9 @@ void gicache_refile(GiCache *c);
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);
 
 /* Interpolates level `level` at point x of unit normal nx from the records
- * valid there under accuracy c->a times `reach` (1: the cache's own) into
- * *out; returns the number of records used (0: none valid, *out untouched). */
+ * valid there under accuracy c->a times `reach` (1: the cache's own) and
+ * holding that level (first <= level) into *out; returns the number of
+ * records used (0: none valid, *out untouched). */
 int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
 
 /* Returns the bytes *c holds. */

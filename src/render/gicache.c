@@ -484,7 +484,8 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
 
             /* Out of reach by distance alone (its error is at least
              * |d| / R): skipped before the square roots. */
-            if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6))
+            if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6) ||
+                c->places[i].first > level)
                 continue;
             w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
             if (w <= 0)

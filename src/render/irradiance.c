@@ -38,6 +38,9 @@
  * at once: each batch sees the records of those before it. */
 enum { IRR_PIXELS = 4096, IRR_BATCH = 64 };
 
+/* The fewest rays a deeper level's gathering casts (irr_strata()). */
+#define IRR_DEEPEST 128
+
 /* A record being computed: where, its key, and what came of it. */
 typedef struct {
     GatherPoint at;
@@ -54,7 +57,9 @@ typedef struct {
     const Scene *scene;
     const RenderOptions *opts;
     GiCache *cache;
-    int m, n;            /* a record's strata */
+    int rays;            /* the rays a record's first level gathers */
+    int bounces;         /* the levels a record keeps */
+    int generation;      /* of the records being placed: 0 the camera's */
     double pixel;        /* a pixel's width seen from the eye, per unit of
                             distance */
     GatherPoint *points; /* each record's point (cache->count of them) */
@@ -161,6 +166,19 @@ static void irr_settle(const Irr *irr, IrrWork *w, double harmonic, int placing)
     gicache_limit(&w->value, irr->cache->a * w->radius);
 }
 
+/* Stores in *m and *n the strata of a record's gathering of level
+ * `level`: --gi N rays for the first, a quarter as many for each level
+ * deeper, and never fewer than IRR_DEEPEST (or N). A deeper level's light
+ * reaches the picture only averaged by the rays of the levels above it. */
+static void irr_strata(const Irr *irr, int level, int *m, int *n)
+{
+    int rays = irr->rays, least = irr->rays < IRR_DEEPEST ? irr->rays : IRR_DEEPEST;
+
+    for (int l = 0; l < level && rays / 4 >= least; l++)
+        rays /= 4;
+    gicache_strata(rays > least ? rays : least, m, n);
+}
+
 /* Computes works[0..count) in parallel: each gathers with rays of bounce
  * `bounce`, looking the next level up in the cache unless `collect`, in
  * which case the diffuse points its rays meet are kept instead (and gather
@@ -169,7 +187,10 @@ static void irr_settle(const Irr *irr, IrrWork *w, double harmonic, int placing)
 static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int collect,
                        int placing)
 {
-    int failed = 0;
+    int failed = 0, m, n;
+
+    /* Bounce b's rays gather level b - 1; placing, the deepest level. */
+    irr_strata(irr, placing ? irr->bounces - 1 : bounce - 1, &m, &n);
 
 #ifdef _OPENMP
 #pragma omp parallel num_threads(irr->opts->threads)
@@ -192,7 +213,7 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
             sample.x = (int)(w->key & 0x3fffffff);
             sample.y = bounce;
             t.collect = collect ? &w->hits : NULL;
-            if (gicache_gather(w->at.ns, irr->m, irr->n, w->key, irr_least(irr, &w->at),
+            if (gicache_gather(w->at.ns, m, n, w->key, irr_least(irr, &w->at),
                                irr_sample, &r, &w->value, &harmonic, &w->open) != 0 ||
                 w->hits.failed)
                 w->failed = 1;
@@ -209,12 +230,13 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
     return failed ? -1 : 0;
 }
 
-/* Says whether a record covers point p. */
+/* Says whether a record holding the current generation's level covers
+ * point p. */
 static int irr_covered(const Irr *irr, const GatherPoint *p)
 {
     Colour g;
 
-    return gicache_lookup(irr->cache, 0, IRR_PLACE, p->point, p->ns, &g) > 0;
+    return gicache_lookup(irr->cache, irr->generation, IRR_PLACE, p->point, p->ns, &g) > 0;
 }
 
 /* Starts the work of a record at p. */
@@ -239,7 +261,7 @@ static int irr_add(Irr *irr, IrrWork *works, size_t count)
         return -1;
     for (size_t i = 0; i < count; i++) {
         IrrWork *w = &works[i];
-        GiPlace place = {w->at.point, w->at.ns, w->radius, w->open};
+        GiPlace place = {w->at.point, w->at.ns, w->radius, w->open, irr->generation};
         int rc;
 
         if (irr->cache->count == irr->capacity) {
@@ -281,8 +303,13 @@ static int irr_add(Irr *irr, IrrWork *works, size_t count)
  * SCENE_OVER_LIMIT. */
 static int irr_place(Irr *irr, IrrWork *works, size_t count, int collect)
 {
-    int rc = count ? irr_compute(irr, works, count, 1, collect, 1) : 0;
+    /* A record's first gathering is its deepest level: its rays' hits
+     * bring their direct light only, which collecting does; their points
+     * are kept for the next generation when it comes. */
+    int rc = count ? irr_compute(irr, works, count, 1, collect || irr->bounces > 1, 1) : 0;
 
+    for (size_t i = 0; !collect && i < count; i++)
+        works[i].hits.count = 0;
     if (rc == 0)
         rc = irr_add(irr, works, count);
     for (size_t i = 0; i < count; i++)
@@ -419,25 +446,33 @@ static int irr_generation(Irr *irr, int collect)
     return rc;
 }
 
-/* Gathers level `level` of every record again, its rays' hits looking up
- * level + 1. */
+/* Gathers level `level` again for the records that hold it (placed in
+ * generation `level` or before), their rays' hits looking up level + 1. */
 static int irr_level(Irr *irr, int level)
 {
-    size_t count = irr->cache->count;
+    size_t count = irr->cache->count, n = 0;
     IrrWork *works = calloc(count ? count : 1, sizeof *works);
+    size_t *which = malloc((count ? count : 1) * sizeof *which);
     int rc;
 
-    if (!works)
+    if (!works || !which) {
+        free(works);
+        free(which);
         return -1;
-    for (size_t i = 0; i < count; i++) {
-        works[i].at = irr->points[i];
-        works[i].key = irr->keys[i];
-        works[i].radius = irr->cache->places[i].radius;
     }
-    rc = irr_compute(irr, works, count, level + 1, 0, 0);
-    for (size_t i = 0; rc == 0 && i < count; i++)
-        gicache_set(irr->cache, i, level, &works[i].value);
+    for (size_t i = 0; i < count; i++) {
+        if (irr->cache->places[i].first > level)
+            continue;
+        works[n].at = irr->points[i];
+        works[n].key = irr->keys[i];
+        works[n].radius = irr->cache->places[i].radius;
+        which[n++] = i;
+    }
+    rc = irr_compute(irr, works, n, level + 1, 0, 0);
+    for (size_t i = 0; rc == 0 && i < n; i++)
+        gicache_set(irr->cache, which[i], level, &works[i].value);
     free(works);
+    free(which);
     return rc;
 }
 
@@ -459,13 +494,16 @@ int irradiance_build(const Scene *scene, const RenderOptions *opts, GiCache *cac
     irr.scene = scene;
     irr.opts = opts;
     irr.cache = cache;
-    gicache_strata(opts->indirect.gi_samples, &irr.m, &irr.n);
+    irr.rays = opts->indirect.gi_samples;
+    irr.bounces = bounces;
     irr.pixel = (double)vec3_length(cam->u) / cam->width /
                 (double)vec3_length(vec3_sub(centre, cam->eye));
     rc = irr_rounds(&irr, bounces > 1);
     stats->seen = cache->count;
-    for (int g = 1; g < bounces && rc == 0; g++)
+    for (int g = 1; g < bounces && rc == 0; g++) {
+        irr.generation = g;
         rc = irr_generation(&irr, g + 1 < bounces);
+    }
     if (rc == 0)
         gicache_refile(cache);
     for (int level = bounces - 2; level >= 0 && rc == 0; level--)
