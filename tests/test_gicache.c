@@ -76,7 +76,7 @@ static void gicache_furnace_gives_the_light_everywhere(void)
     GiValue v = field_gather(0, vec3(0, 0, 0), vec3(0, 0, 1), 5, 13, &r);
     GiCache c;
     GiValue levels[1];
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
     Colour out = {0, 0, 0};
 
     CHECK_NEAR(100, v.g.r, 1e-9);
@@ -116,7 +116,7 @@ static void gicache_rotation_gradient_of_a_sky(void)
 {
     GiValue v = field_gather(1, vec3(0, 0, 0), vec3(0, 0, 1), 36, 113, NULL);
     Vec3 turned = vec3_normalize(vec3(0.1, 0, 1));
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0};
     Colour guess = gicache_extrapolate(&place, &v, vec3(0, 0, 0), turned);
     GiValue there = field_gather(1, vec3(0, 0, 0), turned, 36, 113, NULL);
 
@@ -146,7 +146,7 @@ static void gicache_translation_gradient_of_a_ceiling(void)
  * deviation; nothing at or beyond a, nothing in front. */
 static void gicache_error_and_weight(void)
 {
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2, 0, 0};
 
     CHECK_NEAR(0.5, gicache_error(&place, vec3(1, 0, 0), vec3(0, 0, 1)), 1e-12);
     CHECK_NEAR(sqrt(1 - cos(0.2)), gicache_error(&place, vec3(0, 0, 0),
@@ -163,10 +163,10 @@ static void gicache_error_and_weight(void)
 static void gicache_lookup_is_the_weighted_mean(void)
 {
     GiCache c;
-    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0},
-                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0},
-                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5, 0},
-                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0}};
+    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0},
+                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5, 0, 0},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0}};
     double values[4] = {10, 20, 40, 1000}, want = 0, total = 0;
     Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
     Colour out = {0, 0, 0};
@@ -192,6 +192,9 @@ static void gicache_lookup_is_the_weighted_mean(void)
     CHECK_NEAR(0, out.r, 1e-12);
     CHECK_INT(0, gicache_lookup(&c, 0, 1, vec3(10, 10, 10), n, &out));
     CHECK_INT(0, gicache_lookup(&c, 0, 1, x, vec3(0, 0, -1), &out)); /* facing away */
+    c.places[2].first = 1; /* a record holding only the second level on */
+    CHECK_INT(2, gicache_lookup(&c, 0, 1, x, n, &out));
+    CHECK_INT(3, gicache_lookup(&c, 1, 1, x, n, &out));
     CHECK(gicache_memory(&c) > 0);
     gicache_free(&c);
 }
@@ -200,7 +203,7 @@ static void gicache_lookup_is_the_weighted_mean(void)
 static void gicache_limit_refuses_records(void)
 {
     GiCache c;
-    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0};
+    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0};
     GiValue v[1];
 
     memset(v, 0, sizeof v);

@@ -16,6 +16,8 @@
 # docs/gicache.md and its plot docs/gicache.svg.
 #
 # Usage: sh tests/bench/gicache.sh RAYTRACE RAYTRACE-DIFF [OUT.md]
+# With GICACHE_PAGE_ONLY=1, writes the page and plot again from the last
+# run's measurements (build/gicache) without measuring.
 
 RT=$1
 DIFF=$2
@@ -52,51 +54,64 @@ errors() {
         END { print rmse, worst }'
 }
 
-: >"$DIR/rows"
-: >"$DIR/plot"
-: >"$DIR/ratios"
-for run in "room 1" "room 3" "indirect 1" "cache-hard 1"; do
-    set -- $run
-    s=$1
-    b=$2
-    key="$s-b$b"
-    echo "gicache: $s, $b bounce(s)" >&2
-    "$RT" -q --size 200x200 -s "$REF" --gi 64 --gi-bounces "$b" --format pfm "scenes/$s.txt" \
-        "$DIR/$key-ref.pfm" || exit 1
-    : >"$DIR/curve"
-    while read -r label opts; do
-        # shellcheck disable=SC2086
-        t=$(timed "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
-        set -- $(errors "$key-ref" "$key-x")
-        printf '| %s | %s | `%s` | %.2f s | %s | %s |\n' "$s" "$b" "$opts" "$t" "$1" "$2" >>"$DIR/rows"
-        echo "$key-$label $t $1" >>"$DIR/plot"
-        echo "$label $t $1" >>"$DIR/curve"
-    done <<LIST
-uniform -s 8 --gi 16
-uniform -s 16 --gi 16
-uniform -s 32 --gi 16
-uniform -s 64 --gi 16
-noise --noise 2 --gi 8
-cache -s 16 --gi 2048 --gi-cache --gi-cache-error 0.5
-default -s 16 --gi 2048 --gi-cache --gi-cache-error 0.3
-cache -s 16 --gi 2048 --gi-cache --gi-cache-error 0.2
+if [ "${GICACHE_PAGE_ONLY:-0}" != 1 ] || [ ! -s "$DIR/rows" ]; then
+    : >"$DIR/rows"
+    for run in "room 1" "room 3" "indirect 1" "cache-hard 1"; do
+        set -- $run
+        s=$1
+        b=$2
+        key="$s-b$b"
+        echo "gicache: $s, $b bounce(s)" >&2
+        "$RT" -q --size 200x200 -s "$REF" --gi 64 --gi-bounces "$b" --format pfm "scenes/$s.txt" \
+            "$DIR/$key-ref.pfm" || exit 1
+        while read -r opts; do
+            # shellcheck disable=SC2086
+            t=$(timed "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
+            set -- $(errors "$key-ref" "$key-x")
+            printf '| %s | %s | `%s` | %.2f s | %s | %s |\n' "$s" "$b" "$opts" "$t" "$1" "$2" >>"$DIR/rows"
+        done <<LIST
+-s 8 --gi 16
+-s 16 --gi 16
+-s 32 --gi 16
+-s 64 --gi 16
+--noise 2 --gi 8
+-s 16 --gi 2048 --gi-cache --gi-cache-error 0.5
+-s 16 --gi 2048 --gi-cache --gi-cache-error 0.3
+-s 16 --gi 2048 --gi-cache --gi-cache-error 0.2
 LIST
-    # Uniform's time at the default cache's RMSE, on uniform's curve.
-    awk -v scene="$s" -v bounces="$b" '
-        $1 == "uniform" { n++; t[n] = $2; e[n] = $3 }
-        $1 == "default" { ct = $2; ce = $3 }
-        END {
-            for (i = 1; i < n; i++)
-                if (e[i] >= ce && e[i + 1] <= ce) {
-                    f = (log(ce) - log(e[i])) / (log(e[i + 1]) - log(e[i]))
-                    ut = exp(log(t[i]) + f * (log(t[i + 1]) - log(t[i])))
+    done
+fi
+
+# From the rows: the plot's points (a series a scene and bounces and kind:
+# uniform, noise, cache), and for each scene the cache's default (E 0.3)
+# against uniform's time at its RMSE, on uniform's curve.
+awk -F'|' '
+    function trim(v) { gsub(/^ +| +$|`/, "", v); return v }
+    {
+        scene = trim($2); b = trim($3); opts = trim($4); t = trim($5) + 0; e = trim($6) + 0
+        kind = opts ~ /--gi-cache/ ? "cache" : opts ~ /--noise/ ? "noise" : "uniform"
+        print scene "-b" b "-" kind, t, e > plot
+        key = scene " | " b
+        if (!(key in seen)) { seen[key] = 1; order[++keys] = key }
+        if (kind == "uniform") { n[key]++; ut[key, n[key]] = t; ue[key, n[key]] = e }
+        if (opts ~ /--gi-cache-error 0.3$/) { ct[key] = t; ce[key] = e }
+    }
+    END {
+        for (k = 1; k <= keys; k++) {
+            key = order[k]; m = n[key]; c = ce[key]; at = 0
+            for (i = 1; i < m; i++)
+                if (ue[key, i] >= c && ue[key, i + 1] <= c) {
+                    f = (log(c) - log(ue[key, i])) / (log(ue[key, i + 1]) - log(ue[key, i]))
+                    at = exp(log(ut[key, i]) + f * (log(ut[key, i + 1]) - log(ut[key, i])))
                 }
-            if (ut > 0)
-                printf "| %s | %s | %.3f | %.2f s | %.2f s | %.2f |\n", scene, bounces, ce, ct, ut, ct / ut
+            if (at > 0)
+                printf "| %s | %.3f | %.2f s | %.2f s | %.2f |\n", key, c, ct[key], at, ct[key] / at
+            else if (c < ue[key, m])
+                printf "| %s | %.3f | %.2f s | over %.2f s (-s 64: RMSE %.3f) | under %.2f |\n", key, c, ct[key], ut[key, m], ue[key, m], ct[key] / ut[key, m]
             else
-                printf "| %s | %s | %.3f | %.2f s | beyond -s 8 to -s 64 | |\n", scene, bounces, ce, ct
-        }' "$DIR/curve" >>"$DIR/ratios"
-done
+                printf "| %s | %.3f | %.2f s | under %.2f s (-s 8: RMSE %.3f) | over %.2f |\n", key, c, ct[key], ut[key, 1], ue[key, 1], ct[key] / ut[key, 1]
+        }
+    }' plot="$DIR/plot" "$DIR/rows" >"$DIR/ratios"
 awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)" \
     -v xlabel="render time, s" -v ylabel="RMSE against the converged render, levels" -v logx=1 -v logy=1 \
     -f tests/bench/plot.awk "$DIR/plot" >"$(dirname "$OUT")/gicache.svg"
