@@ -11,6 +11,24 @@ now() { date +%s%N; }
 # median: the median of the numbers on standard input, one a line.
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
+# time_renders NAME OPTIONS...: runs "$RT" -q OPTIONS "$DIR/NAME.ppm" $RUNS
+# times (RT, DIR and RUNS the caller's); prints the median wall time in
+# seconds, or fails with the first render that fails.
+time_renders() {
+    name=$1
+    shift
+    : >"$DIR/times"
+    i=0
+    while [ $i -lt "$RUNS" ]; do
+        start=$(now)
+        "$RT" -q "$@" "$DIR/$name.ppm" || return 1
+        end=$(now)
+        echo $(((end - start) / 1000000)) >>"$DIR/times"
+        i=$((i + 1))
+    done
+    echo "$(median <"$DIR/times") / 1000" | bc -l
+}
+
 # resize SCENE WIDTH: SCENE (a file, or /dev/stdin) with its image WIDTH
 # pixels wide, on standard output: a keyword scene's camera width (its
 # height in proportion), a course scene's resolution (its fifth record).

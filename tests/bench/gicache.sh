@@ -28,22 +28,6 @@ DIR=build/gicache
 mkdir -p "$DIR" || exit 2
 . tests/lib.sh
 
-# timed NAME OPTIONS...: renders $DIR/NAME.ppm RUNS times; prints the
-# median wall time in seconds.
-timed() {
-    name=$1
-    shift
-    : >"$DIR/times"
-    i=0
-    while [ $i -lt "$RUNS" ]; do
-        start=$(now)
-        "$RT" -q "$@" "$DIR/$name.ppm" || exit 1
-        end=$(now)
-        echo $(((end - start) / 1000000)) >>"$DIR/times"
-        i=$((i + 1))
-    done
-    echo "$(median <"$DIR/times") / 1000" | bc -l
-}
 
 # errors REF NAME: "RMSE WORST" of $DIR/NAME.ppm against the clamped
 # reference: the RMS error and the error the worst 1% of pixels pass.
@@ -66,7 +50,7 @@ if [ "${GICACHE_PAGE_ONLY:-0}" != 1 ] || [ ! -s "$DIR/rows" ]; then
             "$DIR/$key-ref.pfm" || exit 1
         while read -r opts; do
             # shellcheck disable=SC2086
-            t=$(timed "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
+            t=$(time_renders "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
             set -- $(errors "$key-ref" "$key-x")
             printf '| %s | %s | `%s` | %.2f s | %s | %s |\n' "$s" "$b" "$opts" "$t" "$1" "$2" >>"$DIR/rows"
         done <<LIST

@@ -38,19 +38,11 @@ mkdir -p "$DIR" || exit 2
 # median wall time in seconds; also renders $DIR/NAME.pfm once unless
 # pfm=0.
 timed() {
+    seconds=$(time_renders "$@") || exit 1
     name=$1
     shift
-    : >"$DIR/times"
-    i=0
-    while [ $i -lt "$RUNS" ]; do
-        start=$(now)
-        "$RT" -q "$@" "$DIR/$name.ppm" || exit 1
-        end=$(now)
-        echo $(((end - start) / 1000000)) >>"$DIR/times"
-        i=$((i + 1))
-    done
     [ "${pfm:-1}" = 0 ] || "$RT" -q "$@" "$DIR/$name.pfm" || exit 1
-    echo "$(median <"$DIR/times") / 1000" | bc -l
+    echo "$seconds"
 }
 
 # error REF NAME: "channels% max rmse" of $DIR/NAME against $DIR/REF.
