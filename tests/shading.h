@@ -10,9 +10,9 @@
 /* Returns triangle i's shading in sc, a plain one's made up. */
 static inline TriangleShading shading_of(const Scene *sc, size_t i)
 {
-    const TriangleShading *sh = scene_shading_of(sc, &sc->triangles[i]);
+    const TriangleShading *sh = scene_shading_of(sc, &scene_triangles(sc)[i]);
 
-    return sh ? *sh : triangle_plain_shading(&sc->triangles[i]);
+    return sh ? *sh : triangle_plain_shading(&scene_triangles(sc)[i]);
 }
 
 #endif

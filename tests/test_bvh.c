@@ -48,12 +48,12 @@ static void random_scene_of(Scene *sc, int n, double s, double clear)
             Square sq;
             Vec3 q = vec3_scale(rng_unit_vector(), s * rng_uniform());
             cube_make(&cube, q, s * 0.04 * rng_log_scale(-1, 0), m);
-            CHECK_INT(0, scene_add_cube(sc, &cube));
+            CHECK_INT(0, scene_add_shape(sc, SHAPE_CUBE, &cube));
             if (i % 10 == 0)
-                CHECK_INT(0, scene_add_cube(sc, &cube));
+                CHECK_INT(0, scene_add_shape(sc, SHAPE_CUBE, &cube));
             q = vec3_scale(rng_unit_vector(), s * rng_uniform());
             CHECK_INT(0, square_make(&sq, q, rng_unit_vector(), s * 0.05, m));
-            CHECK_INT(0, scene_add_square(sc, &sq));
+            CHECK_INT(0, scene_add_shape(sc, SHAPE_SQUARE, &sq));
         }
     }
     {
@@ -63,15 +63,15 @@ static void random_scene_of(Scene *sc, int n, double s, double clear)
         glass.transparency = clear > 0 ? 0.7 : 0;
         glass.ior = clear > 0 ? 1.5 : 1;
         cyl.material = glass;
-        CHECK_INT(0, scene_add_cylinder(sc, &cyl));
+        CHECK_INT(0, scene_add_shape(sc, SHAPE_CYLINDER, &cyl));
         cone_make(&cone, vec3(-0.5 * s, 0, -0.5 * s), 0.1 * s, 0.5 * s, glass);
-        CHECK_INT(0, scene_add_cone(sc, &cone));
+        CHECK_INT(0, scene_add_shape(sc, SHAPE_CONE, &cone));
     }
     {
         Plane pl;
         CHECK_INT(0, plane_make(&pl, vec3(0, -s, 0), vec3(0, 1, 0), 1,
                                 material_plain(colour(1, 2, 3), 0)));
-        CHECK_INT(0, scene_add_plane(sc, &pl));
+        CHECK_INT(0, scene_add_shape(sc, SHAPE_PLANE, &pl));
     }
 }
 
@@ -85,8 +85,8 @@ static void random_scene(Scene *sc, int n, double s)
  * tests have no rays) with threads threads; returns bvh_build()'s answer. */
 static int build_over(Bvh *bvh, const Scene *sc, int threads)
 {
-    BvhShapes shapes = {sc->spheres, sc->sphere_count, sc->triangles, sc->triangle_count,
-                        sc->cubes,   sc->cube_count,   sc->squares,   sc->square_count};
+    BvhShapes shapes = {scene_spheres(sc), scene_count_of(sc, SHAPE_SPHERE), scene_triangles(sc), scene_count_of(sc, SHAPE_TRIANGLE),
+                        scene_cubes(sc),   scene_count_of(sc, SHAPE_CUBE),   scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE)};
 
     return bvh_build(bvh, &shapes, 0, threads);
 }
@@ -129,29 +129,29 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
         for (uint32_t i = bvh_link_index(n->link[k]); bvh_link_count(n->link[k]) > 0 && i < bvh_link_index(n->link[k]) + bvh_link_count(n->link[k]); i++) {
             uint32_t ref = bvh->prims[i];
-            size_t base[4] = {0, sc->sphere_count, sc->sphere_count + sc->triangle_count,
-                              sc->sphere_count + sc->triangle_count + sc->cube_count};
+            size_t base[4] = {0, scene_count_of(sc, SHAPE_SPHERE), scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE),
+                              scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE) + scene_count_of(sc, SHAPE_CUBE)};
             size_t slot = base[bvh_kind(ref)] + bvh_index(ref);
             Vec3 lo, hi;
             seen[slot]++;
             if (bvh_kind(ref) == BVH_TRIANGLE) {
-                const Triangle *t = &sc->triangles[bvh_index(ref)];
+                const Triangle *t = &scene_triangles(sc)[bvh_index(ref)];
                 lo = hi = t->v[0];
                 for (int j = 1; j < 3; j++) {
                     lo = vec3(fmin(lo.x, t->v[j].x), fmin(lo.y, t->v[j].y), fmin(lo.z, t->v[j].z));
                     hi = vec3(fmax(hi.x, t->v[j].x), fmax(hi.y, t->v[j].y), fmax(hi.z, t->v[j].z));
                 }
             } else if (bvh_kind(ref) == BVH_CUBE) {
-                lo = sc->cubes[bvh_index(ref)].lo;
-                hi = sc->cubes[bvh_index(ref)].hi;
+                lo = scene_cubes(sc)[bvh_index(ref)].lo;
+                hi = scene_cubes(sc)[bvh_index(ref)].hi;
             } else if (bvh_kind(ref) == BVH_SQUARE) {
-                const Square *q = &sc->squares[bvh_index(ref)];
+                const Square *q = &scene_squares(sc)[bvh_index(ref)];
                 Vec3 u = vec3_scale(q->axis_u, q->half), v = vec3_scale(q->axis_v, q->half);
                 Vec3 e = vec3_add(vec3_abs(u), vec3_abs(v));
                 lo = vec3_sub(q->centre, e);
                 hi = vec3_add(q->centre, e);
             } else {
-                const Sphere *s = &sc->spheres[bvh_index(ref)];
+                const Sphere *s = &scene_spheres(sc)[bvh_index(ref)];
                 Vec3 r = vec3(s->radius, s->radius, s->radius);
                 lo = vec3_sub(s->centre, r);
                 hi = vec3_add(s->centre, r);
@@ -401,16 +401,16 @@ static void bvh_renumbered_spheres_answer_as_in_file_order(void)
     CHECK(!sc.has_transparency);
     CHECK_INT(0, scene_build_accel(&sc, 2));
     CHECK(sc.accel != NULL);
-    seen = calloc(file.sphere_count, 1);
-    for (size_t i = 0; i < sc.sphere_count && seen; i++) {
-        const Sphere *s = &sc.spheres[i];
+    seen = calloc(scene_count_of(&file, SHAPE_SPHERE), 1);
+    for (size_t i = 0; i < scene_count_of(&sc, SHAPE_SPHERE) && seen; i++) {
+        const Sphere *s = &scene_spheres(&sc)[i];
         size_t k = 0; /* the file's sphere of the same place among the objects */
-        while (k < file.sphere_count && file.spheres[k].order != s->order)
+        while (k < scene_count_of(&file, SHAPE_SPHERE) && scene_spheres(&file)[k].order != s->order)
             k++;
-        moved += s->order != file.spheres[i].order;
-        if (k == file.sphere_count || seen[k]++ ||
-            memcmp(&s->centre, &file.spheres[k].centre, sizeof s->centre) != 0 ||
-            s->radius != file.spheres[k].radius)
+        moved += s->order != scene_spheres(&file)[i].order;
+        if (k == scene_count_of(&file, SHAPE_SPHERE) || seen[k]++ ||
+            memcmp(&s->centre, &scene_spheres(&file)[k].centre, sizeof s->centre) != 0 ||
+            s->radius != scene_spheres(&file)[k].radius)
             differ++;
     }
     free(seen);
@@ -459,7 +459,7 @@ static void bvh_queries_equal_the_loops_at_the_extremes(void)
             accel = sc.accel;
             CHECK(accel != NULL);
             for (int i = 0; i < 120 && accel; i++) {
-                const Sphere *sp = &sc.spheres[i % sc.sphere_count];
+                const Sphere *sp = &scene_spheres(&sc)[i % scene_count_of(&sc, SHAPE_SPHERE)];
                 Vec3 aim = vec3_add(sp->centre,
                                     vec3_scale(rng_unit_vector(), sp->radius * rng_uniform()));
                 Vec3 o = sc.camera.eye, d = vec3_sub(aim, o);
@@ -521,12 +521,12 @@ static void bvh_queries_see_thin_boxes_from_afar(void)
         Vec3 aim, o;
         Ray ray;
         if (i % 2) { /* within a triangle */
-            const Triangle *t = &sc.triangles[i / 2 % sc.triangle_count];
+            const Triangle *t = &scene_triangles(&sc)[i / 2 % scene_count_of(&sc, SHAPE_TRIANGLE)];
             double a = rng_uniform(), b = rng_uniform() * (1 - a);
             aim = vec3_add(t->v[0], vec3_add(vec3_scale(vec3_sub(t->v[1], t->v[0]), a),
                                              vec3_scale(vec3_sub(t->v[2], t->v[0]), b)));
         } else { /* within a small sphere */
-            const Sphere *sp = &sc.spheres[i / 2 % 180];
+            const Sphere *sp = &scene_spheres(&sc)[i / 2 % 180];
             aim = vec3_add(sp->centre, vec3_scale(rng_unit_vector(), 0.9 * sp->radius));
         }
         o = vec3_add(aim, vec3_scale(rng_unit_vector(), rng_range(0.5, 1.5)));

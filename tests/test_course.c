@@ -19,7 +19,7 @@
 
 static int parse(const char *text, Scene *scene, Error *err)
 {
-    return course_parse_text("t.txt", text, strlen(text), 0, scene, err);
+    return load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, scene, NULL, err);
 }
 
 static void parse_accepts_the_example(void)
@@ -36,13 +36,13 @@ static void parse_accepts_the_example(void)
     CHECK_NEAR(20, sc.background.g, 0);
     CHECK_NEAR(5, sc.lights[0].position.y, 0);
     CHECK_NEAR(64, sc.lights[0].colour.b, 0);
-    CHECK_INT(2, (long long)sc.sphere_count);
-    CHECK_NEAR(5, sc.spheres[0].centre.z, 0);
-    CHECK_NEAR(1, sc.spheres[0].radius, 0);
+    CHECK_INT(2, (long long)scene_count_of(&sc, SHAPE_SPHERE));
+    CHECK_NEAR(5, scene_spheres(&sc)[0].centre.z, 0);
+    CHECK_NEAR(1, scene_spheres(&sc)[0].radius, 0);
     CHECK_NEAR(100, scene_material(&sc, SHAPE_SPHERE, 0).colour.g, 0);
     CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
-    CHECK_INT(0, sc.spheres[0].order);
-    CHECK_INT(1, sc.spheres[1].order);
+    CHECK_INT(0, scene_spheres(&sc)[0].order);
+    CHECK_INT(1, scene_spheres(&sc)[1].order);
     CHECK_NEAR(1, scene_material(&sc, SHAPE_SPHERE, 1).reflection, 0);
     scene_free(&sc);
 }
@@ -63,13 +63,13 @@ static void parse_sphere_materials_read_back_exactly(void)
                               "sphere: 0 0 8 1 254.99999999999997 1 2 0.5\n"
                               "sphere: 0 0 9 1 7 8 9 0.5 0.25 1.5\n",
                        &sc, &err));
-    CHECK_INT(5, (long long)sc.sphere_count);
-    for (size_t i = 0; i < sc.sphere_count && i < 5; i++) {
+    CHECK_INT(5, (long long)scene_count_of(&sc, SHAPE_SPHERE));
+    for (size_t i = 0; i < scene_count_of(&sc, SHAPE_SPHERE) && i < 5; i++) {
         Material m = scene_material(&sc, SHAPE_SPHERE, i);
         CHECK(memcmp(&m.colour.r, &want[i][0], sizeof want[i][0]) == 0);
         CHECK(memcmp(&m.colour.g, &want[i][1], sizeof want[i][1]) == 0);
         CHECK(memcmp(&m.colour.b, &want[i][2], sizeof want[i][2]) == 0);
-        CHECK_INT(i == 0 ? -1 : (long long)i - 1, sc.spheres[i].material);
+        CHECK_INT(i == 0 ? -1 : (long long)i - 1, scene_spheres(&sc)[i].material);
     }
     CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 4).transparency, 0);
     CHECK_NEAR(1.5, scene_material(&sc, SHAPE_SPHERE, 4).ior, 0);
@@ -92,9 +92,9 @@ static void parse_spheres_share_a_material_until_one_changes(void)
                               "sphere: 0 0 8 1 200 100 50 0.25 0.5 1.25\n",
                        &sc, &err));
     CHECK_INT(2, (long long)sc.material_count);
-    CHECK_INT(0, sc.spheres[0].material);
-    CHECK_INT(0, sc.spheres[2].material);
-    CHECK_INT(1, sc.spheres[3].material);
+    CHECK_INT(0, scene_spheres(&sc)[0].material);
+    CHECK_INT(0, scene_spheres(&sc)[2].material);
+    CHECK_INT(1, scene_spheres(&sc)[3].material);
     m = scene_material_edit(&sc, SHAPE_SPHERE, 1, &rc);
     CHECK(m != NULL);
     if (m)
@@ -116,9 +116,9 @@ static void parse_accepts_comments_blanks_crlf_tabs_bom(void)
     Error err;
 
     CHECK_INT(0, parse(text, &sc, &err));
-    CHECK_INT(1, (long long)sc.sphere_count);
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
-    CHECK_INT(0, sc.spheres[0].order);
+    CHECK_INT(0, scene_spheres(&sc)[0].order);
     scene_free(&sc);
 }
 
@@ -211,9 +211,9 @@ static void parse_accepts_many_spheres(void)
 
     for (size_t i = 0; i < n; i++)
         len += (size_t)sprintf(text + len, "sphere: %zu 0 9 0.5 1 2 3 0\n", i);
-    CHECK_INT(0, course_parse_text("t.txt", text, len, 0, &sc, &err));
-    CHECK_INT((long long)n, (long long)sc.sphere_count);
-    CHECK_NEAR(4999, sc.spheres[4999].centre.x, 0);
+    CHECK_INT(0, load_scene_text("t.txt", text, len, SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT((long long)n, (long long)scene_count_of(&sc, SHAPE_SPHERE));
+    CHECK_NEAR(4999, scene_spheres(&sc)[4999].centre.x, 0);
     scene_free(&sc);
     free(text);
 }
@@ -241,11 +241,11 @@ static size_t big_course(char *text, int n)
 /* Says whether the spheres of scenes a and b are alike, field by field. */
 static int same_spheres(const Scene *a, const Scene *b)
 {
-    if (a->sphere_count != b->sphere_count || a->sphere_capacity != b->sphere_capacity ||
+    if (scene_count_of(a, SHAPE_SPHERE) != scene_count_of(b, SHAPE_SPHERE) || a->shapes[SHAPE_SPHERE].capacity != b->shapes[SHAPE_SPHERE].capacity ||
         a->has_transparency != b->has_transparency)
         return 0;
-    for (size_t i = 0; i < a->sphere_count; i++) {
-        const Sphere *x = &a->spheres[i], *y = &b->spheres[i];
+    for (size_t i = 0; i < scene_count_of(a, SHAPE_SPHERE); i++) {
+        const Sphere *x = &scene_spheres(a)[i], *y = &scene_spheres(b)[i];
         Material mx = scene_material(a, SHAPE_SPHERE, i), my = scene_material(b, SHAPE_SPHERE, i);
         if (memcmp(&x->centre, &y->centre, sizeof x->centre) != 0 || x->radius != y->radius ||
             memcmp(&mx.colour, &my.colour, sizeof mx.colour) != 0 ||
@@ -261,7 +261,7 @@ static int parse_on(int threads, const char *text, size_t len, size_t memory_lim
                     Scene *scene, Error *err)
 {
     threads_use(threads);
-    return course_parse_text("big.txt", text, len, memory_limit, scene, err);
+    return load_scene_text("big.txt", text, len, SCENE_COURSE, memory_limit, 0, scene, NULL, err);
 }
 
 /* A large scene of spheres is read alike on one thread and on two: the same
@@ -279,7 +279,7 @@ static void parse_reads_alike_on_every_thread(void)
     CHECK(len > 1 << 20 && len < BIG_ROOM - 1);
     CHECK_INT(0, parse_on(1, text, len, 0, &one, &e1));
     CHECK_INT(0, parse_on(2, text, len, 0, &two, &e2));
-    CHECK_INT(40000, (long long)one.sphere_count);
+    CHECK_INT(40000, (long long)scene_count_of(&one, SHAPE_SPHERE));
     CHECK(one.has_transparency);
     CHECK(same_spheres(&one, &two));
     /* The memory limit: the serial reading's room just fits, or not. */
@@ -323,9 +323,9 @@ static void parse_reads_alike_on_every_thread(void)
                 CHECK_ERROR(lines[k], &e2, e1.line, e1.column, e1.message);
             } else if (r1 == 0 && r2 == 0) {
                 CHECK(same_spheres(&s1, &s2));
-                CHECK_INT((long long)s1.plane_count, (long long)s2.plane_count);
+                CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE), (long long)scene_count_of(&s2, SHAPE_PLANE));
                 CHECK_INT((long long)s1.light_count, (long long)s2.light_count);
-                CHECK_INT(k == 5, (long long)s2.plane_count);
+                CHECK_INT(k == 5, (long long)scene_count_of(&s2, SHAPE_PLANE));
                 CHECK_INT(1 + (k == 6), (long long)s2.light_count);
                 scene_free(&s1);
                 scene_free(&s2);
@@ -377,7 +377,7 @@ static void parse_reads_random_edits_alike(void)
             CHECK_ERROR("a random edit", &e2, e1.line, e1.column, e1.message);
         } else if (r1 == 0 && r2 == 0) {
             CHECK(same_spheres(&s1, &s2));
-            CHECK_INT((long long)s1.plane_count, (long long)s2.plane_count);
+            CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE), (long long)scene_count_of(&s2, SHAPE_PLANE));
             CHECK_INT((long long)s1.texture_count, (long long)s2.texture_count);
             CHECK(s1.has_ambient == s2.has_ambient);
             scene_free(&s1);
@@ -625,13 +625,13 @@ static void parse_rejects_bad_scenes_with_position(void)
 
         if (strstr(b->message, "NUL byte"))
             len += 1 + strlen(b->text + len + 1);
-        rc = course_parse_text("t.txt", b->text, len, 0, &sc, &err);
+        rc = load_scene_text("t.txt", b->text, len, SCENE_COURSE, 0, 0, &sc, NULL, &err);
         CHECK_INT(-1, rc);
         if (rc != -1) {
             scene_free(&sc);
             continue;
         }
-        CHECK_INT(0, (long long)sc.sphere_count);
+        CHECK_INT(0, (long long)scene_count_of(&sc, SHAPE_SPHERE));
         CHECK_CONTAINS(err.file, "t.txt");
         CHECK_ERROR(b->text, &err, b->line, b->column, b->message);
     }
@@ -752,7 +752,7 @@ static void parse_error_excerpt_and_caret(void)
         char text[2000];
         memset(text, ' ', sizeof text);
         memcpy(text + 1500, "0 0 x\n", 6);
-        CHECK_INT(-1, course_parse_text("t.txt", text, 1506, 0, &sc, &err));
+        CHECK_INT(-1, load_scene_text("t.txt", text, 1506, SCENE_COURSE, 0, 0, &sc, NULL, &err));
         CHECK_INT(1505, err.column);
         CHECK(strlen(err.excerpt) < 180);
         CHECK_INT('x', err.excerpt[err.caret]);
@@ -771,7 +771,7 @@ static void parse_error_excerpt_and_caret(void)
             text[n++] = (char)0xa9;
         }
         text[n++] = '\n';
-        CHECK_INT(-1, course_parse_text("t.txt", text, n, 0, &sc, &err));
+        CHECK_INT(-1, load_scene_text("t.txt", text, n, SCENE_COURSE, 0, 0, &sc, NULL, &err));
         CHECK(strstr(err.excerpt, "\\x") == NULL);
         CHECK_INT('x', err.excerpt[err.caret]);
     }
@@ -804,14 +804,14 @@ static void parse_file_errors(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests/no-such-file.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_CONTAINS(err.file, "tests/no-such-file.txt");
     CHECK_CONTAINS(err.message, "cannot open");
     CHECK_INT(0, err.line);
-    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(-1, load_scene_file("tests", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_CONTAINS(err.message, "cannot read");
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
-    CHECK_INT(3, (long long)sc.sphere_count);
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
+    CHECK_INT(3, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK_INT(400, sc.camera.height);
     scene_free(&sc);
 }

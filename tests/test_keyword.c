@@ -25,31 +25,39 @@
 /* Reads text as a keyword scene named t.txt; returns what the reader does. */
 static int kw(const char *text, Scene *sc, Error *err)
 {
-    return keyword_parse_text("t.txt", text, strlen(text), 0, sc, err);
+    return load_scene_text("t.txt", text, strlen(text), SCENE_KEYWORD, 0, 0, sc, NULL, err);
+}
+
+/* Same as kw(), keeping what --save writes back in *src. */
+static int kw_source(const char *text, Scene *sc, SceneSource *src, Error *err)
+{
+    return load_scene_text("t.txt", text, strlen(text), SCENE_KEYWORD, 0, 0, sc, src, err);
 }
 
 static void keyword_reads_the_seed_scene(void)
 {
     Scene sc;
+    SceneSource src;
     Error err;
     Vec3 d = vec3_normalize(vec3(-10, -30, 20));
 
-    CHECK_INT(0, kw(SEED, &sc, &err));
+    CHECK_INT(0, kw_source(SEED, &sc, &src, &err));
     CHECK_INT(SCENE_KEYWORD, sc.format);
     CHECK_INT(700, sc.camera.width);
     CHECK_INT(500, sc.camera.height);
-    CHECK_NEAR(2.0943951, sc.fov, 0);
+    CHECK_NEAR(2.0943951, src.fov, 0);
+    source_free(&src);
     CHECK_INT(1, (long long)sc.named_count);
     CHECK(strcmp(sc.named[0].name, "sphereMat") == 0);
     CHECK_NEAR(1, sc.named[0].ka, 0);
     CHECK_NEAR(0.6, sc.named[0].kd, 0);
     CHECK_NEAR(0.7, sc.named[0].ks, 0);
     CHECK_NEAR(10, sc.named[0].shininess, 0);
-    CHECK_INT(1, (long long)sc.sphere_count);
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK_INT(0, scene_material(&sc, SHAPE_SPHERE, 0).named);
     CHECK_NEAR(255, scene_material(&sc, SHAPE_SPHERE, 0).colour.r, 0);
     CHECK_NEAR(0, scene_material(&sc, SHAPE_SPHERE, 0).reflection, 0);
-    CHECK_NEAR(0.4, sc.spheres[0].radius, 0);
+    CHECK_NEAR(0.4, scene_spheres(&sc)[0].radius, 0);
     CHECK_INT(1, (long long)sc.light_count);
     CHECK_INT(1, sc.lights[0].distant);
     CHECK_NEAR(0.1, sc.lights[0].intensity, 0);
@@ -77,22 +85,22 @@ static void keyword_reads_every_element_in_any_order(void)
                     "sphere 2 0 9 1 half\n"
                     "camera 0 0 0 0 0 1 1 64 48\nbackground 1 2 3\nambient 4 5 6",
                     &sc, &err));
-    CHECK_INT(2, (long long)sc.sphere_count);
-    CHECK_INT(1, (long long)sc.plane_count);
-    CHECK_INT(1, (long long)sc.triangle_count);
+    CHECK_INT(2, (long long)scene_count_of(&sc, SHAPE_SPHERE));
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_PLANE));
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_TRIANGLE));
     CHECK_INT(2, (long long)sc.light_count);
     CHECK_NEAR(2, sc.lights[0].intensity, 0);
     CHECK_NEAR(3, sc.background.b, 0);
     CHECK_NEAR(6, sc.ambient.b, 0);
     CHECK_INT(1, sc.has_ambient);
     /* Objects keep the file's order across kinds. */
-    CHECK_INT(0, sc.spheres[0].order);
-    CHECK_INT(1, sc.planes[0].order);
-    CHECK_INT(2, sc.triangles[0].order);
-    CHECK_INT(3, sc.spheres[1].order);
+    CHECK_INT(0, scene_spheres(&sc)[0].order);
+    CHECK_INT(1, scene_planes(&sc)[0].order);
+    CHECK_INT(2, scene_triangles(&sc)[0].order);
+    CHECK_INT(3, scene_spheres(&sc)[1].order);
     /* eta_r without tau: all the light not mirrored is transmitted. */
-    CHECK_NEAR(0.9, scene_material_of(&sc, &sc.triangles[0])->transparency, 1e-16);
-    CHECK_NEAR(1.5, scene_material_of(&sc, &sc.triangles[0])->ior, 0);
+    CHECK_NEAR(0.9, scene_material_of(&sc, &scene_triangles(&sc)[0])->transparency, 1e-16);
+    CHECK_NEAR(1.5, scene_material_of(&sc, &scene_triangles(&sc)[0])->ior, 0);
     CHECK_NEAR(0.5, scene_material(&sc, SHAPE_SPHERE, 1).transparency, 0);
     CHECK_NEAR(0.2, scene_material(&sc, SHAPE_SPHERE, 1).reflection, 0);
     CHECK(sc.has_transparency);
@@ -387,7 +395,7 @@ static void keyword_rejects_bad_scenes_with_position(void)
             scene_free(&sc);
             continue;
         }
-        CHECK_INT(0, (long long)sc.sphere_count);
+        CHECK_INT(0, (long long)scene_count_of(&sc, SHAPE_SPHERE));
         CHECK_ERROR(b->text, &err, b->line, b->column, b->message);
     }
 }
@@ -413,7 +421,7 @@ static void keyword_finds_many_materials_by_name(void)
         len += (size_t)snprintf(text + len, size - len, "sphere %zu 0 9 0.5 m%zu\n", i,
                                 n - 1 - i);
     CHECK_INT(0, kw(text, &sc, &err));
-    for (size_t i = 0; i < n && sc.sphere_count == n; i++)
+    for (size_t i = 0; i < n && scene_count_of(&sc, SHAPE_SPHERE) == n; i++)
         ok &= scene_material(&sc, SHAPE_SPHERE, i).named == (int)(n - 1 - i) &&
               scene_material(&sc, SHAPE_SPHERE, i).colour.r == (double)((n - 1 - i) % 256);
     CHECK(ok);
@@ -474,7 +482,7 @@ static void keyword_numbers_print_shortest_and_read_back(void)
 }
 
 /* Writes scene (read from name) to a new string through save_scene(). */
-static char *saved(const Scene *sc, const char *name)
+static char *saved(const Scene *sc, const SceneSource *src, const char *name)
 {
     FILE *fp = tmpfile();
     char *text = NULL;
@@ -484,7 +492,7 @@ static char *saved(const Scene *sc, const char *name)
     CHECK(fp != NULL);
     if (!fp)
         return NULL;
-    CHECK_INT(0, save_scene(fp, sc, name, "out.txt", &err));
+    CHECK_INT(0, save_scene(fp, sc, src, name, "out.txt", &err));
     len = ftell(fp);
     rewind(fp);
     text = calloc((size_t)len + 1, 1);
@@ -525,12 +533,10 @@ static int same_scene(const Scene *a, const Scene *b)
     int same = same_camera(&a->camera, &b->camera) && SAME(a->background, b->background) &&
                SAME(a->ambient, b->ambient) && a->has_ambient == b->has_ambient &&
                a->light_count == b->light_count && a->named_count == b->named_count &&
-               a->sphere_count == b->sphere_count && a->plane_count == b->plane_count &&
-               a->triangle_count == b->triangle_count && a->cube_count == b->cube_count &&
-               a->square_count == b->square_count && a->cylinder_count == b->cylinder_count &&
-               a->cone_count == b->cone_count && a->length_exponent == b->length_exponent && SAME(a->fov, b->fov) &&
-               SAME(a->look_from, b->look_from) && SAME(a->look_at, b->look_at);
+               a->length_exponent == b->length_exponent;
 
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        same = same && scene_count_of(a, (ShapeKind)k) == scene_count_of(b, (ShapeKind)k);
     for (size_t i = 0; same && i < a->light_count; i++)
         same = same_light(&a->lights[i], &b->lights[i]);
     for (size_t i = 0; same && i < a->named_count; i++) {
@@ -539,47 +545,47 @@ static int same_scene(const Scene *a, const Scene *b)
                SAME(p->ka, q->ka) && SAME(p->kd, q->kd) && SAME(p->ks, q->ks) &&
                SAME(p->shininess, q->shininess);
     }
-    for (size_t i = 0; same && i < a->sphere_count; i++) {
-        const Sphere *p = &a->spheres[i], *q = &b->spheres[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_SPHERE); i++) {
+        const Sphere *p = &scene_spheres(a)[i], *q = &scene_spheres(b)[i];
         Material pm = scene_material(a, SHAPE_SPHERE, i), qm = scene_material(b, SHAPE_SPHERE, i);
         same = SAME(p->centre, q->centre) && SAME(p->radius, q->radius) &&
                same_material(&pm, &qm) && p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->plane_count; i++) {
-        const Plane *p = &a->planes[i], *q = &b->planes[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_PLANE); i++) {
+        const Plane *p = &scene_planes(a)[i], *q = &scene_planes(b)[i];
         same = SAME(p->point, q->point) && SAME(p->normal, q->normal) &&
                SAME(p->given, q->given) && SAME(p->axis_u, q->axis_u) &&
                SAME(p->axis_v, q->axis_v) && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->triangle_count; i++) {
-        const Triangle *p = &a->triangles[i], *q = &b->triangles[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_TRIANGLE); i++) {
+        const Triangle *p = &scene_triangles(a)[i], *q = &scene_triangles(b)[i];
         TriangleShading ps = shading_of(a, i), qs = shading_of(b, i);
         same = SAME(p->v, q->v) && SAME(p->normal, q->normal) && SAME(ps.uv, qs.uv) &&
                ps.smooth == qs.smooth && (!ps.smooth || SAME(ps.vn, qs.vn)) &&
                p->swapped == q->swapped && same_material(scene_material_of(a, p), scene_material_of(b, q)) &&
                p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->cube_count; i++) {
-        const Cube *p = &a->cubes[i], *q = &b->cubes[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CUBE); i++) {
+        const Cube *p = &scene_cubes(a)[i], *q = &scene_cubes(b)[i];
         same = SAME(p->centre, q->centre) && SAME(p->half, q->half) && SAME(p->lo, q->lo) &&
                SAME(p->hi, q->hi) && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->square_count; i++) {
-        const Square *p = &a->squares[i], *q = &b->squares[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_SQUARE); i++) {
+        const Square *p = &scene_squares(a)[i], *q = &scene_squares(b)[i];
         same = SAME(p->centre, q->centre) && SAME(p->given, q->given) &&
                SAME(p->normal, q->normal) && SAME(p->axis_u, q->axis_u) &&
                SAME(p->half, q->half) && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->cylinder_count; i++) {
-        const Cylinder *p = &a->cylinders[i], *q = &b->cylinders[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CYLINDER); i++) {
+        const Cylinder *p = &scene_cylinders(a)[i], *q = &scene_cylinders(b)[i];
         same = SAME(p->centre, q->centre) && SAME(p->radius, q->radius) &&
                same_material(&p->material, &q->material) && p->order == q->order;
     }
-    for (size_t i = 0; same && i < a->cone_count; i++) {
-        const Cone *p = &a->cones[i], *q = &b->cones[i];
+    for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CONE); i++) {
+        const Cone *p = &scene_cones(a)[i], *q = &scene_cones(b)[i];
         same = SAME(p->base, q->base) && SAME(p->apex, q->apex) && SAME(p->radius, q->radius) &&
                SAME(p->height, q->height) && SAME(p->k, q->k) &&
                same_material(&p->material, &q->material) && p->order == q->order;
@@ -621,18 +627,20 @@ static void keyword_saved_scene_reads_back_the_same(void)
 
     for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
         Scene a, b, c;
+        SceneSource sa, sb;
         Error err;
         char *once, *twice;
 
-        CHECK_INT(0, kw(texts[i], &a, &err));
-        once = saved(&a, "t.txt");
+        CHECK_INT(0, kw_source(texts[i], &a, &sa, &err));
+        once = saved(&a, &sa, "t.txt");
         CHECK(once != NULL);
         if (!once)
             continue;
-        CHECK_INT(0, kw(once, &b, &err));
-        if (!same_scene(&a, &b))
+        CHECK_INT(0, kw_source(once, &b, &sb, &err));
+        if (!same_scene(&a, &b) || !SAME(sa.fov, sb.fov) || !SAME(sa.look_from, sb.look_from) ||
+            !SAME(sa.look_at, sb.look_at))
             test_fail(__FILE__, __LINE__, "case %zu: the saved scene differs:\n%s", i, once);
-        twice = saved(&b, "t.txt");
+        twice = saved(&b, &sb, "t.txt");
         CHECK(twice && strcmp(once, twice) == 0);
         /* The saved text holds the original numbers. */
         if (i == 1) {
@@ -652,23 +660,27 @@ static void keyword_saved_scene_reads_back_the_same(void)
         free(twice);
         scene_free(&a);
         scene_free(&b);
+        source_free(&sa);
+        source_free(&sb);
     }
 }
 
 static void keyword_save_refuses_a_course_scene(void)
 {
     Scene sc;
+    SceneSource src;
     Error err;
     FILE *fp = tmpfile();
 
     CHECK(fp != NULL);
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &src, &err));
     if (fp) {
-        CHECK_INT(-1, save_scene(fp, &sc, "scenes/course.txt", "out.txt", &err));
+        CHECK_INT(-1, save_scene(fp, &sc, &src, "scenes/course.txt", "out.txt", &err));
         CHECK_CONTAINS(err.message, "cannot express a course-format scene");
         fclose(fp);
     }
     scene_free(&sc);
+    source_free(&src);
 }
 
 const TestCase keyword_tests[] = {

@@ -16,7 +16,7 @@
 /* Reads text as an MPL scene named t.txt; returns what the reader does. */
 static int mpl(const char *text, Scene *sc, Error *err)
 {
-    return mpl_parse_text("t.txt", text, strlen(text), 0, 0, sc, err);
+    return load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 0, sc, NULL, err);
 }
 
 static void mpl_reads_the_seed_example_verbatim(void)
@@ -25,25 +25,25 @@ static void mpl_reads_the_seed_example_verbatim(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(0, load_scene_file("scenes/seed001.txt", SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/seed001.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(SCENE_MPL, sc.format);
     CHECK_INT(5, (long long)sc.named_count);
     CHECK_INT(4, (long long)sc.texture_count);
-    CHECK_INT(2, (long long)sc.square_count);
-    CHECK_INT(1, (long long)sc.cube_count);
-    CHECK_INT(4, (long long)sc.cylinder_count);
-    CHECK_INT(1, (long long)sc.cone_count);
-    CHECK_INT(1, (long long)sc.sphere_count);
+    CHECK_INT(2, (long long)scene_count_of(&sc, SHAPE_SQUARE));
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_CUBE));
+    CHECK_INT(4, (long long)scene_count_of(&sc, SHAPE_CYLINDER));
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_CONE));
+    CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK_INT(1, (long long)sc.light_count);
     /* "p Cylinder -4.f, 0.f, 5.f 1.0f marble": commas and C literals. */
-    CHECK_NEAR(-4, sc.cylinders[0].centre.x, 0);
-    CHECK_NEAR(5, sc.cylinders[0].centre.z, 0);
-    CHECK_NEAR(1, sc.cylinders[0].radius, 0);
+    CHECK_NEAR(-4, scene_cylinders(&sc)[0].centre.x, 0);
+    CHECK_NEAR(5, scene_cylinders(&sc)[0].centre.z, 0);
+    CHECK_NEAR(1, scene_cylinders(&sc)[0].radius, 0);
     /* The seed's sizes are half-edges: the painting stands out of the
      * wall at z = 5 by 0.25. */
-    CHECK_NEAR(4.75, sc.cubes[0].lo.z, 0);
-    CHECK_NEAR(6.75, sc.cubes[0].hi.z, 0);
-    CHECK_NEAR(50, sc.squares[1].half, 0);
+    CHECK_NEAR(4.75, scene_cubes(&sc)[0].lo.z, 0);
+    CHECK_NEAR(6.75, scene_cubes(&sc)[0].hi.z, 0);
+    CHECK_NEAR(50, scene_squares(&sc)[1].half, 0);
     CHECK_INT(MODEL_METALLIC, sc.named[4].model);
     CHECK_INT(MODEL_MATTE, sc.named[0].model);
     /* "m marble MATTE 1.f 1.f 1.f 0 1.f 50.f marble.jpg": the index 7th,
@@ -55,9 +55,9 @@ static void mpl_reads_the_seed_example_verbatim(void)
     CHECK_NEAR(0, sc.named[0].ks, 0);
     CHECK_NEAR(127.5, sc.named[4].base.colour.r, 0);
     /* The cone stands on its circle at y = -1.5, its apex 2.5 above. */
-    CHECK_NEAR(1, sc.cones[0].apex.y, 0);
-    CHECK_NEAR(0.2 * 0.2, sc.cones[0].k, 1e-16);
-    CHECK_INT(1, sc.cones[0].finite); /* it ends at its circle */
+    CHECK_NEAR(1, scene_cones(&sc)[0].apex.y, 0);
+    CHECK_NEAR(0.2 * 0.2, scene_cones(&sc)[0].k, 1e-16);
+    CHECK_INT(1, scene_cones(&sc)[0].finite); /* it ends at its circle */
     CHECK_INT(1, sc.lights[0].distant);
     CHECK_NEAR(sqrt(0.5), sc.lights[0].to_light.y, 1e-15);
     CHECK_NEAR(-sqrt(0.5), sc.lights[0].to_light.z, 1e-15);
@@ -95,11 +95,11 @@ static void mpl_reads_c_literals_commas_and_any_case(void)
     CHECK_INT(1, sc.named[0].base.stripes);
     CHECK_NEAR(10, sc.named[0].shininess, 0);
     CHECK_NEAR(1.33, sc.named[1].base.ior, 0);
-    CHECK_NEAR(3, sc.spheres[0].centre.z, 0);
+    CHECK_NEAR(3, scene_spheres(&sc)[0].centre.z, 0);
     /* The seed program's Tri: size 4 at (0, 0, 5): (0, 1), (-1, -1), (1, -1). */
-    CHECK_NEAR(1, sc.triangles[0].v[0].y, 0);
-    CHECK_NEAR(-1, sc.triangles[0].v[1].x, 0);
-    CHECK_NEAR(1, sc.triangles[0].v[2].x, 0);
+    CHECK_NEAR(1, scene_triangles(&sc)[0].v[0].y, 0);
+    CHECK_NEAR(-1, scene_triangles(&sc)[0].v[1].x, 0);
+    CHECK_NEAR(1, scene_triangles(&sc)[0].v[2].x, 0);
     CHECK_INT(1, sc.lights[0].falloff);
     CHECK_NEAR(20, sc.lights[0].range, 0);
     CHECK_INT(40, sc.camera.width);
@@ -213,7 +213,7 @@ static void mpl_rejects_bad_scenes_with_position(void)
         const BadMpl *b = &mpl_bad[i];
         Scene sc;
         Error err;
-        int rc = mpl_parse_text("t.txt", b->text, strlen(b->text), 0, 1, &sc, &err);
+        int rc = load_scene_text("t.txt", b->text, strlen(b->text), SCENE_MPL, 0, 1, &sc, NULL, &err);
 
         CHECK_INT(-1, rc);
         if (rc != -1) {
@@ -260,12 +260,12 @@ static void mpl_reads_its_programs_lenient_lines_with_warnings(void)
             CHECK_ERROR(text, &sc.warnings[0], cases[i].line, cases[i].column, want);
         /* What was read: the sphere of radius 1.5, in the first material,
          * white; the one light of intensity 1. */
-        CHECK_INT(1, (long long)sc.sphere_count);
-        if (sc.sphere_count == 1)
-            CHECK_NEAR(1.5, sc.spheres[0].radius, 0);
+        CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_SPHERE));
+        if (scene_count_of(&sc, SHAPE_SPHERE) == 1)
+            CHECK_NEAR(1.5, scene_spheres(&sc)[0].radius, 0);
         CHECK_NEAR(255, scene_material(&sc, SHAPE_SPHERE, 0).colour.b, 0);
         scene_free(&sc);
-        CHECK_INT(-1, mpl_parse_text("t.txt", text, strlen(text), 0, 1, &sc, &err));
+        CHECK_INT(-1, load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 1, &sc, NULL, &err));
     }
 }
 
@@ -406,7 +406,7 @@ static void mpl_point_light_falls_off_and_ends_at_its_range(void)
 }
 
 /* Writes sc (read from name) to a new string through save_scene(). */
-static char *mpl_saved(const Scene *sc, const char *name)
+static char *mpl_saved(const Scene *sc, const SceneSource *src, const char *name)
 {
     FILE *fp = tmpfile();
     Error err;
@@ -415,7 +415,7 @@ static char *mpl_saved(const Scene *sc, const char *name)
 
     if (!fp)
         return NULL;
-    CHECK_INT(0, save_scene(fp, sc, name, "out.txt", &err));
+    CHECK_INT(0, save_scene(fp, sc, src, name, "out.txt", &err));
     n = ftell(fp);
     rewind(fp);
     text = calloc((size_t)n + 1, 1);
@@ -448,16 +448,19 @@ static void mpl_saved_scene_reads_back_the_same(void)
 
     for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
         Scene a, b;
+        SceneSource sa, sb;
         Error err;
         char *once, *twice;
-        CHECK_INT(0, mpl(texts[i], &a, &err));
-        once = mpl_saved(&a, "t.txt");
+        CHECK_INT(0, load_scene_text("t.txt", texts[i], strlen(texts[i]), SCENE_MPL, 0, 0, &a,
+                                     &sa, &err));
+        once = mpl_saved(&a, &sa, "t.txt");
         CHECK(once != NULL);
         if (!once) {
             scene_free(&a);
+            source_free(&sa);
             continue;
         }
-        CHECK_INT(0, mpl(once, &b, &err));
+        CHECK_INT(0, load_scene_text("t.txt", once, strlen(once), SCENE_MPL, 0, 0, &b, &sb, &err));
         /* The same picture: a small render of each, compared by bytes
          * through a ray in each pixel's direction. */
         for (int y = 0; y < 8; y++)
@@ -480,12 +483,14 @@ static void mpl_saved_scene_reads_back_the_same(void)
         CHECK(a.light_count == b.light_count &&
               memcmp(&a.lights[a.light_count - 1].intensity,
                      &b.lights[b.light_count - 1].intensity, sizeof(double)) == 0);
-        twice = mpl_saved(&b, "t.txt");
+        twice = mpl_saved(&b, &sb, "t.txt");
         CHECK(twice && strcmp(once, twice) == 0);
         free(once);
         free(twice);
         scene_free(&a);
         scene_free(&b);
+        source_free(&sa);
+        source_free(&sb);
     }
 }
 
@@ -515,11 +520,11 @@ static void mpl_cone_ends_at_its_circle(void)
     real t = 0;
 
     CHECK_INT(0, mpl("m a MATTE 1 1 1 0 0 0 N\np Cone 0 0 0 1 2 a\n", &sc, &err));
-    CHECK_INT(0, cone_intersect(&sc.cones[0], &below, 0, INFINITY, &t));
-    CHECK_INT(1, cone_intersect(&sc.cones[0], &side, 0, INFINITY, &t));
+    CHECK_INT(0, cone_intersect(&scene_cones(&sc)[0], &below, 0, INFINITY, &t));
+    CHECK_INT(1, cone_intersect(&scene_cones(&sc)[0], &side, 0, INFINITY, &t));
     CHECK_NEAR(4.5, t, 1e-12);
-    sc.cones[0].finite = 0; /* the keyword format's infinite cone */
-    CHECK_INT(1, cone_intersect(&sc.cones[0], &below, 0, INFINITY, &t));
+    scene_cones(&sc)[0].finite = 0; /* the keyword format's infinite cone */
+    CHECK_INT(1, cone_intersect(&scene_cones(&sc)[0], &below, 0, INFINITY, &t));
     scene_free(&sc);
 }
 

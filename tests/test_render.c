@@ -71,7 +71,7 @@ static void check_pixels_are_their_rays(const char *text)
     Image img;
     int bad = 0;
 
-    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
     render(&sc, &opts, &img, NULL);
     for (int j = 0; j < img.height; j++)
@@ -122,7 +122,7 @@ static void render_bytes_do_not_depend_on_threads(void)
                   two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL},
                   many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
 
-    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
     CHECK_INT(0, image_init(&b, sc.camera.width, sc.camera.height));
     render(&sc, &one, &a, NULL);
@@ -269,7 +269,7 @@ static int render_text(const char *text, Image *img)
     Error err;
     int e;
 
-    if (course_parse_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
+    if (load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         img->rgb = NULL;
         return -99999;
@@ -319,7 +319,7 @@ static int render_text_with(const char *text, int samples, int threads, Image *i
     img->rgb = NULL;
     img->linear = NULL;
     img->encode = NULL;
-    if (course_parse_text("t.txt", text, strlen(text), 0, &sc, &err) != 0) {
+    if (load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
     }
@@ -496,7 +496,7 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
         Scene sc;
         Error err;
 
-        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, 0, 0, &sc, &err));
+        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, 0, 0, &sc, NULL, &err));
         for (int i = 0; i < 4000; i++) {
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};
@@ -547,7 +547,7 @@ static void render_cutoff_leaves_out_shadow_rays(void)
     RayCounts all = {0}, left = {0};
     int bad = 0;
 
-    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, NULL, &err));
     for (int i = 0; i < 100; i++) {
         Ray ray = {vec3(0, 0, -5),
                    vec3_normalize(vec3(rng_range(-0.2, 0.2), rng_range(-0.2, 0.2), 1))};
@@ -576,7 +576,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Image img;
     RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
 
-    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
     render(&sc, &opts, &img, counts);
     scene_free(&sc);
@@ -667,7 +667,7 @@ static void render_noise_is_each_pixels_own(void)
         Scene sc;
         Error err;
 
-        CHECK_INT(0, load_scene_file(scenes[s], SCENE_AUTO, 0, 0, &sc, &err));
+        CHECK_INT(0, load_scene_file(scenes[s], SCENE_AUTO, 0, 0, &sc, NULL, &err));
         camera_resize(&sc.camera, 40, 30);
         render_noisy(&sc, noise, in, 1, 0, 0, &img[0], spp[0], error[0]);
         render_noisy(&sc, noise, in, 2, 0, 0, &img[1], spp[1], error[1]);
@@ -711,7 +711,7 @@ static void render_noise_spends_samples_where_the_pixel_varies(void)
     Scene sc;
     Error err;
 
-    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
     render_noisy(&sc, noise, none, 2, 0, 0, &img, spp, error);
     for (int i = 0; i < 16 * 16; i++) {
         const unsigned char *p = img.rgb + 3 * i;

@@ -12,6 +12,7 @@
 #include "math/number.h"
 #include "scene/scene.h"
 #include "scene/scene_accel.h"
+#include "scenefile/load.h"
 #include "scenefile/course.h"
 #include "scenefile/obj.h"
 #include "test.h"
@@ -56,14 +57,14 @@ static void limits_scene_stops_at_the_element_that_passes(void)
     if (!text)
         return;
     /* No limit: every sphere is read. */
-    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
-    CHECK_INT(1000, (long long)sc.sphere_count);
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT(1000, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK(scene_memory(&sc) >= 1000 * sizeof(Sphere));
     CHECK(scene_memory_left(&sc) == SIZE_MAX);
     scene_free(&sc);
     /* 48 KiB: the array doubles to 512 spheres, not to 1024; the error
      * points at the 513th sphere's line (8 + 512). */
-    CHECK_INT(-1, course_parse_text("t.txt", text, strlen(text), limit, &sc, &err));
+    CHECK_INT(-1, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, limit, 0, &sc, NULL, &err));
     CHECK_INT(520, err.line);
     CHECK_INT(1, err.column);
     CHECK_CONTAINS(err.message, "would pass the memory limit of 48 KiB");
@@ -125,32 +126,32 @@ static void limits_spheres_added_at_once_as_one_by_one(void)
         CHECK_INT(0, scene_add_sphere(&one, c, 1, &m));
     }
     CHECK_INT(0, scene_add_spheres(&all, fill.n, limits_fill, &fill));
-    CHECK_INT((long long)one.sphere_count, (long long)all.sphere_count);
-    CHECK_INT((long long)one.sphere_capacity, (long long)all.sphere_capacity);
-    CHECK_INT(1024, (long long)all.sphere_capacity);
-    for (size_t k = 0; k < one.sphere_count; k++)
-        same += same_sphere(&one.spheres[k], &all.spheres[k]);
-    CHECK_INT((long long)one.sphere_count, same);
+    CHECK_INT((long long)scene_count_of(&one, SHAPE_SPHERE), (long long)scene_count_of(&all, SHAPE_SPHERE));
+    CHECK_INT((long long)one.shapes[SHAPE_SPHERE].capacity, (long long)all.shapes[SHAPE_SPHERE].capacity);
+    CHECK_INT(1024, (long long)all.shapes[SHAPE_SPHERE].capacity);
+    for (size_t k = 0; k < scene_count_of(&one, SHAPE_SPHERE); k++)
+        same += same_sphere(&scene_spheres(&one)[k], &scene_spheres(&all)[k]);
+    CHECK_INT((long long)scene_count_of(&one, SHAPE_SPHERE), same);
     CHECK_NEAR(0.5, scene_material(&all, SHAPE_SPHERE, 3 + 7).reflection, 0);
-    CHECK_INT(3 + 999, all.spheres[3 + 999].order);
-    CHECK_NEAR(999, all.spheres[3 + 999].centre.x, 0);
-    CHECK_INT(one.spheres[500].order, all.spheres[500].order);
+    CHECK_INT(3 + 999, scene_spheres(&all)[3 + 999].order);
+    CHECK_NEAR(999, scene_spheres(&all)[3 + 999].centre.x, 0);
+    CHECK_INT(scene_spheres(&one)[500].order, scene_spheres(&all)[500].order);
     /* A failing fill: the code back, the scene as it was. */
-    cap = all.sphere_capacity;
+    cap = all.shapes[SHAPE_SPHERE].capacity;
     fill.code = 7;
     CHECK_INT(7, scene_add_spheres(&all, 2000, limits_fill, &fill));
-    CHECK_INT(1003, (long long)all.sphere_count);
-    CHECK_INT((long long)cap, (long long)all.sphere_capacity);
+    CHECK_INT(1003, (long long)scene_count_of(&all, SHAPE_SPHERE));
+    CHECK_INT((long long)cap, (long long)all.shapes[SHAPE_SPHERE].capacity);
     /* The limit: room for 2048 spheres, not for 4096; adding one by one
      * would stop at the 2049th, so adding 1046 at once stops too, and
      * nothing is left of the attempt. */
     fill.code = 0;
     all.memory_limit = scene_memory(&all) + 1024 * sizeof(Sphere);
     CHECK_INT(SCENE_OVER_LIMIT, scene_add_spheres(&all, 1046, limits_fill, &fill));
-    CHECK_INT((long long)cap, (long long)all.sphere_capacity);
-    CHECK_INT(1003, (long long)all.sphere_count);
+    CHECK_INT((long long)cap, (long long)all.shapes[SHAPE_SPHERE].capacity);
+    CHECK_INT(1003, (long long)scene_count_of(&all, SHAPE_SPHERE));
     CHECK_INT(0, scene_add_spheres(&all, 1045, limits_fill, &fill));
-    CHECK_INT(2048, (long long)all.sphere_capacity);
+    CHECK_INT(2048, (long long)all.shapes[SHAPE_SPHERE].capacity);
     scene_free(&one);
     scene_free(&all);
 }
@@ -164,7 +165,7 @@ static void limits_hierarchy_is_estimated_before_it_is_built(void)
     CHECK(text != NULL);
     if (!text)
         return;
-    CHECK_INT(0, course_parse_text("t.txt", text, strlen(text), 0, &sc, &err));
+    CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
     sc.memory_limit = scene_memory(&sc) + bvh_build_memory(1000) - 1;
     CHECK_INT(SCENE_OVER_LIMIT, scene_build_accel(&sc, 1));
     CHECK(sc.accel == NULL);

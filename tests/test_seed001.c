@@ -10,6 +10,7 @@
 #include "render/seed001.h"
 #include "render/trace.h"
 #include "scene/mapping.h"
+#include "scenefile/load.h"
 #include "scenefile/mpl.h"
 #include "test.h"
 
@@ -22,7 +23,7 @@ static int seed_scene(const char *text, Scene *sc)
 {
     Error err;
 
-    if (mpl_parse_text("t.txt", text, strlen(text), 0, 0, sc, &err) == 0)
+    if (load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 0, sc, NULL, &err) == 0)
         return 0;
     test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
     return -1;
@@ -217,15 +218,15 @@ static void seed001_texture_coordinates_follow_its_program(void)
      * they face, a floor's v its own height's (0 at a whole height, read
      * clamped: its one row); a square's stripes half / 10 as wide. */
     seed_uv(&sc, SHAPE_PLANE, vec3(2.25, -0.5, 7), vec3(0, 0, -1), 0.25, 0.5, 0.25, __LINE__);
-    sc.planes[0].normal = vec3(0, 1, 0);
-    sc.planes[0].point = vec3(0, 0, 7);
+    scene_planes(&sc)[0].normal = vec3(0, 1, 0);
+    scene_planes(&sc)[0].point = vec3(0, 0, 7);
     seed_uv(&sc, SHAPE_PLANE, vec3(1.5, -1e-17, -2.75), vec3(0, 1, 0), 0.5, 0, 0.5, __LINE__);
     {
         SurfacePoint sp = {vec3(1.5, 0, -2.75), vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 0, 0)};
         double uv[2], st;
         CHECK_INT(1, mapping_seed001(&sc, SHAPE_PLANE, 0, &sp, uv, &st));
     }
-    sc.planes[0].normal = vec3(-1, 0, 0);
+    scene_planes(&sc)[0].normal = vec3(-1, 0, 0);
     seed_uv(&sc, SHAPE_PLANE, vec3(3, 0.5, 1.25), vec3(-1, 0, 0), 0, 0.5, 0, __LINE__);
     seed_uv(&sc, SHAPE_SQUARE, vec3(1.25, 0.5, 5), vec3(0, 0, -1), 0.25, 0.5, 0.5, __LINE__);
     /* Sphere of radius 0.5 (its program's v: the height not divided by
@@ -243,9 +244,9 @@ static void seed001_texture_coordinates_follow_its_program(void)
     }
     /* The physical model keeps our flat mapping: (x, z) on a floor, (z, y)
      * on a wall facing x, both wrapped. */
-    sc.planes[0].normal = vec3(0, 1, 0);
+    scene_planes(&sc)[0].normal = vec3(0, 1, 0);
     seed_uv(&sc, SHAPE_PLANE, vec3(1.5, 0, -2.75), vec3(0, 1, 0), 0.5, 0.25, 0.5, __LINE__);
-    sc.planes[0].normal = vec3(-1, 0, 0);
+    scene_planes(&sc)[0].normal = vec3(-1, 0, 0);
     seed_uv(&sc, SHAPE_PLANE, vec3(3, 0.5, 1.25), vec3(-1, 0, 0), 0.25, 0.5, 0.25, __LINE__);
     scene_free(&sc);
 }

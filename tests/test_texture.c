@@ -5,6 +5,7 @@
 
 #include "geometry/sphere.h"
 #include "scene/texture.h"
+#include "scenefile/load.h"
 #include "scenefile/course.h"
 #include "scenefile/texture_file.h"
 #include "shading.h"
@@ -96,7 +97,7 @@ static void sphere_uv_at_known_points(void)
 /* Parses text as build/t.txt; returns its status. */
 static int parse_in_build(const char *text, Scene *sc, Error *err)
 {
-    return course_parse_text("build/t.txt", text, strlen(text), 0, sc, err);
+    return load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, sc, NULL, err);
 }
 
 static void texture_records_attach_to_the_object_before(void)
@@ -119,22 +120,22 @@ static void texture_records_attach_to_the_object_before(void)
                                            "mesh: square.obj 1 2 3 0\ntexture: tex-a.ppm\n"
                                            "mesh: square.obj 1 2 3 0\n",
                                 &sc, &err));
-    CHECK_INT(6, (long long)sc.triangle_count);
-    if (sc.triangle_count == 6) {
-        CHECK_INT(-1, scene_material_of(&sc, &sc.triangles[1])->texture);
-        CHECK_INT(TRIANGLE_PLAIN, sc.triangles[1].shading);
-        CHECK_INT(sc.triangles[2].material, sc.triangles[3].material);
-        CHECK_INT(0, scene_material_of(&sc, &sc.triangles[3])->texture);
-        CHECK_INT(sc.triangles[4].material, sc.triangles[5].material);
-        CHECK(sc.triangles[4].material != sc.triangles[2].material);
-        CHECK_INT(-1, scene_material_of(&sc, &sc.triangles[4])->texture);
+    CHECK_INT(6, (long long)scene_count_of(&sc, SHAPE_TRIANGLE));
+    if (scene_count_of(&sc, SHAPE_TRIANGLE) == 6) {
+        CHECK_INT(-1, scene_material_of(&sc, &scene_triangles(&sc)[1])->texture);
+        CHECK_INT(TRIANGLE_PLAIN, scene_triangles(&sc)[1].shading);
+        CHECK_INT(scene_triangles(&sc)[2].material, scene_triangles(&sc)[3].material);
+        CHECK_INT(0, scene_material_of(&sc, &scene_triangles(&sc)[3])->texture);
+        CHECK_INT(scene_triangles(&sc)[4].material, scene_triangles(&sc)[5].material);
+        CHECK(scene_triangles(&sc)[4].material != scene_triangles(&sc)[2].material);
+        CHECK_INT(-1, scene_material_of(&sc, &scene_triangles(&sc)[4])->texture);
         CHECK_INT(1, (long long)sc.shading_count); /* the first triangle's */
     }
     CHECK_INT(1, (long long)sc.texture_count); /* one file, read once */
     CHECK_INT(0, scene_material(&sc, SHAPE_SPHERE, 0).texture);
     CHECK_INT(TEXTURE_BILINEAR, scene_material(&sc, SHAPE_SPHERE, 0).filter);
-    CHECK_INT(TEXTURE_NEAREST, sc.planes[0].material.filter);
-    CHECK_NEAR(2.5, sc.planes[0].tile, 0);
+    CHECK_INT(TEXTURE_NEAREST, scene_planes(&sc)[0].material.filter);
+    CHECK_NEAR(2.5, scene_planes(&sc)[0].tile, 0);
     CHECK_NEAR(0.5, shading_of(&sc, 0).uv[2][0], 0);
     CHECK_NEAR(3, sc.textures[0].width, 0);
     scene_free(&sc);

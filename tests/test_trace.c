@@ -102,8 +102,8 @@ static void trace_ball_around_point_and_light_casts_no_shadow(void)
     add_sphere(&sc, vec3(0, 0, 0), 1, colour(200, 100, 50), 0);
     add_sphere(&sc, vec3(0, 0, 5), 20, colour(255, 255, 255), 0);
     CHECK_COLOUR(200, 100, 50, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
-    sc.spheres[1].centre = vec3(0, 0, 10);
-    sc.spheres[1].radius = 2;
+    scene_spheres(&sc)[1].centre = vec3(0, 0, 10);
+    scene_spheres(&sc)[1].radius = 2;
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 0);
     scene_free(&sc);
 }
@@ -116,10 +116,10 @@ static void trace_mirror_reflects_background_and_spheres(void)
      * the background. */
     CHECK_COLOUR(10, 20, 30, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* Half a mirror: half its own light, half the background. */
-    sc.spheres[0].reflection = 0.5;
+    scene_spheres(&sc)[0].reflection = 0.5;
     CHECK_COLOUR(105, 60, 40, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* A green ball behind the eye, lit from below, is seen in the mirror. */
-    sc.spheres[0].reflection = 1;
+    scene_spheres(&sc)[0].reflection = 1;
     add_sphere(&sc, vec3(0, 0, 8), 1, colour(0, 250, 0), 0);
     CHECK_COLOUR(0, 250, 0, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     scene_free(&sc);
@@ -260,13 +260,13 @@ static void trace_shadow_through_glass_is_attenuated_per_crossing(void)
 
     CHECK_INT(0, plane_make(&floor, vec3(0, 0, 0), vec3(0, 1, 0), 1,
                             material_plain(colour(200, 100, 40), 0)));
-    CHECK_INT(0, scene_add_plane(&sc, &floor));
+    CHECK_INT(0, scene_add_shape(&sc, SHAPE_PLANE, &floor));
     add_sphere_of(&sc, vec3(0, 5, 0), 1, glass(colour(255, 255, 255), 0, 0.5, 1.5));
     CHECK(sc.has_transparency);
     CHECK_COLOUR(50, 25, 10, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 1e-12);
-    sc.materials[sc.spheres[0].material].transparency = 0; /* glass: in the table */
+    sc.materials[scene_spheres(&sc)[0].material].transparency = 0; /* glass: in the table */
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 0);
-    sc.spheres[0].centre.x = 4;
+    scene_spheres(&sc)[0].centre.x = 4;
     CHECK_COLOUR(200, 100, 40, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 1e-12);
     scene_free(&sc);
 }
@@ -293,7 +293,7 @@ static void trace_refraction_enters_and_leaves_a_ball(void)
     add_sphere(&sc, vec3(10, h, 0), 0.05, colour(0, 255, 0), 0);
     CHECK_COLOUR(255, 0, 0, seen(&sc, vec3(-10, h, 0), vec3(1, 0, 0), 10), 1e-9);
     /* With n = 1 the same ray goes straight to the green target. */
-    sc.materials[sc.spheres[0].material].ior = 1;
+    sc.materials[scene_spheres(&sc)[0].material].ior = 1;
     CHECK_COLOUR(0, 255, 0, seen(&sc, vec3(-10, h, 0), vec3(1, 0, 0), 10), 1e-9);
     scene_free(&sc);
 }
@@ -312,8 +312,8 @@ static void trace_total_internal_reflection_mirrors_the_transmitted_share(void)
     sc.lights[0].colour = colour(0, 0, 0);
     sc.ambient = colour(255, 255, 255);
     sc.has_ambient = 1;
-    CHECK_INT(0, scene_add_plane(&sc, &top));
-    CHECK_INT(0, scene_add_plane(&sc, &floor));
+    CHECK_INT(0, scene_add_shape(&sc, SHAPE_PLANE, &top));
+    CHECK_INT(0, scene_add_shape(&sc, SHAPE_PLANE, &floor));
     CHECK_COLOUR(255, 0, 0, seen(&sc, vec3(0, -1, 0), vec3(sin(PI / 3), cos(PI / 3), 0), 10), 1e-12);
     /* At 30 degrees it leaves into the sky: the background. */
     CHECK_COLOUR(10, 20, 30, seen(&sc, vec3(0, -1, 0), vec3(sin(PI / 6), cos(PI / 6), 0), 10), 1e-12);
@@ -353,7 +353,7 @@ static void trace_exact_tie_across_kinds_keeps_the_first_listed(void)
     Hit hit;
 
     CHECK_INT(0, plane_make(&pl, vec3(0, 0, -4), vec3(0, 0, 1), 1, material_plain(colour(0, 255, 0), 0)));
-    CHECK_INT(0, scene_add_plane(&sc, &pl));
+    CHECK_INT(0, scene_add_shape(&sc, SHAPE_PLANE, &pl));
     add_sphere(&sc, vec3(0, 0, -5), 1, colour(255, 0, 0), 0);
     CHECK(visibility_nearest(&sc, &r, INFINITY, &hit));
     CHECK_INT(SHAPE_PLANE, hit.kind);
@@ -361,7 +361,7 @@ static void trace_exact_tie_across_kinds_keeps_the_first_listed(void)
     scene_free(&sc);
     sc = scene_lit_from(vec3(0, 0, 10));
     add_sphere(&sc, vec3(0, 0, -5), 1, colour(255, 0, 0), 0);
-    CHECK_INT(0, scene_add_plane(&sc, &pl));
+    CHECK_INT(0, scene_add_shape(&sc, SHAPE_PLANE, &pl));
     CHECK(visibility_nearest(&sc, &r, INFINITY, &hit));
     CHECK_INT(SHAPE_SPHERE, hit.kind);
     scene_free(&sc);

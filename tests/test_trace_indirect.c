@@ -7,6 +7,7 @@
 #include "render/model.h"
 #include "render/render.h"
 #include "render/trace.h"
+#include "scenefile/load.h"
 #include "scenefile/course.h"
 #include "test.h"
 
@@ -17,7 +18,7 @@ static int indirect_scene(const char *text, Scene *sc)
 {
     Error err;
 
-    if (course_parse_text("t.txt", text, strlen(text), 0, sc, &err) != 0) {
+    if (load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, sc, NULL, &err) != 0) {
         test_fail(__FILE__, __LINE__, "%d:%d: %s", err.line, err.column, err.message);
         return -1;
     }

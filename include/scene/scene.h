@@ -59,6 +59,15 @@ typedef enum {
     SHAPE_KINDS
 } ShapeKind;
 
+/* A scene's shapes of one kind: count of them, room for capacity, of the
+ * kind's type (Sphere, Plane, ...: scene_spheres() and the like read
+ * them); items is NULL when there are none. */
+typedef struct {
+    void *items;
+    size_t count;
+    size_t capacity;
+} ShapeArray;
+
 /* The most ambient occlusion or global illumination rays a point casts,
  * and the most diffuse bounces gathered. */
 enum { SCENE_MAX_INDIRECT = 4096, SCENE_MAX_BOUNCES = 64 };
@@ -88,14 +97,6 @@ typedef enum {
     SCENE_MAPPING_SEED001 /* seed 001's program's conventions (mapping.h) */
 } SceneMapping;
 
-/* A mesh line, kept so that the scene can be saved and its files known. */
-typedef struct {
-    char *path;   /* the OBJ path as written in the scene file */
-    char *opened; /* the path it was read from */
-    size_t first; /* its first triangle in the scene's triangles */
-    size_t count; /* how many triangles it gave */
-} SceneMesh;
-
 struct Bvh;
 
 typedef struct Scene {
@@ -114,28 +115,9 @@ typedef struct Scene {
     size_t light_count;     /* lights in use, >= 1 once a course scene is
                                parsed */
     size_t light_capacity;  /* lights allocated */
-    Sphere *spheres;        /* file order (but scene_build_accel());
-                               NULL when there are none */
-    size_t sphere_count;    /* spheres in use */
-    size_t sphere_capacity; /* spheres allocated */
-    Plane *planes;          /* file order; NULL when there are none */
-    size_t plane_count;
-    size_t plane_capacity;
-    Triangle *triangles;    /* file order; NULL when there are none */
-    size_t triangle_count;
-    size_t triangle_capacity;
-    Cube *cubes;            /* file order; NULL when there are none */
-    size_t cube_count;
-    size_t cube_capacity;
-    Square *squares;        /* file order; NULL when there are none */
-    size_t square_count;
-    size_t square_capacity;
-    Cylinder *cylinders;    /* file order; NULL when there are none */
-    size_t cylinder_count;
-    size_t cylinder_capacity;
-    Cone *cones;            /* file order; NULL when there are none */
-    size_t cone_count;
-    size_t cone_capacity;
+    ShapeArray shapes[SHAPE_KINDS]; /* each kind's, in file order (but
+                               scene_build_accel()'s spheres): the typed
+                               views below read them */
     Material *materials;    /* the triangles' (spheres and planes hold
                                their own) */
     size_t material_count;
@@ -155,22 +137,12 @@ typedef struct Scene {
                                the command to say; at most SCENE_WARNINGS_MAX */
     size_t warning_count;
     size_t warnings_dropped; /* warnings past SCENE_WARNINGS_MAX, counted */
-    SceneMesh *meshes;      /* the mesh lines (course and keyword formats),
-                               for --save and the files the scene reads */
-    size_t mesh_count;
-    size_t mesh_capacity;
     SceneFormat format;     /* the format it was read from */
     SceneModel model;       /* the rules its picture is made by: the MPL
                                format's default is SCENE_MODEL_SEED001, the
                                others' SCENE_MODEL_PHYSICAL */
     SceneMapping mapping;   /* its texture coordinates: the MPL format's
                                are seed 001's */
-    int camera_line;        /* MPL: a camera line was given (else the
-                               default camera) */
-    Vec3 look_from;         /* keyword, MPL: the camera line as written (MPL:
-                               fov in degrees, vertical) */
-    Vec3 look_at;
-    double fov;
     struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
                                triangles, cubes, squares), or NULL: every ray
                                then tests every object */
@@ -218,6 +190,42 @@ typedef struct Scene {
                                (load.h), its text and format */
 } Scene;
 
+/* The scene's shapes of each kind, as their own type. */
+static inline Sphere *scene_spheres(const Scene *scene)
+{
+    return (Sphere *)scene->shapes[SHAPE_SPHERE].items;
+}
+static inline Plane *scene_planes(const Scene *scene)
+{
+    return (Plane *)scene->shapes[SHAPE_PLANE].items;
+}
+static inline Triangle *scene_triangles(const Scene *scene)
+{
+    return (Triangle *)scene->shapes[SHAPE_TRIANGLE].items;
+}
+static inline Cube *scene_cubes(const Scene *scene)
+{
+    return (Cube *)scene->shapes[SHAPE_CUBE].items;
+}
+static inline Square *scene_squares(const Scene *scene)
+{
+    return (Square *)scene->shapes[SHAPE_SQUARE].items;
+}
+static inline Cylinder *scene_cylinders(const Scene *scene)
+{
+    return (Cylinder *)scene->shapes[SHAPE_CYLINDER].items;
+}
+static inline Cone *scene_cones(const Scene *scene)
+{
+    return (Cone *)scene->shapes[SHAPE_CONE].items;
+}
+
+/* Returns how many shapes of kind the scene holds. */
+static inline size_t scene_count_of(const Scene *scene, ShapeKind kind)
+{
+    return scene->shapes[kind].count;
+}
+
 /* What scene_add_*() and scene_build_accel() return when the memory limit
  * would be passed (-1 is for memory running out). */
 #define SCENE_OVER_LIMIT (-2)
@@ -237,12 +245,11 @@ void scene_free(Scene *scene);
  * pass the memory limit, the scene unchanged. */
 int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m);
-int scene_add_plane(Scene *scene, const Plane *p);
 int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
-int scene_add_cube(Scene *scene, const Cube *c);
-int scene_add_square(Scene *scene, const Square *s);
-int scene_add_cylinder(Scene *scene, const Cylinder *c);
-int scene_add_cone(Scene *scene, const Cone *c);
+
+/* Appends a copy of *shape, a shape of kind that holds its material (a
+ * Plane, Cube, Square, Cylinder or Cone), as scene_add_*() do. */
+int scene_add_shape(Scene *scene, ShapeKind kind, const void *shape);
 
 /* Appends n >= 1 spheres of plain materials (sphere_plain()) at once, as n
  * calls of scene_add_sphere() would (the same room; their positions among
@@ -264,9 +271,6 @@ static inline Material *scene_material_of(const Scene *scene, const Triangle *tr
 {
     return &scene->materials[tri->material];
 }
-
-/* Returns how many shapes of kind the scene holds. */
-size_t scene_count_of(const Scene *scene, ShapeKind kind);
 
 /* Returns the position among the scene's objects of shape index of kind. */
 unsigned scene_order_of(const Scene *scene, ShapeKind kind, size_t index);
@@ -295,7 +299,7 @@ static inline Material scene_material(const Scene *scene, ShapeKind kind, size_t
 
     if (kind != SHAPE_SPHERE)
         return *scene_shape_material(scene, kind, index);
-    s = &scene->spheres[index];
+    s = &scene_spheres(scene)[index];
     return s->material < 0 ? sphere_material(s) : scene->materials[s->material];
 }
 
@@ -339,10 +343,6 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
  * failure); returns its
  * index, or -1 when memory runs out. */
 int scene_add_named(Scene *scene, NamedMaterial *m);
-
-/* Appends *mesh, taking ownership of its strings (freed on failure);
- * returns 0, or -1 when memory runs out. */
-int scene_add_mesh_record(Scene *scene, SceneMesh *mesh);
 
 enum { SCENE_WARNINGS_MAX = 100 }; /* warnings kept; the rest are counted */
 

@@ -14,13 +14,15 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative texture and mesh paths, into *scene, which this call
  * initialises with memory_limit (scene.h), ready to render (a tiny scene is
- * enlarged exactly by scene_fit_scale()); returns 0, or -1 with *err filled
- * and *scene empty. load.h reads files, in either format. */
+ * enlarged exactly by scene_fit_scale()), and its mesh lines into *source,
+ * which it initialises too; returns 0, or -1 with *err filled and both
+ * empty. load.h reads files, in either format. */
 int course_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                      Scene *scene, Error *err);
+                      Scene *scene, SceneSource *source, Error *err);
 
 #endif

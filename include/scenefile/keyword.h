@@ -14,13 +14,14 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative mesh paths, into *scene, which this call initialises
- * with memory_limit (scene.h); returns 0, or -1 with *err filled and *scene
+ * with memory_limit (scene.h), and what --save writes back into *source,
+ * which it initialises too; returns 0, or -1 with *err filled and both
  * empty. */
 int keyword_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                       Scene *scene,
-                       Error *err);
+                       Scene *scene, SceneSource *source, Error *err);
 
 #endif

@@ -20,6 +20,7 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
 /* Returns the format of the len bytes at text by the rule above, or
  * SCENE_AUTO when they hold no element (an empty scene, which
@@ -28,15 +29,17 @@ SceneFormat load_detect(const char *text, size_t len);
 
 /* Reads the scene file at path ("-": standard input) in the given format
  * (SCENE_AUTO: detected) into *scene, which this call initialises with
- * memory_limit (bytes, 0 for none: scene.h); strict: lines of seed 001's
- * format its program read leniently are errors, not warnings in the
- * scene's list (mpl.h). Returns 0, or -1 with *err filled and *scene
- * empty. */
+ * memory_limit (bytes, 0 for none: scene.h), and, unless source is NULL,
+ * what --save writes back into *source (source.h), initialised too;
+ * strict: lines of seed 001's format its program read leniently are
+ * errors, not warnings in the scene's list (mpl.h). Returns 0, or -1 with
+ * *err filled and both empty. */
 int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, int strict,
-                    Scene *scene, Error *err);
+                    Scene *scene, SceneSource *source, Error *err);
 
 /* Same as load_scene_file() for the len bytes at text, named `name`. */
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
-                    size_t memory_limit, int strict, Scene *scene, Error *err);
+                    size_t memory_limit, int strict, Scene *scene, SceneSource *source,
+                    Error *err);
 
 #endif

@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 #include "scenefile/lex.h"
 #include "scenefile/obj.h"
+#include "scenefile/source.h"
 
 /* mesh_load()'s status when the fault is already recorded in the lexer. */
 #define MESH_FAULT (-3)
@@ -24,11 +25,12 @@ long mesh_add(Scene *scene, const ObjMesh *m, const Material *mat);
 
 /* Reads the OBJ file that token t of rec names (relative to the scene
  * file: lex_path()), adds its triangles to scene with material mat
- * (mesh_add()) and keeps its line (SceneMesh: the path as written and as
+ * (mesh_add()) and keeps its line in *source (the path as written and as
  * opened, for --save and for the files the scene reads). Returns the
  * triangles added (> 0); 0 when none has an area (nothing kept);
  * MESH_FAULT with the fault recorded in L when the file cannot be read;
  * -1 when memory runs out or SCENE_OVER_LIMIT, for the caller to report. */
-long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat, Scene *scene);
+long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat, Scene *scene,
+               SceneSource *source);
 
 #endif

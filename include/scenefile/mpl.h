@@ -16,6 +16,7 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
 /* The defaults of a scene without a camera line: seed 001's camera and
  * image size, and of one without c Samples: its program's samples. */
@@ -25,14 +26,15 @@ enum { MPL_DEFAULT_SAMPLES = 4 }; /* samples per pixel */
 
 /* Reads the len bytes at text (NUL bytes included), named `name` in errors
  * and for relative texture paths, into *scene, which this call initialises
- * with memory_limit (scene.h); returns 0, or -1 with *err filled and
- * *scene empty. Lines seed 001's program read, though they break the
+ * with memory_limit (scene.h), and what --save writes back into *source,
+ * which it initialises too; returns 0, or -1 with *err filled and both
+ * empty. Lines seed 001's program read, though they break the
  * format, are read as it read them, each with a warning in the scene's
  * list (a number up to its first letter, words after a primitive's
  * material and numbers after a light's ignored, an unknown material read
  * as the first, a second material of a name ignored), unless strict:
  * then they are errors. */
 int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit, int strict,
-                   Scene *scene, Error *err);
+                   Scene *scene, SceneSource *source, Error *err);
 
 #endif

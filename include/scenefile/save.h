@@ -18,13 +18,15 @@
 
 #include "base/error.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
-/* Writes scene, read from the file named scene_name, to fp as the file
+/* Writes scene, read with source (its mesh and camera lines) from the file
+ * named scene_name, to fp as the file
  * named out_name ("-": standard output; mesh paths are written so that they
  * resolve from its directory), in its own format; returns 0, or -1 with
  * *err filled: a course scene, whose screen corners and shading rule
  * neither other format expresses, or a write error. */
-int save_scene(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
-               Error *err);
+int save_scene(FILE *fp, const Scene *scene, const SceneSource *source, const char *scene_name,
+               const char *out_name, Error *err);
 
 #endif

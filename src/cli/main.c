@@ -124,14 +124,14 @@ static void main_progress(void *ctx, int done, int total)
             frac > 0 ? elapsed * (1 - frac) / frac : 0.0);
 }
 
-/* Reads opts' scene into *scene, reporting any fault; returns 0, or 1 (the
- * exit status) with *scene empty. */
-static int main_load(const Options *opts, Scene *scene)
+/* Reads opts' scene into *scene and *source, reporting any fault; returns
+ * 0, or 1 (the exit status) with both empty. */
+static int main_load(const Options *opts, Scene *scene, SceneSource *source)
 {
     Error err;
 
     if (load_scene_file(opts->scene_path, (SceneFormat)opts->scene_format, opts->memory_limit,
-                        opts->strict, scene, &err) == 0) {
+                        opts->strict, scene, source, &err) == 0) {
         for (size_t i = 0; !opts->quiet && i < scene->warning_count; i++)
             main_report(&scene->warnings[i], "warning");
         if (!opts->quiet && scene->warnings_dropped > 0)
@@ -149,11 +149,11 @@ static int main_load(const Options *opts, Scene *scene)
     return 1;
 }
 
-/* Says, in *err, why path may not be written from opts' scene: it is the
- * scene file itself, or a file the scene reads (a texture, a mesh), under
- * any name or link; returns 0 when it may. */
-static int main_check_target(const Options *opts, const Scene *scene, const char *path,
-                             Error *err)
+/* Says, in *err, why path may not be written from opts' scene (read with
+ * source): it is the scene file itself, or a file the scene reads (a
+ * texture, a mesh), under any name or link; returns 0 when it may. */
+static int main_check_target(const Options *opts, const Scene *scene, const SceneSource *source,
+                             const char *path, Error *err)
 {
     if (strcmp(path, "-") == 0)
         return 0;
@@ -167,10 +167,10 @@ static int main_check_target(const Options *opts, const Scene *scene, const char
                       "overwrite it", scene->textures[i].path);
             return -1;
         }
-    for (size_t i = 0; i < scene->mesh_count; i++)
-        if (file_same(scene->meshes[i].opened, path)) {
+    for (size_t i = 0; i < source->mesh_count; i++)
+        if (file_same(source->meshes[i].opened, path)) {
             error_set(err, path, "the output is the scene's mesh '%s': refusing to overwrite it",
-                      scene->meshes[i].opened);
+                      source->meshes[i].opened);
             return -1;
         }
     return 0;
@@ -179,10 +179,12 @@ static int main_check_target(const Options *opts, const Scene *scene, const char
 /* Reads opts' scene, reports it and renders nothing; returns the exit status. */
 static int main_check(const Options *opts)
 {
+    SceneSource source;
     Scene scene;
 
-    if (main_load(opts, &scene) != 0)
+    if (main_load(opts, &scene, &source) != 0)
         return 1;
+    source_free(&source);
     if (!opts->quiet)
         printf("%s: OK: %d x %d pixels, %zu object%s, %zu light%s\n",
                strcmp(opts->scene_path, "-") == 0 ? "<stdin>" : opts->scene_path,
@@ -197,18 +199,19 @@ static int main_check(const Options *opts)
  * returns the exit status. */
 static int main_save(const Options *opts)
 {
+    SceneSource source;
     Scene scene;
     OutFile out;
     Error err;
     int rc;
 
-    if (main_load(opts, &scene) != 0)
+    if (main_load(opts, &scene, &source) != 0)
         return 1;
-    if (main_check_target(opts, &scene, opts->save_path, &err) != 0 ||
+    if (main_check_target(opts, &scene, &source, opts->save_path, &err) != 0 ||
         main_open_output(&out, opts->save_path, &err) != 0)
         goto fail;
-    rc = save_scene(out.fp, &scene, file_display_name(opts->scene_path), opts->save_path,
-                      &err);
+    rc = save_scene(out.fp, &scene, &source, file_display_name(opts->scene_path),
+                    opts->save_path, &err);
     if (rc != 0)
         outfile_abort(&out, &err);
     else
@@ -216,11 +219,13 @@ static int main_save(const Options *opts)
     interrupt_watch(NULL);
     if (rc != 0)
         goto fail;
+    source_free(&source);
     scene_free(&scene);
     return 0;
 
 fail:
     main_report(&err, "error");
+    source_free(&source);
     scene_free(&scene);
     return 1;
 }
@@ -332,8 +337,8 @@ static int main_tile(const Options *opts, const Scene *scene, const RenderOption
 /* Says, in *err, why the map `path` of option `option` may not be
  * written: it is the output itself or a file the scene reads, or cannot
  * be made; returns 0 when it may. */
-static int main_map_target(const Options *opts, const Scene *scene, const char *path,
-                           const char *option, Error *err)
+static int main_map_target(const Options *opts, const Scene *scene, const SceneSource *source,
+                           const char *path, const char *option, Error *err)
 {
     if (strcmp(path, "-") == 0 || strcmp(path, opts->output_path) == 0 ||
         (strcmp(opts->output_path, "-") != 0 && file_same(opts->output_path, path))) {
@@ -341,17 +346,19 @@ static int main_map_target(const Options *opts, const Scene *scene, const char *
                   option);
         return -1;
     }
-    return main_check_target(opts, scene, path, err) != 0 || outfile_check(path, err) != 0 ? -1
-                                                                                           : 0;
+    return main_check_target(opts, scene, source, path, err) != 0 ||
+                   outfile_check(path, err) != 0
+               ? -1
+               : 0;
 }
 
 /* Says, in *err, why the maps opts asks for may not be written (the
  * render's choices in ropts); returns 0 when they may. */
-static int main_maps_target(const Options *opts, const Scene *scene,
+static int main_maps_target(const Options *opts, const Scene *scene, const SceneSource *source,
                             const RenderOptions *ropts, Error *err)
 {
     if (ropts->noise.level > 0 && opts->spp_map &&
-        main_map_target(opts, scene, opts->spp_map, "--spp-map", err) != 0)
+        main_map_target(opts, scene, source, opts->spp_map, "--spp-map", err) != 0)
         return -1;
     if (!ropts->indirect.gi_cache || !opts->gi_cache_map)
         return 0;
@@ -360,7 +367,7 @@ static int main_maps_target(const Options *opts, const Scene *scene,
                   "--gi-cache-map draws the whole picture: render it without --tile");
         return -1;
     }
-    return main_map_target(opts, scene, opts->gi_cache_map, "--gi-cache-map", err);
+    return main_map_target(opts, scene, source, opts->gi_cache_map, "--gi-cache-map", err);
 }
 
 /* Places the irradiance cache's records of scene under ropts into *cache
@@ -505,13 +512,14 @@ static int main_render(const Options *opts)
     char record[TILE_RECORD_MAX];
     int rows;
     double start = process_seconds(), read_time, accel_time, render_time, write_time;
+    SceneSource source;
     Scene scene;
     Image img;
     Error err;
-    int threads;
+    int threads, rc;
 
     gicache_init(&cache, 0, 1, 0);
-    if (main_load(opts, &scene) != 0)
+    if (main_load(opts, &scene, &source) != 0)
         return 1;
     read_time = process_seconds() - start;
     adjust_render(opts, &scene, &ropts);
@@ -520,9 +528,12 @@ static int main_render(const Options *opts)
         goto fail_scene;
     }
     /* An output that cannot be made is said before a long render. */
-    if (main_check_target(opts, &scene, opts->output_path, &err) != 0 ||
-        outfile_check(opts->output_path, &err) != 0 ||
-        main_maps_target(opts, &scene, &ropts, &err) != 0 || main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene, &err) != 0)
+    rc = main_check_target(opts, &scene, &source, opts->output_path, &err) != 0 ||
+         outfile_check(opts->output_path, &err) != 0 ||
+         main_maps_target(opts, &scene, &source, &ropts, &err) != 0;
+    source_free(&source); /* the render needs only the scene */
+    if (rc != 0 || main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene,
+                                &err) != 0)
         goto fail_scene;
     accel_time = process_seconds() - start - read_time;
     rows = scene.camera.height;

@@ -42,11 +42,11 @@ static int seed001_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *h
 {
     int found;
 
-    if (scene->cylinder_count == 0)
+    if (scene_count_of(scene, SHAPE_CYLINDER) == 0)
         return visibility_nearest(scene, ray, tmax, hit);
     found = visibility_nearest_among(scene, ray, tmax, ~(1u << SHAPE_CYLINDER), hit);
-    for (size_t k = 0; k < scene->cylinder_count; k++) {
-        const Cylinder *c = &scene->cylinders[k];
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_CYLINDER); k++) {
+        const Cylinder *c = &scene_cylinders(scene)[k];
         real t = seed001_cylinder_t(c, ray);
         if (t > 0 && t < tmax && (!found || t < hit->t || (t == hit->t && c->order < hit->order))) {
             hit->t = t;
@@ -74,7 +74,7 @@ static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit, c
 
     if (hit->kind != SHAPE_CYLINDER)
         return shade_at_footprint(scene, ray, hit, diff, fp);
-    c = &scene->cylinders[hit->index];
+    c = &scene_cylinders(scene)[hit->index];
     sh.material = c->material;
     sh.ambient = 1;
     sh.footprint = NULL;

@@ -44,17 +44,17 @@ static void shade_surface_near(const Scene *scene, const Hit *hit, const Surface
     sp->point = p;
     switch (hit->kind) {
     case SHAPE_SPHERE:
-        *sp = sphere_surface_at(&scene->spheres[hit->index], p);
+        *sp = sphere_surface_at(&scene_spheres(scene)[hit->index], p);
         if (want_uv)
             sphere_uv(sp->normal, uv);
         break;
     case SHAPE_PLANE:
         if (want_uv)
-            plane_uv(&scene->planes[hit->index], p, uv);
+            plane_uv(&scene_planes(scene)[hit->index], p, uv);
         break;
     case SHAPE_TRIANGLE: {
         /* The barycentric weights of p, seen along the normal. */
-        const Triangle *tri = &scene->triangles[hit->index];
+        const Triangle *tri = &scene_triangles(scene)[hit->index];
         Ray down = {vec3_add(p, sp0->normal), vec3_neg(sp0->normal)};
         double uv_[2];
         *sp = triangle_surface_at(tri, scene_shading_of(scene, tri), &down, want_uv ? uv : uv_);
@@ -63,21 +63,21 @@ static void shade_surface_near(const Scene *scene, const Hit *hit, const Surface
     }
     case SHAPE_CUBE: /* flat faces: the normal stays */
         if (want_uv)
-            cube_uv(&scene->cubes[hit->index], p, sp->normal, uv);
+            cube_uv(&scene_cubes(scene)[hit->index], p, sp->normal, uv);
         break;
     case SHAPE_SQUARE:
         if (want_uv)
-            square_uv(&scene->squares[hit->index], p, uv);
+            square_uv(&scene_squares(scene)[hit->index], p, uv);
         break;
     case SHAPE_CYLINDER:
-        *sp = cylinder_surface_at(&scene->cylinders[hit->index], p);
+        *sp = cylinder_surface_at(&scene_cylinders(scene)[hit->index], p);
         if (want_uv)
-            cylinder_uv(&scene->cylinders[hit->index], p, sp->normal, uv);
+            cylinder_uv(&scene_cylinders(scene)[hit->index], p, sp->normal, uv);
         break;
     default:
-        *sp = cone_surface_at(&scene->cones[hit->index], p);
+        *sp = cone_surface_at(&scene_cones(scene)[hit->index], p);
         if (want_uv)
-            cone_uv(&scene->cones[hit->index], p, uv);
+            cone_uv(&scene_cones(scene)[hit->index], p, uv);
         break;
     }
 }
@@ -150,7 +150,7 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     want_uv = mapped && !seed;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
-        const Sphere *s = &scene->spheres[hit->index];
+        const Sphere *s = &scene_spheres(scene)[hit->index];
         sh.sp = sphere_surface_at(s, ray_at(ray, hit->t));
         if (want_uv)
             sphere_uv(sh.sp.normal, uv);
@@ -158,40 +158,40 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
         break;
     }
     case SHAPE_PLANE: {
-        const Plane *pl = &scene->planes[hit->index];
+        const Plane *pl = &scene_planes(scene)[hit->index];
         sh.sp = plane_surface_at(pl, ray_at(ray, hit->t));
         if (want_uv)
             plane_uv(pl, sh.sp.point, uv);
         break;
     }
     case SHAPE_TRIANGLE: {
-        const Triangle *tri = &scene->triangles[hit->index];
+        const Triangle *tri = &scene_triangles(scene)[hit->index];
         sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
         break;
     }
     case SHAPE_CUBE: {
-        const Cube *c = &scene->cubes[hit->index];
+        const Cube *c = &scene_cubes(scene)[hit->index];
         sh.sp = cube_surface_at(c, ray, hit->t);
         if (want_uv)
             cube_uv(c, sh.sp.point, sh.sp.normal, uv);
         break;
     }
     case SHAPE_SQUARE: {
-        const Square *q = &scene->squares[hit->index];
+        const Square *q = &scene_squares(scene)[hit->index];
         sh.sp = square_surface_at(q, ray_at(ray, hit->t));
         if (want_uv)
             square_uv(q, sh.sp.point, uv);
         break;
     }
     case SHAPE_CYLINDER: {
-        const Cylinder *c = &scene->cylinders[hit->index];
+        const Cylinder *c = &scene_cylinders(scene)[hit->index];
         sh.sp = cylinder_surface_at(c, ray_at(ray, hit->t));
         if (want_uv)
             cylinder_uv(c, sh.sp.point, sh.sp.normal, uv);
         break;
     }
     default: {
-        const Cone *c = &scene->cones[hit->index];
+        const Cone *c = &scene_cones(scene)[hit->index];
         sh.sp = cone_surface_at(c, ray_at(ray, hit->t));
         if (want_uv)
             cone_uv(c, sh.sp.point, uv);

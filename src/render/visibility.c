@@ -18,19 +18,19 @@ static int visibility_hit(const Scene *scene, ShapeKind kind, size_t k, const Ra
 {
     switch (kind) {
     case SHAPE_SPHERE:
-        return sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, t);
+        return sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0, tmax, t);
     case SHAPE_PLANE:
-        return plane_intersect(&scene->planes[k], ray, 0, tmax, t);
+        return plane_intersect(&scene_planes(scene)[k], ray, 0, tmax, t);
     case SHAPE_TRIANGLE:
-        return triangle_intersect(&scene->triangles[k], ray, 0, tmax, t);
+        return triangle_intersect(&scene_triangles(scene)[k], ray, 0, tmax, t);
     case SHAPE_CUBE:
-        return cube_intersect(&scene->cubes[k], ray, 0, tmax, t);
+        return cube_intersect(&scene_cubes(scene)[k], ray, 0, tmax, t);
     case SHAPE_SQUARE:
-        return square_intersect(&scene->squares[k], ray, 0, tmax, t);
+        return square_intersect(&scene_squares(scene)[k], ray, 0, tmax, t);
     case SHAPE_CYLINDER:
-        return cylinder_intersect(&scene->cylinders[k], ray, 0, tmax, t);
+        return cylinder_intersect(&scene_cylinders(scene)[k], ray, 0, tmax, t);
     default:
-        return cone_intersect(&scene->cones[k], ray, 0, tmax, t);
+        return cone_intersect(&scene_cones(scene)[k], ray, 0, tmax, t);
     }
 }
 
@@ -42,13 +42,13 @@ static int visibility_crossings(const Scene *scene, ShapeKind kind, size_t k, co
 
     switch (kind) {
     case SHAPE_SPHERE:
-        return sphere_crossings(&scene->spheres[k], ray, 0, tmax);
+        return sphere_crossings(&scene_spheres(scene)[k], ray, 0, tmax);
     case SHAPE_CUBE:
-        return cube_crossings(&scene->cubes[k], ray, 0, tmax);
+        return cube_crossings(&scene_cubes(scene)[k], ray, 0, tmax);
     case SHAPE_CYLINDER:
-        return cylinder_crossings(&scene->cylinders[k], ray, 0, tmax);
+        return cylinder_crossings(&scene_cylinders(scene)[k], ray, 0, tmax);
     case SHAPE_CONE:
-        return cone_crossings(&scene->cones[k], ray, 0, tmax);
+        return cone_crossings(&scene_cones(scene)[k], ray, 0, tmax);
     default: /* flat: once or never */
         return visibility_hit(scene, kind, k, ray, tmax, &t);
     }
@@ -139,7 +139,7 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
         int rc = light_buffer_nearest(scene->eye_buffer, ray, tmax, &t, &k);
         if (rc >= 0) {
             if (rc)
-                visibility_set_hit(hit, t, SHAPE_SPHERE, k, scene->spheres[k].order);
+                visibility_set_hit(hit, t, SHAPE_SPHERE, k, scene_spheres(scene)[k].order);
             return rc;
         }
     }
@@ -154,9 +154,9 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
 
     if (scene->accel)
         return visibility_nearest_accel(scene, ray, tmax, mask, hit);
-    for (size_t k = 0; k < scene->sphere_count; k++) {
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
         real t;
-        const Sphere *s = &scene->spheres[k];
+        const Sphere *s = &scene_spheres(scene)[k];
         /* The interval is open at tmax, so an exact tie keeps the earlier
          * sphere. sphere_hit() is inline: this loop is the course scene's
          * hottest. */
@@ -167,7 +167,7 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
         }
     }
     if (found)
-        visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene->spheres[best].order);
+        visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene_spheres(scene)[best].order);
     for (unsigned m = scene->kinds & mask & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
         found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
@@ -204,9 +204,9 @@ int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, ui
         return bvh_occluder(scene->accel, ray, tmax, cache);
     /* Spheres first, inline: the course scene's shadow rays meet nothing
      * else. */
-    for (size_t k = 0; k < scene->sphere_count; k++) {
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
         real t;
-        if (sphere_hit(scene->spheres[k].centre, scene->spheres[k].radius, ray, 0, tmax, &t))
+        if (sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0, tmax, &t))
             return 1;
     }
     for (unsigned m = scene->kinds & VISIBILITY_BOUNDED & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
@@ -348,8 +348,8 @@ double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)
     }
     /* Kind by kind, in ShapeKind's order (the lowest bit first), spheres
      * inline. */
-    for (size_t k = 0; k < scene->sphere_count; k++) {
-        const Sphere *s = &scene->spheres[k];
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
+        const Sphere *s = &scene_spheres(scene)[k];
         if (!visibility_attenuate(&share, scene_material(scene, SHAPE_SPHERE, k).transparency,
                                   sphere_crossings(s, ray, 0, tmax)))
             return 0;

@@ -59,18 +59,18 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
     switch (kind) {
     case SHAPE_SPHERE: {
         Vec3 n = sp->normal;
-        double r = ldexp(scene->spheres[index].radius, k);
+        double r = ldexp(scene_spheres(scene)[index].radius, k);
         /* Its program: the height above the centre, not divided by the
          * radius (beyond 1, where its arcsine has no value, the top or
          * bottom row). */
-        double y = program ? p.y - ldexp(scene->spheres[index].centre.y, k) : n.y;
+        double y = program ? p.y - ldexp(scene_spheres(scene)[index].centre.y, k) : n.y;
         uv[0] = 0.5 - angle_atan2(n.z, n.x) / (2 * ANGLE_PI);
         uv[1] = 1 - angle_acos(y < -1 ? -1 : y > 1 ? 1 : y) / ANGLE_PI;
         scale = r < 1 ? 30 * r : 10 * r;
         break;
     }
     case SHAPE_CUBE: {
-        const Cube *c = &scene->cubes[index];
+        const Cube *c = &scene_cubes(scene)[index];
         Vec3 q = vec3_scale(vec3_sub(sp->point, c->centre), 1 / c->half);
         if (sp->normal.x != 0) {
             uv[0] = (q.z + 1) / 2;
@@ -85,19 +85,19 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
         break;
     }
     case SHAPE_CYLINDER: {
-        Vec3 q = vec3_sub(p, vec3_ldexp(scene->cylinders[index].centre, k));
+        Vec3 q = vec3_sub(p, vec3_ldexp(scene_cylinders(scene)[index].centre, k));
         uv[0] = mapping_around(q);
         uv[1] = mapping_frac(q.y);
         break;
     }
     case SHAPE_CONE: {
-        Vec3 q = vec3_sub(p, vec3_ldexp(scene->cones[index].base, k));
+        Vec3 q = vec3_sub(p, vec3_ldexp(scene_cones(scene)[index].base, k));
         uv[0] = mapping_around(q);
         uv[1] = mapping_frac(q.y);
         break;
     }
     case SHAPE_SQUARE: {
-        const Square *s = &scene->squares[index];
+        const Square *s = &scene_squares(scene)[index];
         Vec3 q = vec3_sub(p, vec3_ldexp(s->centre, k));
         /* A floor's own height, not its hit points' rounded ones. */
         if (program && mapping_floor(s->normal))
@@ -107,7 +107,7 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
         break;
     }
     case SHAPE_PLANE: {
-        const Plane *pl = &scene->planes[index];
+        const Plane *pl = &scene_planes(scene)[index];
         if (program && mapping_floor(pl->normal))
             p.y = ldexp(pl->point.y, k);
         mapping_flat(program ? vec3(0, 0, 1) : pl->normal, p, uv);
@@ -115,7 +115,7 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
         break;
     }
     default: /* SHAPE_TRIANGLE */
-        mapping_flat(scene->triangles[index].normal, p, uv);
+        mapping_flat(scene_triangles(scene)[index].normal, p, uv);
         scale = 1;
         break;
     }
@@ -123,6 +123,6 @@ int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const Surf
     /* Its program read a floor's one row of the image (the height's
      * fraction, v = 0 at a whole height), not the seam between two rows. */
     return program && (kind == SHAPE_PLANE || kind == SHAPE_SQUARE) &&
-           mapping_floor(kind == SHAPE_PLANE ? scene->planes[index].normal
-                                             : scene->squares[index].normal);
+           mapping_floor(kind == SHAPE_PLANE ? scene_planes(scene)[index].normal
+                                             : scene_squares(scene)[index].normal);
 }

@@ -28,21 +28,21 @@ static double scene_max_length(const Scene *scene)
     for (size_t i = 0; i < scene->light_count; i++)
         if (!scene->lights[i].distant) /* a direction, not a place */
             m = fmax(m, vec3_max_abs(scene->lights[i].position));
-    for (size_t i = 0; i < scene->sphere_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->spheres[i].centre), scene->spheres[i].radius));
-    for (size_t i = 0; i < scene->plane_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->planes[i].point),
-                        scene->planes[i].material.texture >= 0 ? scene->planes[i].tile : 0));
-    for (size_t i = 0; i < scene->triangle_count; i++)
-        m = fmax(m, scene_points_max(scene->triangles[i].v, 3));
-    for (size_t i = 0; i < scene->cube_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->cubes[i].centre), scene->cubes[i].half));
-    for (size_t i = 0; i < scene->square_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->squares[i].centre), scene->squares[i].half));
-    for (size_t i = 0; i < scene->cylinder_count; i++)
-        m = fmax(m, fmax(vec3_max_abs(scene->cylinders[i].centre), scene->cylinders[i].radius));
-    for (size_t i = 0; i < scene->cone_count; i++) {
-        const Cone *c = &scene->cones[i];
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++)
+        m = fmax(m, fmax(vec3_max_abs(scene_spheres(scene)[i].centre), scene_spheres(scene)[i].radius));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++)
+        m = fmax(m, fmax(vec3_max_abs(scene_planes(scene)[i].point),
+                        scene_planes(scene)[i].material.texture >= 0 ? scene_planes(scene)[i].tile : 0));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_TRIANGLE); i++)
+        m = fmax(m, scene_points_max(scene_triangles(scene)[i].v, 3));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++)
+        m = fmax(m, fmax(vec3_max_abs(scene_cubes(scene)[i].centre), scene_cubes(scene)[i].half));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++)
+        m = fmax(m, fmax(vec3_max_abs(scene_squares(scene)[i].centre), scene_squares(scene)[i].half));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++)
+        m = fmax(m, fmax(vec3_max_abs(scene_cylinders(scene)[i].centre), scene_cylinders(scene)[i].radius));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++) {
+        const Cone *c = &scene_cones(scene)[i];
         m = fmax(m, fmax(fmax(vec3_max_abs(c->base), vec3_max_abs(c->apex)),
                          fmax(c->radius, fabs(c->height))));
     }
@@ -76,36 +76,36 @@ void scene_fit_scale(Scene *scene)
             l->range = ldexp(l->range, k);
         }
     }
-    for (size_t i = 0; i < scene->sphere_count; i++) {
-        scene->spheres[i].centre = vec3_ldexp(scene->spheres[i].centre, k);
-        scene->spheres[i].radius = ldexp(scene->spheres[i].radius, k);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++) {
+        scene_spheres(scene)[i].centre = vec3_ldexp(scene_spheres(scene)[i].centre, k);
+        scene_spheres(scene)[i].radius = ldexp(scene_spheres(scene)[i].radius, k);
     }
-    for (size_t i = 0; i < scene->plane_count; i++) {
-        scene->planes[i].point = vec3_ldexp(scene->planes[i].point, k);
-        scene->planes[i].tile = ldexp(scene->planes[i].tile, k);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++) {
+        scene_planes(scene)[i].point = vec3_ldexp(scene_planes(scene)[i].point, k);
+        scene_planes(scene)[i].tile = ldexp(scene_planes(scene)[i].tile, k);
     }
-    for (size_t i = 0; i < scene->triangle_count; i++)
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_TRIANGLE); i++)
         for (int j = 0; j < 3; j++)
-            scene->triangles[i].v[j] = vec3_ldexp(scene->triangles[i].v[j], k);
+            scene_triangles(scene)[i].v[j] = vec3_ldexp(scene_triangles(scene)[i].v[j], k);
     /* Corners, apexes and the rest scale exactly with what they were made
      * from; angles and unit vectors do not change. */
-    for (size_t i = 0; i < scene->cube_count; i++) {
-        Cube *c = &scene->cubes[i];
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++) {
+        Cube *c = &scene_cubes(scene)[i];
         c->centre = vec3_ldexp(c->centre, k);
         c->lo = vec3_ldexp(c->lo, k);
         c->hi = vec3_ldexp(c->hi, k);
         c->half = ldexp(c->half, k);
     }
-    for (size_t i = 0; i < scene->square_count; i++) {
-        scene->squares[i].centre = vec3_ldexp(scene->squares[i].centre, k);
-        scene->squares[i].half = ldexp(scene->squares[i].half, k);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++) {
+        scene_squares(scene)[i].centre = vec3_ldexp(scene_squares(scene)[i].centre, k);
+        scene_squares(scene)[i].half = ldexp(scene_squares(scene)[i].half, k);
     }
-    for (size_t i = 0; i < scene->cylinder_count; i++) {
-        scene->cylinders[i].centre = vec3_ldexp(scene->cylinders[i].centre, k);
-        scene->cylinders[i].radius = ldexp(scene->cylinders[i].radius, k);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++) {
+        scene_cylinders(scene)[i].centre = vec3_ldexp(scene_cylinders(scene)[i].centre, k);
+        scene_cylinders(scene)[i].radius = ldexp(scene_cylinders(scene)[i].radius, k);
     }
-    for (size_t i = 0; i < scene->cone_count; i++) {
-        Cone *c = &scene->cones[i];
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++) {
+        Cone *c = &scene_cones(scene)[i];
         c->base = vec3_ldexp(c->base, k);
         c->apex = vec3_ldexp(c->apex, k);
         c->radius = ldexp(c->radius, k);

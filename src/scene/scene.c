@@ -12,16 +12,38 @@
 #include "base/grow.h"
 #include "base/hash.h"
 
+/* What the storage needs to know of each kind's type: its size, where its
+ * position among the objects is, and where its material is (-1: not in
+ * the shape; spheres and triangles keep an index). */
+static const struct {
+    size_t size;
+    size_t order;
+    long material;
+} scene_kinds[SHAPE_KINDS] = {
+    [SHAPE_SPHERE] = {sizeof(Sphere), offsetof(Sphere, order), -1},
+    [SHAPE_PLANE] = {sizeof(Plane), offsetof(Plane, order), (long)offsetof(Plane, material)},
+    [SHAPE_TRIANGLE] = {sizeof(Triangle), offsetof(Triangle, order), -1},
+    [SHAPE_CUBE] = {sizeof(Cube), offsetof(Cube, order), (long)offsetof(Cube, material)},
+    [SHAPE_SQUARE] = {sizeof(Square), offsetof(Square, order), (long)offsetof(Square, material)},
+    [SHAPE_CYLINDER] = {sizeof(Cylinder), offsetof(Cylinder, order),
+                        (long)offsetof(Cylinder, material)},
+    [SHAPE_CONE] = {sizeof(Cone), offsetof(Cone, order), (long)offsetof(Cone, material)},
+};
+
+/* Returns where shape k of kind is held. */
+static char *scene_item(const Scene *scene, ShapeKind kind, size_t k)
+{
+    return (char *)scene->shapes[kind].items + k * scene_kinds[kind].size;
+}
+
 void scene_init(Scene *scene)
 {
     memset(scene, 0, sizeof *scene);
     scene->lights = NULL;
-    scene->spheres = NULL;
-    scene->planes = NULL;
-    scene->triangles = NULL;
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        scene->shapes[k].items = NULL;
     scene->textures = NULL;
     scene->named = NULL;
-    scene->meshes = NULL;
     scene->warnings = NULL;
     scene->accel = NULL;
     scene->ao_samples = scene->gi_samples = -1;
@@ -56,20 +78,10 @@ void scene_free(Scene *scene)
         free(scene->named[i].texture);
     }
     free(scene->named);
-    for (size_t i = 0; i < scene->mesh_count; i++) {
-        free(scene->meshes[i].path);
-        free(scene->meshes[i].opened);
-    }
-    free(scene->meshes);
     free(scene->warnings);
     free(scene->lights);
-    free(scene->spheres);
-    free(scene->planes);
-    free(scene->triangles);
-    free(scene->cubes);
-    free(scene->squares);
-    free(scene->cylinders);
-    free(scene->cones);
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        free(scene->shapes[k].items);
     free(scene->materials);
     free(scene->shading);
     scene_init(scene);
@@ -86,18 +98,12 @@ size_t scene_memory(const Scene *scene)
     size_t m = 0;
 
     scene_sum(&m, scene->light_capacity * sizeof *scene->lights);
-    scene_sum(&m, scene->sphere_capacity * sizeof *scene->spheres);
-    scene_sum(&m, scene->plane_capacity * sizeof *scene->planes);
-    scene_sum(&m, scene->triangle_capacity * sizeof *scene->triangles);
-    scene_sum(&m, scene->cube_capacity * sizeof *scene->cubes);
-    scene_sum(&m, scene->square_capacity * sizeof *scene->squares);
-    scene_sum(&m, scene->cylinder_capacity * sizeof *scene->cylinders);
-    scene_sum(&m, scene->cone_capacity * sizeof *scene->cones);
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        scene_sum(&m, scene->shapes[k].capacity * scene_kinds[k].size);
     scene_sum(&m, scene->material_capacity * sizeof *scene->materials);
     scene_sum(&m, scene->shading_capacity * sizeof *scene->shading);
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
     scene_sum(&m, scene->named_capacity * sizeof *scene->named);
-    scene_sum(&m, scene->mesh_capacity * sizeof *scene->meshes);
     scene_sum(&m, scene->warnings ? SCENE_WARNINGS_MAX * sizeof *scene->warnings : 0);
     for (size_t i = 0; i < scene->texture_count; i++)
         scene_sum(&m, texture_memory(&scene->textures[i]));
@@ -151,44 +157,12 @@ static int scene_reserve(const Scene *scene, void **items, size_t *capacity, siz
     return grow_reserve(items, capacity, count, size);
 }
 
-size_t scene_count_of(const Scene *scene, ShapeKind kind)
-{
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return scene->sphere_count;
-    case SHAPE_PLANE:
-        return scene->plane_count;
-    case SHAPE_TRIANGLE:
-        return scene->triangle_count;
-    case SHAPE_CUBE:
-        return scene->cube_count;
-    case SHAPE_SQUARE:
-        return scene->square_count;
-    case SHAPE_CYLINDER:
-        return scene->cylinder_count;
-    default:
-        return scene->cone_count;
-    }
-}
-
 unsigned scene_order_of(const Scene *scene, ShapeKind kind, size_t k)
 {
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return scene->spheres[k].order;
-    case SHAPE_PLANE:
-        return scene->planes[k].order;
-    case SHAPE_TRIANGLE:
-        return scene->triangles[k].order;
-    case SHAPE_CUBE:
-        return scene->cubes[k].order;
-    case SHAPE_SQUARE:
-        return scene->squares[k].order;
-    case SHAPE_CYLINDER:
-        return scene->cylinders[k].order;
-    default:
-        return scene->cones[k].order;
-    }
+    unsigned order;
+
+    memcpy(&order, scene_item(scene, kind, k) + scene_kinds[kind].order, sizeof order);
+    return order;
 }
 
 void scene_walk_start(SceneWalk *w)
@@ -219,20 +193,9 @@ int scene_walk_next(const Scene *scene, SceneWalk *w, ShapeKind *kind, size_t *i
 
 Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
 {
-    switch (kind) {
-    case SHAPE_PLANE:
-        return &scene->planes[k].material;
-    case SHAPE_TRIANGLE:
-        return scene_material_of(scene, &scene->triangles[k]);
-    case SHAPE_CUBE:
-        return &scene->cubes[k].material;
-    case SHAPE_SQUARE:
-        return &scene->squares[k].material;
-    case SHAPE_CYLINDER:
-        return &scene->cylinders[k].material;
-    default:
-        return &scene->cones[k].material;
-    }
+    if (kind == SHAPE_TRIANGLE)
+        return scene_material_of(scene, &scene_triangles(scene)[k]);
+    return (Material *)(void *)(scene_item(scene, kind, k) + scene_kinds[kind].material);
 }
 
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
@@ -244,7 +207,7 @@ Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
     if (kind != SHAPE_SPHERE)
         return scene_shape_material(scene, kind, k);
     /* A copy of its own: spheres in a row may share one (scene_add_sphere()). */
-    s = &scene->spheres[k];
+    s = &scene_spheres(scene)[k];
     m = s->material < 0 ? sphere_material(s) : scene->materials[s->material];
     if ((at = scene_add_material(scene, &m)) < 0) {
         *rc = (int)at;
@@ -270,24 +233,24 @@ double scene_size(const Scene *scene)
     Vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3(-INFINITY, -INFINITY, -INFINITY);
     const Camera *cam = &scene->camera;
 
-    for (size_t i = 0; i < scene->sphere_count; i++)
-        scene_widen(&lo, &hi, scene->spheres[i].centre, scene->spheres[i].radius);
-    for (size_t i = 0; i < scene->triangle_count; i++)
+    for (size_t i = 0; i < scene->shapes[SHAPE_SPHERE].count; i++)
+        scene_widen(&lo, &hi, scene_spheres(scene)[i].centre, scene_spheres(scene)[i].radius);
+    for (size_t i = 0; i < scene->shapes[SHAPE_TRIANGLE].count; i++)
         for (int k = 0; k < 3; k++)
-            scene_widen(&lo, &hi, scene->triangles[i].v[k], 0);
-    for (size_t i = 0; i < scene->cube_count; i++) {
-        scene_widen(&lo, &hi, scene->cubes[i].lo, 0);
-        scene_widen(&lo, &hi, scene->cubes[i].hi, 0);
+            scene_widen(&lo, &hi, scene_triangles(scene)[i].v[k], 0);
+    for (size_t i = 0; i < scene->shapes[SHAPE_CUBE].count; i++) {
+        scene_widen(&lo, &hi, scene_cubes(scene)[i].lo, 0);
+        scene_widen(&lo, &hi, scene_cubes(scene)[i].hi, 0);
     }
-    for (size_t i = 0; i < scene->square_count; i++)
-        scene_widen(&lo, &hi, scene->squares[i].centre, scene->squares[i].half * (real)1.5);
-    for (size_t i = 0; i < scene->plane_count; i++)
-        scene_widen(&lo, &hi, scene->planes[i].point, 0);
-    for (size_t i = 0; i < scene->cylinder_count; i++)
-        scene_widen(&lo, &hi, scene->cylinders[i].centre, scene->cylinders[i].radius);
-    for (size_t i = 0; i < scene->cone_count; i++) {
-        scene_widen(&lo, &hi, scene->cones[i].base, scene->cones[i].radius);
-        scene_widen(&lo, &hi, scene->cones[i].apex, 0);
+    for (size_t i = 0; i < scene->shapes[SHAPE_SQUARE].count; i++)
+        scene_widen(&lo, &hi, scene_squares(scene)[i].centre, scene_squares(scene)[i].half * (real)1.5);
+    for (size_t i = 0; i < scene->shapes[SHAPE_PLANE].count; i++)
+        scene_widen(&lo, &hi, scene_planes(scene)[i].point, 0);
+    for (size_t i = 0; i < scene->shapes[SHAPE_CYLINDER].count; i++)
+        scene_widen(&lo, &hi, scene_cylinders(scene)[i].centre, scene_cylinders(scene)[i].radius);
+    for (size_t i = 0; i < scene->shapes[SHAPE_CONE].count; i++) {
+        scene_widen(&lo, &hi, scene_cones(scene)[i].base, scene_cones(scene)[i].radius);
+        scene_widen(&lo, &hi, scene_cones(scene)[i].apex, 0);
     }
     if (!(lo.x < hi.x || lo.y < hi.y || lo.z < hi.z)) {
         scene_widen(&lo, &hi, cam->eye, 0);
@@ -299,8 +262,11 @@ double scene_size(const Scene *scene)
 
 size_t scene_object_count(const Scene *scene)
 {
-    return scene->sphere_count + scene->plane_count + scene->triangle_count + scene->cube_count +
-           scene->square_count + scene->cylinder_count + scene->cone_count;
+    size_t n = 0;
+
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        n += scene->shapes[k].count;
+    return n;
 }
 
 int scene_add_light(Scene *scene, const Light *light)
@@ -314,24 +280,23 @@ int scene_add_light(Scene *scene, const Light *light)
     return 0;
 }
 
-/* Appends the size bytes at item to the array *items of *count items (room
- * for *capacity), giving it its position among the objects (the unsigned
- * at byte `order` of it) and noting its material m's transparency;
- * returns 0 or what scene_reserve() returned. */
-static int scene_push_shape(Scene *scene, ShapeKind kind, void **items, size_t *capacity,
-                            size_t *count, const void *item, size_t size, size_t order,
-                            const Material *m)
+/* Appends a copy of *item to the shapes of kind, giving it its position
+ * among the objects and noting its material m's transparency; returns 0
+ * or what scene_reserve() returned. */
+static int scene_push_shape(Scene *scene, ShapeKind kind, const void *item, const Material *m)
 {
-    int rc = scene_reserve(scene, items, capacity, *count, size);
+    ShapeArray *a = &scene->shapes[kind];
+    size_t size = scene_kinds[kind].size;
+    int rc = scene_reserve(scene, &a->items, &a->capacity, a->count, size);
     unsigned position = (unsigned)scene_object_count(scene);
     char *at;
 
     if (rc != 0)
         return rc;
-    at = (char *)*items + *count * size;
+    at = (char *)a->items + a->count * size;
     memcpy(at, item, size);
-    memcpy(at + order, &position, sizeof position);
-    (*count)++;
+    memcpy(at + scene_kinds[kind].order, &position, sizeof position);
+    a->count++;
     scene->kinds |= 1u << kind;
     scene->has_transparency |= m->transparency > 0;
     return 0;
@@ -341,7 +306,7 @@ int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
     Sphere s = {centre, radius, 0, 0, -1, {0, 0, 0}};
     long at = -1;
-    int rc, last = scene->sphere_count > 0 ? scene->spheres[scene->sphere_count - 1].material : -1;
+    int rc, last = scene->shapes[SHAPE_SPHERE].count > 0 ? scene_spheres(scene)[scene->shapes[SHAPE_SPHERE].count - 1].material : -1;
 
     if (sphere_plain(m))
         sphere_set_plain(&s, m);
@@ -351,44 +316,18 @@ int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
         return (int)at;
     else
         s.material = (int)at;
-    rc = scene_push_shape(scene, SHAPE_SPHERE, (void **)&scene->spheres, &scene->sphere_capacity,
-                          &scene->sphere_count, &s, sizeof s, offsetof(Sphere, order), m);
+    rc = scene_push_shape(scene, SHAPE_SPHERE, &s, m);
     if (rc != 0 && at >= 0)
         scene->material_count--;
     return rc;
 }
 
-int scene_add_plane(Scene *scene, const Plane *p)
+int scene_add_shape(Scene *scene, ShapeKind kind, const void *shape)
 {
-    return scene_push_shape(scene, SHAPE_PLANE, (void **)&scene->planes, &scene->plane_capacity,
-                            &scene->plane_count, p, sizeof *p, offsetof(Plane, order),
-                            &p->material);
-}
+    const Material *m = (const Material *)(const void *)((const char *)shape +
+                                                         scene_kinds[kind].material);
 
-int scene_add_cube(Scene *scene, const Cube *c)
-{
-    return scene_push_shape(scene, SHAPE_CUBE, (void **)&scene->cubes, &scene->cube_capacity,
-                            &scene->cube_count, c, sizeof *c, offsetof(Cube, order), &c->material);
-}
-
-int scene_add_square(Scene *scene, const Square *s)
-{
-    return scene_push_shape(scene, SHAPE_SQUARE, (void **)&scene->squares, &scene->square_capacity,
-                            &scene->square_count, s, sizeof *s, offsetof(Square, order),
-                            &s->material);
-}
-
-int scene_add_cylinder(Scene *scene, const Cylinder *c)
-{
-    return scene_push_shape(scene, SHAPE_CYLINDER, (void **)&scene->cylinders, &scene->cylinder_capacity,
-                            &scene->cylinder_count, c, sizeof *c, offsetof(Cylinder, order),
-                            &c->material);
-}
-
-int scene_add_cone(Scene *scene, const Cone *c)
-{
-    return scene_push_shape(scene, SHAPE_CONE, (void **)&scene->cones, &scene->cone_capacity,
-                            &scene->cone_count, c, sizeof *c, offsetof(Cone, order), &c->material);
+    return scene_push_shape(scene, kind, shape, m);
 }
 
 long scene_add_material(Scene *scene, const Material *m)
@@ -406,19 +345,19 @@ long scene_add_material(Scene *scene, const Material *m)
 int scene_append_triangle(Scene *scene, const Triangle *t, size_t material,
                           const TriangleShading *sh)
 {
-    int rc = scene_reserve(scene, (void **)&scene->triangles, &scene->triangle_capacity,
-                           scene->triangle_count, sizeof *t);
+    int rc = scene_reserve(scene, &scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
+                           scene->shapes[SHAPE_TRIANGLE].count, sizeof *t);
 
     if (rc != 0)
         return rc;
-    scene->triangles[scene->triangle_count] = *t;
-    scene->triangles[scene->triangle_count].order = (unsigned)scene_object_count(scene);
-    scene->triangles[scene->triangle_count].shading = TRIANGLE_PLAIN;
-    scene->triangles[scene->triangle_count].material = (unsigned)material;
-    scene->triangle_count++;
+    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count] = *t;
+    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].order = (unsigned)scene_object_count(scene);
+    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].shading = TRIANGLE_PLAIN;
+    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].material = (unsigned)material;
+    scene->shapes[SHAPE_TRIANGLE].count++;
     scene->kinds |= 1u << SHAPE_TRIANGLE;
-    if (sh && (rc = scene_shade_triangle(scene, scene->triangle_count - 1, sh)) != 0)
-        scene->triangle_count--;
+    if (sh && (rc = scene_shade_triangle(scene, scene->shapes[SHAPE_TRIANGLE].count - 1, sh)) != 0)
+        scene->shapes[SHAPE_TRIANGLE].count--;
     return rc;
 }
 
@@ -436,7 +375,7 @@ int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m)
 
 int scene_shade_triangle(Scene *scene, size_t i, const TriangleShading *sh)
 {
-    Triangle *tri = &scene->triangles[i];
+    Triangle *tri = &scene_triangles(scene)[i];
     int rc;
 
     if (tri->shading != TRIANGLE_PLAIN) {
@@ -496,15 +435,15 @@ static int scene_reserve_all(const Scene *scene, void **items, size_t *capacity,
 
 int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx)
 {
-    size_t entry = scene->sphere_capacity, first = scene->sphere_count;
+    size_t entry = scene->shapes[SHAPE_SPHERE].capacity, first = scene->shapes[SHAPE_SPHERE].count;
     size_t others = scene_object_count(scene); /* listed before */
-    int rc = scene_reserve_all(scene, (void **)&scene->spheres, &scene->sphere_capacity,
-                               first + n, sizeof *scene->spheres);
-    Sphere *room = rc == 0 ? scene->spheres + first : NULL;
+    int rc = scene_reserve_all(scene, &scene->shapes[SHAPE_SPHERE].items, &scene->shapes[SHAPE_SPHERE].capacity,
+                               first + n, sizeof(Sphere));
+    Sphere *room = rc == 0 ? scene_spheres(scene) + first : NULL;
 
     if (rc != 0 || (rc = fill(room, ctx)) != 0) {
-        scene_fit((void **)&scene->spheres, &scene->sphere_capacity, entry,
-                  sizeof *scene->spheres);
+        scene_fit(&scene->shapes[SHAPE_SPHERE].items, &scene->shapes[SHAPE_SPHERE].capacity, entry,
+                  sizeof(Sphere));
         return rc;
     }
 #ifdef _OPENMP
@@ -513,7 +452,7 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
     for (size_t k = 0; k < n; k++) {
         room[k].order = (unsigned)(others + k);
     }
-    scene->sphere_count += n;
+    scene->shapes[SHAPE_SPHERE].count += n;
     scene->kinds |= 1u << SHAPE_SPHERE;
     return 0;
 }
@@ -521,26 +460,26 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
 long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
                          size_t (*fill)(Triangle *tris, TriangleShading *sh, void *ctx), void *ctx)
 {
-    size_t entry_tris = scene->triangle_capacity, entry_shading = scene->shading_capacity;
-    size_t first = scene->triangle_count, shade = scene->shading_count, kept;
+    size_t entry_tris = scene->shapes[SHAPE_TRIANGLE].capacity, entry_shading = scene->shading_capacity;
+    size_t first = scene->shapes[SHAPE_TRIANGLE].count, shade = scene->shading_count, kept;
     size_t others = scene_object_count(scene); /* listed before */
-    int rc = scene_reserve_all(scene, (void **)&scene->triangles, &scene->triangle_capacity,
-                               first + n, sizeof *scene->triangles);
+    int rc = scene_reserve_all(scene, &scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
+                               first + n, sizeof(Triangle));
     Triangle *tris;
 
     if (rc == 0 && shaded)
         rc = scene_reserve_all(scene, (void **)&scene->shading, &scene->shading_capacity,
                                shade + n, sizeof *scene->shading);
-    kept = rc == 0 ? fill(scene->triangles + first, shaded ? scene->shading + shade : NULL, ctx)
+    kept = rc == 0 ? fill(scene_triangles(scene) + first, shaded ? scene->shading + shade : NULL, ctx)
                    : SIZE_MAX;
     if (kept > n) { /* as it was */
-        scene_fit((void **)&scene->triangles, &scene->triangle_capacity, entry_tris,
-                  sizeof *scene->triangles);
+        scene_fit(&scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity, entry_tris,
+                  sizeof(Triangle));
         scene_fit((void **)&scene->shading, &scene->shading_capacity, entry_shading,
                   sizeof *scene->shading);
         return rc != 0 ? rc : -1;
     }
-    tris = scene->triangles + first;
+    tris = scene_triangles(scene) + first;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) if (kept >= 65536)
 #endif
@@ -551,12 +490,12 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
     }
     /* Give back the room of those without area: the capacities are those
      * that adding the kept ones one by one would make. */
-    scene->triangle_count = first + kept;
+    scene->shapes[SHAPE_TRIANGLE].count = first + kept;
     if (kept > 0)
         scene->kinds |= 1u << SHAPE_TRIANGLE;
-    scene_fit((void **)&scene->triangles, &scene->triangle_capacity,
-              scene_fit_capacity(scene->triangle_capacity, scene->triangle_count, entry_tris),
-              sizeof *scene->triangles);
+    scene_fit(&scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
+              scene_fit_capacity(scene->shapes[SHAPE_TRIANGLE].capacity, scene->shapes[SHAPE_TRIANGLE].count, entry_tris),
+              sizeof(Triangle));
     if (shaded) {
         scene->shading_count = shade + kept;
         scene_fit((void **)&scene->shading, &scene->shading_capacity,
@@ -596,20 +535,6 @@ int scene_add_named(Scene *scene, NamedMaterial *m)
     }
     scene->named[scene->named_count] = *m;
     return (int)scene->named_count++;
-}
-
-int scene_add_mesh_record(Scene *scene, SceneMesh *mesh)
-{
-    int rc = scene_reserve(scene, (void **)&scene->meshes, &scene->mesh_capacity,
-                           scene->mesh_count, sizeof *mesh);
-
-    if (rc != 0) {
-        free(mesh->path);
-        free(mesh->opened);
-        return rc;
-    }
-    scene->meshes[scene->mesh_count++] = *mesh;
-    return 0;
 }
 
 int scene_add_warning(Scene *scene, const Error *w)

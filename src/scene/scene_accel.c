@@ -28,18 +28,18 @@ static real scene_reach(const Scene *scene)
 
     for (size_t i = 0; i < scene->light_count; i++)
         m = scene_farther(m, scene->lights[i].position);
-    for (size_t i = 0; i < scene->plane_count; i++)
-        m = scene_farther(m, scene->planes[i].point);
-    for (size_t i = 0; i < scene->cylinder_count; i++)
-        m = scene_farther(m, scene->cylinders[i].centre);
-    for (size_t i = 0; i < scene->cone_count; i++)
-        m = scene_farther(scene_farther(m, scene->cones[i].base), scene->cones[i].apex);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++)
+        m = scene_farther(m, scene_planes(scene)[i].point);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++)
+        m = scene_farther(m, scene_cylinders(scene)[i].centre);
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++)
+        m = scene_farther(scene_farther(m, scene_cones(scene)[i].base), scene_cones(scene)[i].apex);
     return m;
 }
 
 size_t scene_bounded_count(const Scene *scene)
 {
-    return scene->sphere_count + scene->triangle_count + scene->cube_count + scene->square_count;
+    return scene_count_of(scene, SHAPE_SPHERE) + scene_count_of(scene, SHAPE_TRIANGLE) + scene_count_of(scene, SHAPE_CUBE) + scene_count_of(scene, SHAPE_SQUARE);
 }
 
 enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
@@ -72,7 +72,7 @@ static void scene_build_buffers(Scene *scene, int threads)
      * come from the pixels: on fields of 10^5 spheres it loses 9% of the
      * time at 1.3 pixels a sphere, breaks even at 2.3 and gains from there
      * (docs/log.md). */
-    if (scene->kinds != 1u << SHAPE_SPHERE || pixels / 2 < scene->sphere_count)
+    if (scene->kinds != 1u << SHAPE_SPHERE || pixels / 2 < scene_count_of(scene, SHAPE_SPHERE))
         return;
     buffers += scene->camera.aperture == 0;
     for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)
@@ -84,8 +84,8 @@ static void scene_build_buffers(Scene *scene, int threads)
     if (scene->camera.aperture == 0) {
         scene->eye_buffer = calloc(1, sizeof *scene->eye_buffer);
         if (scene->eye_buffer &&
-            light_buffer_build(scene->eye_buffer, scene->camera.eye, scene->spheres,
-                               scene->sphere_count, pixels, scene_buffer_budget(scene, buffers),
+            light_buffer_build(scene->eye_buffer, scene->camera.eye, scene_spheres(scene),
+                               scene_count_of(scene, SHAPE_SPHERE), pixels, scene_buffer_budget(scene, buffers),
                                threads) != 0) {
             free(scene->eye_buffer);
             scene->eye_buffer = NULL;
@@ -97,7 +97,7 @@ static void scene_build_buffers(Scene *scene, int threads)
     for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
         if (!scene->lights[i].distant)
             (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
-                                     scene->spheres, scene->sphere_count, pixels,
+                                     scene_spheres(scene), scene_count_of(scene, SHAPE_SPHERE), pixels,
                                      scene_buffer_budget(scene, buffers), threads);
 }
 
@@ -105,9 +105,9 @@ int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene_bounded_count(scene);
-    BvhShapes shapes = {scene->spheres,  scene->sphere_count, scene->triangles,
-                        scene->triangle_count, scene->cubes, scene->cube_count,
-                        scene->squares,  scene->square_count};
+    BvhShapes shapes = {scene_spheres(scene),  scene_count_of(scene, SHAPE_SPHERE), scene_triangles(scene),
+                        scene_count_of(scene, SHAPE_TRIANGLE), scene_cubes(scene), scene_count_of(scene, SHAPE_CUBE),
+                        scene_squares(scene),  scene_count_of(scene, SHAPE_SQUARE)};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
@@ -123,7 +123,7 @@ int scene_build_accel(Scene *scene, int threads)
      * transparencies in that order (visibility.c). Without the memory to
      * move them, they stay: the answers are the same. */
     if (!scene->has_transparency)
-        (void)bvh_renumber_spheres(bvh, scene->spheres);
+        (void)bvh_renumber_spheres(bvh, scene_spheres(scene));
     scene->accel = bvh;
     scene_build_buffers(scene, threads);
     return 0;

@@ -207,7 +207,7 @@ static int course_sphere_record(CourseParser *P, const Record *rec, Scene *scene
     rc = scene_add_sphere(scene, centre, radius, &m);
     if (rc != 0)
         return course_fail_memory(P, rec, scene, rc);
-    course_note_object(P, SHAPE_SPHERE, scene->sphere_count - 1);
+    course_note_object(P, SHAPE_SPHERE, scene_count_of(scene, SHAPE_SPHERE) - 1);
     return 0;
 }
 /* A record that may follow the header, and what reads it. */
@@ -294,19 +294,22 @@ static int course_objects(CourseParser *P, Scene *scene)
 }
 
 int course_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                     Scene *scene, Error *err)
+                     Scene *scene, SceneSource *source, Error *err)
 {
     CourseParser P;
 
     scene_init(scene);
+    source_init(source);
     scene->memory_limit = memory_limit;
     lex_init(&P.lex, name, text, len, err);
     P.ambient_line = P.samples_line = P.lens_line = 0;
     P.has_last = 0;
     P.last_kind = SHAPE_SPHERE;
     P.last_index = 0;
+    P.source = source;
     if (course_header(&P, scene) != 0 || course_objects(&P, scene) != 0) {
         scene_free(scene);
+        source_free(source);
         return -1;
     }
     scene_fit_scale(scene);

@@ -128,7 +128,7 @@ int course_spheres_parallel(CourseParser *P, Scene *scene)
         return 0;
     P->lex.next = P->lex.end;
     P->lex.lineno += lines;
-    course_note_object(P, SHAPE_SPHERE, scene->sphere_count - 1);
+    course_note_object(P, SHAPE_SPHERE, scene_count_of(scene, SHAPE_SPHERE) - 1);
     return 1;
 }
 

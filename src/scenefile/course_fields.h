@@ -10,10 +10,12 @@
 
 #include "scene/scene.h"
 #include "scenefile/lex.h"
+#include "scenefile/source.h"
 
 /* The parser's state: a cursor over the input. */
 typedef struct {
     Lexer lex;         /* the cursor over the input */
+    SceneSource *source; /* where its mesh lines are kept */
     int ambient_line;  /* line of the ambient: record, 0 before it */
     int samples_line;  /* line of the samples: record, 0 before it */
     int lens_line;     /* line of the lens: record, 0 before it */

@@ -238,7 +238,7 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
     n = lex_numbers(&P->lex, rec, 2, &course_mesh_spec, v);
     if (n < 0 || course_material(P, rec, &course_mesh_spec, 2, 0, v, n, &mat) != 0)
         return -1;
-    added = mesh_load(&P->lex, rec, &rec->tok[1], &mat, scene);
+    added = mesh_load(&P->lex, rec, &rec->tok[1], &mat, scene, P->source);
     if (added == MESH_FAULT)
         return -1;
     if (added < 0)
@@ -249,7 +249,7 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
                    lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
     }
-    course_note_object(P, COURSE_MESH, scene->triangle_count - (size_t)added);
+    course_note_object(P, COURSE_MESH, scene_count_of(scene, SHAPE_TRIANGLE) - (size_t)added);
     return 0;
 }
 
@@ -311,9 +311,9 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
     m->texture = index;
     m->filter = filter;
     if (P->last_kind == SHAPE_PLANE && n == 1)
-        scene->planes[P->last_index].tile = v[0];
+        scene_planes(scene)[P->last_index].tile = v[0];
     if (P->last_kind == SHAPE_TRIANGLE && n == 6) {
-        TriangleShading sh = triangle_plain_shading(&scene->triangles[P->last_index]);
+        TriangleShading sh = triangle_plain_shading(&scene_triangles(scene)[P->last_index]);
         int rc;
         for (int k = 0; k < 3; k++) {
             sh.uv[k][0] = v[2 * k];

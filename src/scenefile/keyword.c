@@ -37,6 +37,7 @@
 /* The reader's state. */
 typedef struct {
     Lexer lex;              /* the cursor over the input */
+    SceneSource *source;    /* its mesh lines and camera line, kept */
     int camera_line;        /* line of the camera, 0 before it */
     int ambient_line;       /* line of the ambient record, 0 before it */
     int gi_line, gicache_line; /* the gi and gicache records' */
@@ -150,10 +151,11 @@ static int keyword_camera_record(Keyword *K, const Record *rec, Scene *scene)
                      lex_quote(q, sizeof q, &rec->tok[7]));
         return -1;
     }
-    scene->look_from = vec3(v[0], v[1], v[2]);
-    scene->look_at = vec3(v[3], v[4], v[5]);
-    scene->fov = v[6];
-    switch (camera_look_at(&scene->camera, scene->look_from, scene->look_at, v[6], width,
+    K->source->camera_line = 1;
+    K->source->look_from = vec3(v[0], v[1], v[2]);
+    K->source->look_at = vec3(v[3], v[4], v[5]);
+    K->source->fov = v[6];
+    switch (camera_look_at(&scene->camera, K->source->look_from, K->source->look_at, v[6], width,
                            height)) {
     case CAMERA_VIEW_OK:
         return 0;
@@ -277,7 +279,7 @@ static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
     }
     if (names_numbers_and_material(&K->lex, &K->names, rec, 2, &spec, scene, "a material line", NULL, &m) != 0)
         return -1;
-    added = mesh_load(&K->lex, rec, path_tok, &m, scene);
+    added = mesh_load(&K->lex, rec, path_tok, &m, scene, K->source);
     if (added == MESH_FAULT)
         return -1;
     if (added < 0)
@@ -471,22 +473,25 @@ static int keyword_elements(Keyword *K, Scene *scene)
 }
 
 int keyword_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                       Scene *scene, Error *err)
+                       Scene *scene, SceneSource *source, Error *err)
 {
     Keyword K;
     int rc;
 
     scene_init(scene);
+    source_init(source);
     scene->memory_limit = memory_limit;
     scene->format = SCENE_KEYWORD;
     lex_init(&K.lex, name, text, len, err);
     K.camera_line = K.ambient_line = K.background_line = 0;
     K.gi_line = K.gicache_line = 0;
+    K.source = source;
     names_init(&K.names);
     rc = keyword_elements(&K, scene);
     names_free(&K.names);
     if (rc != 0) {
         scene_free(scene);
+        source_free(source);
         return -1;
     }
     if (!scene->has_ambient)

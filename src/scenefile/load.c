@@ -46,39 +46,48 @@ SceneFormat load_detect(const char *text, size_t len)
 }
 
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
-                    size_t memory_limit, int strict, Scene *scene, Error *err)
+                    size_t memory_limit, int strict, Scene *scene, SceneSource *source,
+                    Error *err)
 {
+    SceneSource unkept;
     int rc;
 
+    if (!source)
+        source = &unkept;
     if (format == SCENE_AUTO && (format = load_detect(text, len)) == SCENE_AUTO) {
         scene_init(scene);
+        source_init(source);
         error_set(err, name, "the scene is empty: %s",
                   len == 0 ? "the file holds no byte" : "it holds only blank lines and comments");
         return -1;
     }
     if (format == SCENE_KEYWORD)
-        rc = keyword_parse_text(name, text, len, memory_limit, scene, err);
+        rc = keyword_parse_text(name, text, len, memory_limit, scene, source, err);
     else if (format == SCENE_MPL)
-        rc = mpl_parse_text(name, text, len, memory_limit, strict, scene, err);
+        rc = mpl_parse_text(name, text, len, memory_limit, strict, scene, source, err);
     else
-        rc = course_parse_text(name, text, len, memory_limit, scene, err);
+        rc = course_parse_text(name, text, len, memory_limit, scene, source, err);
     if (rc == 0)
         scene->source_hash = hash_bytes(hash_u64(scene->source_hash, (uint64_t)format), text, len);
+    if (source == &unkept)
+        source_free(source);
     return rc;
 }
 
 int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, int strict,
-                    Scene *scene, Error *err)
+                    Scene *scene, SceneSource *source, Error *err)
 {
     char *text;
     size_t len;
     int rc;
 
     scene_init(scene);
+    if (source)
+        source_init(source);
     if (file_read_all(path, &text, &len, err) != 0)
         return -1;
     rc = load_scene_text(file_display_name(path), text, len, format, memory_limit, strict, scene,
-                         err);
+                         source, err);
     free(text);
     return rc;
 }

@@ -113,9 +113,10 @@ long mesh_add(Scene *scene, const ObjMesh *m, const Material *mat)
     return added;
 }
 
-long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat, Scene *scene)
+long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat, Scene *scene,
+               SceneSource *source)
 {
-    SceneMesh sm = {NULL, lex_path(L, t), scene->triangle_count, 0};
+    SceneMesh sm = {NULL, lex_path(L, t), scene_count_of(scene, SHAPE_TRIANGLE), 0};
     ObjMesh mesh;
     Error inner;
     long added;
@@ -142,6 +143,6 @@ long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat,
     }
     memcpy(sm.path, t->text, t->len);
     sm.path[t->len] = '\0';
-    rc = scene_add_mesh_record(scene, &sm);
+    rc = source_add_mesh(source, &sm);
     return rc != 0 ? rc : added;
 }

@@ -349,7 +349,7 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
         return mpl_fail_memory(M, rec, scene, rc);
     /* Seed 001's program's cone ends at its circle (cone.h). */
     if (shape->kind == SHAPE_CONE)
-        scene->cones[scene->cone_count - 1].finite = 1;
+        scene_cones(scene)[scene_count_of(scene, SHAPE_CONE) - 1].finite = 1;
     return 0;
 }
 
@@ -437,12 +437,13 @@ static int mpl_lines(Mpl *M, Scene *scene)
 }
 
 int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                   int strict, Scene *scene, Error *err)
+                   int strict, Scene *scene, SceneSource *source, Error *err)
 {
     Mpl M;
     int rc;
 
     scene_init(scene);
+    source_init(source);
     scene->memory_limit = memory_limit;
     scene->format = SCENE_MPL;
     scene->model = SCENE_MODEL_SEED001;
@@ -456,20 +457,22 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     M.gicache_line = 0;
     M.ao_line = M.gi_line = M.model_line = 0;
     M.strict = strict;
+    M.source = source;
     names_init(&M.names);
     rc = mpl_lines(&M, scene);
     names_free(&M.names);
-    if (rc == 0 && !scene->camera_line) {
-        scene->look_from = vec3(0, 0, 0);
-        scene->look_at = vec3(0, 0, 1);
-        scene->fov = MPL_DEFAULT_FOV;
-        rc = camera_look_at(&scene->camera, scene->look_from, scene->look_at, ANGLE_PI / 2,
+    if (rc == 0 && !source->camera_line) {
+        source->look_from = vec3(0, 0, 0);
+        source->look_at = vec3(0, 0, 1);
+        source->fov = MPL_DEFAULT_FOV;
+        rc = camera_look_at(&scene->camera, source->look_from, source->look_at, ANGLE_PI / 2,
                             MPL_DEFAULT_SIZE, MPL_DEFAULT_SIZE) == CAMERA_VIEW_OK
                  ? 0
                  : -1;
     }
     if (rc != 0) {
         scene_free(scene);
+        source_free(source);
         return -1;
     }
     if (!M.samples_line)

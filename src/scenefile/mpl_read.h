@@ -16,10 +16,12 @@
 #include "scene/scene.h"
 #include "scenefile/lex.h"
 #include "scenefile/names.h"
+#include "scenefile/source.h"
 
 /* The reader's state. */
 typedef struct {
     Lexer lex;           /* the cursor over the input */
+    SceneSource *source; /* its camera line as written */
     int camera_line;     /* line of each setting, 0 before it */
     int background_line; /* (Background or Sky) */
     int ambient_line;

@@ -64,13 +64,13 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
                  lex_quote(q, sizeof q, &rec->tok[8]));
         return -1;
     }
-    scene->camera_line = 1;
-    scene->look_from = vec3(v[0], v[1], v[2]);
-    scene->look_at = vec3(v[3], v[4], v[5]);
-    scene->fov = v[6];
+    M->source->camera_line = 1;
+    M->source->look_from = vec3(v[0], v[1], v[2]);
+    M->source->look_at = vec3(v[3], v[4], v[5]);
+    M->source->fov = v[6];
     /* The seed's field of view is vertical; the camera's, horizontal. */
     half = angle_atan2(angle_tan(v[6] * ANGLE_PI / 360) * width, height);
-    switch (camera_look_at(&scene->camera, scene->look_from, scene->look_at, 2 * half, width,
+    switch (camera_look_at(&scene->camera, M->source->look_from, M->source->look_at, 2 * half, width,
                            height)) {
     case CAMERA_VIEW_OK:
         return 0;

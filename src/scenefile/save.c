@@ -121,8 +121,8 @@ static void save_materials(FILE *fp, const Scene *scene)
 
 /* Writes the objects in the scene's order, each as its element (a mesh as
  * its mesh line). */
-static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
-                        const char *out_name, Error *err)
+static int save_objects(FILE *fp, const Scene *scene, const SceneSource *src,
+                        const char *scene_name, const char *out_name, Error *err)
 {
     size_t mesh = 0;
     SceneWalk w;
@@ -134,8 +134,8 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
         double v[SHAPES_NUMBERS_MAX];
         int n;
 
-        if (kind == SHAPE_TRIANGLE && mesh < scene->mesh_count && scene->meshes[mesh].first == i) {
-            const SceneMesh *m = &scene->meshes[mesh++];
+        if (kind == SHAPE_TRIANGLE && mesh < src->mesh_count && src->meshes[mesh].first == i) {
+            const SceneMesh *m = &src->meshes[mesh++];
             fputs("mesh ", fp);
             if (save_path(fp, m->path, m->opened, "mesh", scene_name, out_name, err) != 0)
                 return -1;
@@ -153,16 +153,16 @@ static int save_objects(FILE *fp, const Scene *scene, const char *scene_name,
 }
 
 /* Writes scene in the keyword format (save_scene()). */
-static int save_keyword(FILE *fp, const Scene *scene, const char *scene_name,
-                        const char *out_name, Error *err)
+static int save_keyword(FILE *fp, const Scene *scene, const SceneSource *src,
+                        const char *scene_name, const char *out_name, Error *err)
 {
     const Camera *cam = &scene->camera;
-    double camera[1] = {scene->fov};
+    double camera[1] = {src->fov};
 
     fputs("# A keyword-format scene, written by raytrace --save.\n", fp);
     fputs("camera", fp);
-    save_point(fp, scene->look_from, 0);
-    save_point(fp, scene->look_at, 0);
+    save_point(fp, src->look_from, 0);
+    save_point(fp, src->look_at, 0);
     save_numbers(fp, camera, 1);
     fprintf(fp, " %d %d\n", cam->width, cam->height);
     if (scene->background.r != 0 || scene->background.g != 0 || scene->background.b != 0) {
@@ -184,7 +184,7 @@ static int save_keyword(FILE *fp, const Scene *scene, const char *scene_name,
         save_numbers(fp, &l->intensity, 1);
         fputc('\n', fp);
     }
-    return save_objects(fp, scene, scene_name, out_name, err);
+    return save_objects(fp, scene, src, scene_name, out_name, err);
 }
 
 /* Returns the MPL number y whose 255-fold is the colour channel c, as
@@ -214,8 +214,8 @@ static void save_mpl_colour(FILE *fp, Colour c)
 }
 
 /* Writes scene in the MPL format (save_scene()). */
-static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
-                    Error *err)
+static int save_mpl(FILE *fp, const Scene *scene, const SceneSource *src, const char *scene_name,
+                    const char *out_name, Error *err)
 {
     static const char *const kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
     static const char *const words[SHAPE_KINDS] = {"Sphere", "Plane",    "Triangle", "Cube",
@@ -226,11 +226,11 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
     size_t i;
 
     fputs("# An MPL-format scene (seed 001's), written by raytrace --save.\n", fp);
-    if (scene->camera_line) {
-        double fov[1] = {scene->fov};
+    if (src->camera_line) {
+        double fov[1] = {src->fov};
         fputs("c Camera", fp);
-        save_point(fp, scene->look_from, 0);
-        save_point(fp, scene->look_at, 0);
+        save_point(fp, src->look_from, 0);
+        save_point(fp, src->look_at, 0);
         save_numbers(fp, fov, 1);
         fprintf(fp, " %d %d\n", scene->camera.width, scene->camera.height);
     }
@@ -313,8 +313,8 @@ static int save_mpl(FILE *fp, const Scene *scene, const char *scene_name, const 
     return 0;
 }
 
-int save_scene(FILE *fp, const Scene *scene, const char *scene_name, const char *out_name,
-               Error *err)
+int save_scene(FILE *fp, const Scene *scene, const SceneSource *source, const char *scene_name,
+               const char *out_name, Error *err)
 {
     int rc;
 
@@ -324,8 +324,8 @@ int save_scene(FILE *fp, const Scene *scene, const char *scene_name, const char 
                                    "lights and shading rule)");
         return -1;
     }
-    rc = scene->format == SCENE_MPL ? save_mpl(fp, scene, scene_name, out_name, err)
-                                    : save_keyword(fp, scene, scene_name, out_name, err);
+    rc = scene->format == SCENE_MPL ? save_mpl(fp, scene, source, scene_name, out_name, err)
+                                    : save_keyword(fp, scene, source, scene_name, out_name, err);
     if (rc == 0 && ferror(fp)) {
         error_set(err, out_name, "cannot write the scene: %s", strerror(errno));
         return -1;

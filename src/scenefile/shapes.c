@@ -49,34 +49,34 @@ int shapes_numbers(const Scene *scene, ShapeKind kind, size_t i, double *v)
 
     switch (kind) {
     case SHAPE_SPHERE:
-        shapes_put(v, 0, scene->spheres[i].centre, k);
-        v[3] = ldexp(scene->spheres[i].radius, -k);
+        shapes_put(v, 0, scene_spheres(scene)[i].centre, k);
+        v[3] = ldexp(scene_spheres(scene)[i].radius, -k);
         break;
     case SHAPE_PLANE:
-        shapes_put(v, 0, scene->planes[i].point, k);
-        shapes_put(v, 3, scene->planes[i].given, 0);
+        shapes_put(v, 0, scene_planes(scene)[i].point, k);
+        shapes_put(v, 3, scene_planes(scene)[i].given, 0);
         break;
     case SHAPE_TRIANGLE:
         for (int j = 0; j < 3; j++)
-            shapes_put(v, 3 * j, scene->triangles[i].v[j], k);
+            shapes_put(v, 3 * j, scene_triangles(scene)[i].v[j], k);
         break;
     case SHAPE_CUBE:
-        shapes_put(v, 0, scene->cubes[i].centre, k);
-        v[3] = ldexp(scene->cubes[i].half, -k);
+        shapes_put(v, 0, scene_cubes(scene)[i].centre, k);
+        v[3] = ldexp(scene_cubes(scene)[i].half, -k);
         break;
     case SHAPE_SQUARE:
-        shapes_put(v, 0, scene->squares[i].centre, k);
-        shapes_put(v, 3, scene->squares[i].given, 0);
-        v[6] = ldexp(scene->squares[i].half, -k);
+        shapes_put(v, 0, scene_squares(scene)[i].centre, k);
+        shapes_put(v, 3, scene_squares(scene)[i].given, 0);
+        v[6] = ldexp(scene_squares(scene)[i].half, -k);
         break;
     case SHAPE_CYLINDER:
-        shapes_put(v, 0, scene->cylinders[i].centre, k);
-        v[3] = ldexp(scene->cylinders[i].radius, -k);
+        shapes_put(v, 0, scene_cylinders(scene)[i].centre, k);
+        v[3] = ldexp(scene_cylinders(scene)[i].radius, -k);
         break;
     default:
-        shapes_put(v, 0, scene->cones[i].base, k);
-        v[3] = ldexp(scene->cones[i].radius, -k);
-        v[4] = ldexp(scene->cones[i].height, -k);
+        shapes_put(v, 0, scene_cones(scene)[i].base, k);
+        v[3] = ldexp(scene_cones(scene)[i].radius, -k);
+        v[4] = ldexp(scene_cones(scene)[i].height, -k);
         break;
     }
     return shapes_count[kind];
@@ -102,7 +102,7 @@ int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
             *field = 3;
             return SHAPES_INVALID;
         }
-        return scene_add_plane(scene, &pl);
+        return scene_add_shape(scene, SHAPE_PLANE, &pl);
     }
     case SHAPE_TRIANGLE: {
         Triangle tri;
@@ -116,7 +116,7 @@ int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
     case SHAPE_CUBE: {
         Cube c;
         cube_make(&c, shapes_point(v, 0), v[3], *m);
-        return scene_add_cube(scene, &c);
+        return scene_add_shape(scene, SHAPE_CUBE, &c);
     }
     case SHAPE_SQUARE: {
         Square s;
@@ -125,11 +125,11 @@ int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
             *field = 3;
             return SHAPES_INVALID;
         }
-        return scene_add_square(scene, &s);
+        return scene_add_shape(scene, SHAPE_SQUARE, &s);
     }
     case SHAPE_CYLINDER: {
         Cylinder c = {shapes_point(v, 0), v[3], *m, 0};
-        return scene_add_cylinder(scene, &c);
+        return scene_add_shape(scene, SHAPE_CYLINDER, &c);
     }
     default: {
         Cone c;
@@ -140,7 +140,7 @@ int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
             return SHAPES_INVALID;
         }
         cone_make(&c, shapes_point(v, 0), v[3], v[4], *m);
-        return scene_add_cone(scene, &c);
+        return scene_add_shape(scene, SHAPE_CONE, &c);
     }
     }
 }

@@ -20,7 +20,7 @@ static int fuzz_scene(const uint8_t *data, size_t size, SceneFormat format)
     RenderOptions opts = {.max_depth = 4, .samples = 1, .cutoff = 0.001, .threads = 1};
 
     scene_init(&scene);
-    if (load_scene_text("fuzz", (const char *)data, size, format, 0, 0, &scene, &err) == 0 &&
+    if (load_scene_text("fuzz", (const char *)data, size, format, 0, 0, &scene, NULL, &err) == 0 &&
         (long)scene.camera.width * scene.camera.height <= 32 * 32 &&
         (scene.samples == 0 || scene.samples <= 4)) {
         opts.samples = scene.samples ? scene.samples : 1;
