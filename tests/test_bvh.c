@@ -85,8 +85,10 @@ static void random_scene(Scene *sc, int n, double s)
  * tests have no rays) with threads threads; returns bvh_build()'s answer. */
 static int build_over(Bvh *bvh, const Scene *sc, int threads)
 {
-    BvhShapes shapes = {scene_spheres(sc), scene_count_of(sc, SHAPE_SPHERE), scene_triangles(sc), scene_count_of(sc, SHAPE_TRIANGLE),
-                        scene_cubes(sc),   scene_count_of(sc, SHAPE_CUBE),   scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE)};
+    BvhShapes shapes = {scene_spheres(sc),   scene_count_of(sc, SHAPE_SPHERE),
+                        scene_triangles(sc), scene_count_of(sc, SHAPE_TRIANGLE),
+                        scene_cubes(sc),     scene_count_of(sc, SHAPE_CUBE),
+                        scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE)};
 
     return bvh_build(bvh, &shapes, 0, threads);
 }
@@ -129,8 +131,11 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
         for (uint32_t i = bvh_link_index(n->link[k]); bvh_link_count(n->link[k]) > 0 && i < bvh_link_index(n->link[k]) + bvh_link_count(n->link[k]); i++) {
             uint32_t ref = bvh->prims[i];
-            size_t base[4] = {0, scene_count_of(sc, SHAPE_SPHERE), scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE),
-                              scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE) + scene_count_of(sc, SHAPE_CUBE)};
+            size_t base[4] = {0, scene_count_of(sc, SHAPE_SPHERE),
+                              scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE),
+                              scene_count_of(sc, SHAPE_SPHERE) +
+                                  scene_count_of(sc, SHAPE_TRIANGLE) +
+                                  scene_count_of(sc, SHAPE_CUBE)};
             size_t slot = base[bvh_kind(ref)] + bvh_index(ref);
             Vec3 lo, hi;
             seen[slot]++;

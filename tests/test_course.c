@@ -241,7 +241,8 @@ static size_t big_course(char *text, int n)
 /* Says whether the spheres of scenes a and b are alike, field by field. */
 static int same_spheres(const Scene *a, const Scene *b)
 {
-    if (scene_count_of(a, SHAPE_SPHERE) != scene_count_of(b, SHAPE_SPHERE) || a->shapes[SHAPE_SPHERE].capacity != b->shapes[SHAPE_SPHERE].capacity ||
+    if (scene_count_of(a, SHAPE_SPHERE) != scene_count_of(b, SHAPE_SPHERE) ||
+        a->shapes[SHAPE_SPHERE].capacity != b->shapes[SHAPE_SPHERE].capacity ||
         a->has_transparency != b->has_transparency)
         return 0;
     for (size_t i = 0; i < scene_count_of(a, SHAPE_SPHERE); i++) {
@@ -323,7 +324,8 @@ static void parse_reads_alike_on_every_thread(void)
                 CHECK_ERROR(lines[k], &e2, e1.line, e1.column, e1.message);
             } else if (r1 == 0 && r2 == 0) {
                 CHECK(same_spheres(&s1, &s2));
-                CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE), (long long)scene_count_of(&s2, SHAPE_PLANE));
+                CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE),
+                          (long long)scene_count_of(&s2, SHAPE_PLANE));
                 CHECK_INT((long long)s1.light_count, (long long)s2.light_count);
                 CHECK_INT(k == 5, (long long)scene_count_of(&s2, SHAPE_PLANE));
                 CHECK_INT(1 + (k == 6), (long long)s2.light_count);
@@ -377,7 +379,8 @@ static void parse_reads_random_edits_alike(void)
             CHECK_ERROR("a random edit", &e2, e1.line, e1.column, e1.message);
         } else if (r1 == 0 && r2 == 0) {
             CHECK(same_spheres(&s1, &s2));
-            CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE), (long long)scene_count_of(&s2, SHAPE_PLANE));
+            CHECK_INT((long long)scene_count_of(&s1, SHAPE_PLANE),
+                      (long long)scene_count_of(&s2, SHAPE_PLANE));
             CHECK_INT((long long)s1.texture_count, (long long)s2.texture_count);
             CHECK(s1.has_ambient == s2.has_ambient);
             scene_free(&s1);

@@ -213,7 +213,8 @@ static void mpl_rejects_bad_scenes_with_position(void)
         const BadMpl *b = &mpl_bad[i];
         Scene sc;
         Error err;
-        int rc = load_scene_text("t.txt", b->text, strlen(b->text), SCENE_MPL, 0, 1, &sc, NULL, &err);
+        int rc =
+            load_scene_text("t.txt", b->text, strlen(b->text), SCENE_MPL, 0, 1, &sc, NULL, &err);
 
         CHECK_INT(-1, rc);
         if (rc != -1) {
@@ -265,7 +266,8 @@ static void mpl_reads_its_programs_lenient_lines_with_warnings(void)
             CHECK_NEAR(1.5, scene_spheres(&sc)[0].radius, 0);
         CHECK_NEAR(255, scene_material(&sc, SHAPE_SPHERE, 0).colour.b, 0);
         scene_free(&sc);
-        CHECK_INT(-1, load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 1, &sc, NULL, &err));
+        CHECK_INT(-1,
+                  load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 1, &sc, NULL, &err));
     }
 }
 
@@ -451,8 +453,8 @@ static void mpl_saved_scene_reads_back_the_same(void)
         SceneSource sa, sb;
         Error err;
         char *once, *twice;
-        CHECK_INT(0, load_scene_text("t.txt", texts[i], strlen(texts[i]), SCENE_MPL, 0, 0, &a,
-                                     &sa, &err));
+        CHECK_INT(0, load_scene_text("t.txt", texts[i], strlen(texts[i]), SCENE_MPL, 0, 0, &a, &sa,
+                                     &err));
         once = mpl_saved(&a, &sa, "t.txt");
         CHECK(once != NULL);
         if (!once) {

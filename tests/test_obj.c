@@ -130,7 +130,8 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fwrite(obj, 1, sizeof obj - 1, f);
     fclose(f);
-    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT(
+        0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
     CHECK_INT(2, (long long)scene_count_of(&sc, SHAPE_TRIANGLE));
     if (scene_count_of(&sc, SHAPE_TRIANGLE) == 2) {
         CHECK_NEAR(0.25, scene_material_of(&sc, &scene_triangles(&sc)[1])->transparency, 0);
@@ -147,7 +148,8 @@ static void mesh_record_adds_the_triangles(void)
     fputs("v 0 0 5\nv 1 0 5\nv 0 1 5\nvn 0 0 -2\nvn 1 0 -1\nvn 0 0 0\n"
           "f 1//1 2//2 3//1\nf 1//1 2//3 3//1\n", f);
     fclose(f);
-    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT(
+        0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
     CHECK_INT(2, (long long)scene_count_of(&sc, SHAPE_TRIANGLE));
     if (scene_count_of(&sc, SHAPE_TRIANGLE) == 2) {
         CHECK_INT(1, shading_of(&sc, 0).smooth);
@@ -164,7 +166,8 @@ static void mesh_record_adds_the_triangles(void)
         return;
     fputs("v 0 0 5\nf 1 2 3\n", f);
     fclose(f);
-    CHECK_INT(-1, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT(-1, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL,
+                                  &err));
     CHECK_INT(8, err.line);
     CHECK_INT(7, err.column);
     CHECK_CONTAINS(err.message, "cannot use the mesh 't.obj': build/t.obj:2:5: vertex 2 does not exist");
@@ -321,9 +324,11 @@ static void parse_on_both(const char *text, size_t memory_limit, Scene *one, Sce
     Error err;
 
     threads_use(1);
-    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, memory_limit, 0, one, NULL, &err));
+    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, memory_limit, 0,
+                                 one, NULL, &err));
     threads_use(2);
-    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, memory_limit, 0, two, NULL, &err));
+    CHECK_INT(0, load_scene_text("build/t.txt", text, strlen(text), SCENE_COURSE, memory_limit, 0,
+                                 two, NULL, &err));
     threads_use(before);
 }
 
@@ -369,19 +374,23 @@ static void mesh_made_alike_on_every_thread(void)
     fclose(f);
     free(obj);
     parse_on_both(text, 0, &one, &two);
-    CHECK_INT((long long)scene_count_of(&one, SHAPE_TRIANGLE), (long long)scene_count_of(&two, SHAPE_TRIANGLE));
-    CHECK_INT((long long)one.shapes[SHAPE_TRIANGLE].capacity, (long long)two.shapes[SHAPE_TRIANGLE].capacity);
+    CHECK_INT((long long)scene_count_of(&one, SHAPE_TRIANGLE),
+              (long long)scene_count_of(&two, SHAPE_TRIANGLE));
+    CHECK_INT((long long)one.shapes[SHAPE_TRIANGLE].capacity,
+              (long long)two.shapes[SHAPE_TRIANGLE].capacity);
     CHECK_INT((long long)scene_count_of(&one, SHAPE_TRIANGLE), (long long)one.shading_count);
     CHECK_INT((long long)one.shading_count, (long long)two.shading_count);
     CHECK_INT((long long)one.shading_capacity, (long long)two.shading_capacity);
-    CHECK(scene_count_of(&one, SHAPE_TRIANGLE) > 8192 && scene_count_of(&one, SHAPE_TRIANGLE) % 2 == 0);
+    CHECK(scene_count_of(&one, SHAPE_TRIANGLE) > 8192 &&
+          scene_count_of(&one, SHAPE_TRIANGLE) % 2 == 0);
     if (scene_count_of(&one, SHAPE_TRIANGLE) == scene_count_of(&two, SHAPE_TRIANGLE)) {
         size_t differ = 0;
         for (size_t i = 0; i < scene_count_of(&one, SHAPE_TRIANGLE); i++)
             differ += !same_triangle(&one, &two, i);
         CHECK_INT(0, (long long)differ);
         /* Objects are ordered as listed: the sphere first. */
-        CHECK_INT((long long)scene_count_of(&one, SHAPE_TRIANGLE), scene_triangles(&two)[scene_count_of(&one, SHAPE_TRIANGLE) - 1].order);
+        CHECK_INT((long long)scene_count_of(&one, SHAPE_TRIANGLE),
+                  scene_triangles(&two)[scene_count_of(&one, SHAPE_TRIANGLE) - 1].order);
     }
     scene_free(&one);
     scene_free(&two);
@@ -416,7 +425,8 @@ static void mesh_made_alike_on_every_thread(void)
         CHECK_INT(cases[c].capacity, (long long)one.shapes[SHAPE_TRIANGLE].capacity);
         CHECK_INT(cases[c].capacity, (long long)two.shapes[SHAPE_TRIANGLE].capacity);
         if (scene_count_of(&two, SHAPE_TRIANGLE) > 0)
-            CHECK_INT(cases[c].count - 1, scene_triangles(&two)[scene_count_of(&two, SHAPE_TRIANGLE) - 1].order);
+            CHECK_INT(cases[c].count - 1,
+                      scene_triangles(&two)[scene_count_of(&two, SHAPE_TRIANGLE) - 1].order);
         scene_free(&one);
         scene_free(&two);
     }

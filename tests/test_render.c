@@ -496,7 +496,8 @@ static void render_cutoff_leaves_out_no_more_than_it_counts(void)
         Scene sc;
         Error err;
 
-        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, 0, 0, &sc, NULL, &err));
+        CHECK_INT(0, load_scene_text("t.txt", texts[s], strlen(texts[s]), SCENE_AUTO, 0, 0, &sc,
+                                     NULL, &err));
         for (int i = 0; i < 4000; i++) {
             Ray ray = {vec3(rng_range(-3, 3), rng_range(-1, 3), -8),
                        vec3_normalize(vec3(rng_range(-0.5, 0.5), rng_range(-0.5, 0.5), 1))};

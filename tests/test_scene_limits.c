@@ -64,7 +64,8 @@ static void limits_scene_stops_at_the_element_that_passes(void)
     scene_free(&sc);
     /* 48 KiB: the array doubles to 512 spheres, not to 1024; the error
      * points at the 513th sphere's line (8 + 512). */
-    CHECK_INT(-1, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, limit, 0, &sc, NULL, &err));
+    CHECK_INT(
+        -1, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, limit, 0, &sc, NULL, &err));
     CHECK_INT(520, err.line);
     CHECK_INT(1, err.column);
     CHECK_CONTAINS(err.message, "would pass the memory limit of 48 KiB");
@@ -126,8 +127,10 @@ static void limits_spheres_added_at_once_as_one_by_one(void)
         CHECK_INT(0, scene_add_sphere(&one, c, 1, &m));
     }
     CHECK_INT(0, scene_add_spheres(&all, fill.n, limits_fill, &fill));
-    CHECK_INT((long long)scene_count_of(&one, SHAPE_SPHERE), (long long)scene_count_of(&all, SHAPE_SPHERE));
-    CHECK_INT((long long)one.shapes[SHAPE_SPHERE].capacity, (long long)all.shapes[SHAPE_SPHERE].capacity);
+    CHECK_INT((long long)scene_count_of(&one, SHAPE_SPHERE),
+              (long long)scene_count_of(&all, SHAPE_SPHERE));
+    CHECK_INT((long long)one.shapes[SHAPE_SPHERE].capacity,
+              (long long)all.shapes[SHAPE_SPHERE].capacity);
     CHECK_INT(1024, (long long)all.shapes[SHAPE_SPHERE].capacity);
     for (size_t k = 0; k < scene_count_of(&one, SHAPE_SPHERE); k++)
         same += same_sphere(&scene_spheres(&one)[k], &scene_spheres(&all)[k]);

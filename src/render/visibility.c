@@ -18,7 +18,8 @@ static int visibility_hit(const Scene *scene, ShapeKind kind, size_t k, const Ra
 {
     switch (kind) {
     case SHAPE_SPHERE:
-        return sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0, tmax, t);
+        return sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0,
+                          tmax, t);
     case SHAPE_PLANE:
         return plane_intersect(&scene_planes(scene)[k], ray, 0, tmax, t);
     case SHAPE_TRIANGLE:
@@ -206,7 +207,8 @@ int visibility_occluded_cached(const Scene *scene, const Ray *ray, real tmax, ui
      * else. */
     for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
         real t;
-        if (sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0, tmax, &t))
+        if (sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0, tmax,
+                       &t))
             return 1;
     }
     for (unsigned m = scene->kinds & VISIBILITY_BOUNDED & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)

@@ -28,19 +28,26 @@ static double scene_max_length(const Scene *scene)
     for (size_t i = 0; i < scene->light_count; i++)
         if (!scene->lights[i].distant) /* a direction, not a place */
             m = fmax(m, vec3_max_abs(scene->lights[i].position));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++)
-        m = fmax(m, fmax(vec3_max_abs(scene_spheres(scene)[i].centre), scene_spheres(scene)[i].radius));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++)
-        m = fmax(m, fmax(vec3_max_abs(scene_planes(scene)[i].point),
-                        scene_planes(scene)[i].material.texture >= 0 ? scene_planes(scene)[i].tile : 0));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++) {
+        const Sphere *sp = &scene_spheres(scene)[i];
+        m = fmax(m, fmax(vec3_max_abs(sp->centre), sp->radius));
+    }
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++) {
+        const Plane *pl = &scene_planes(scene)[i];
+        m = fmax(m, fmax(vec3_max_abs(pl->point), pl->material.texture >= 0 ? pl->tile : 0));
+    }
     for (size_t i = 0; i < scene_count_of(scene, SHAPE_TRIANGLE); i++)
         m = fmax(m, scene_points_max(scene_triangles(scene)[i].v, 3));
     for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++)
         m = fmax(m, fmax(vec3_max_abs(scene_cubes(scene)[i].centre), scene_cubes(scene)[i].half));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++)
-        m = fmax(m, fmax(vec3_max_abs(scene_squares(scene)[i].centre), scene_squares(scene)[i].half));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++)
-        m = fmax(m, fmax(vec3_max_abs(scene_cylinders(scene)[i].centre), scene_cylinders(scene)[i].radius));
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++) {
+        const Square *sq = &scene_squares(scene)[i];
+        m = fmax(m, fmax(vec3_max_abs(sq->centre), sq->half));
+    }
+    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++) {
+        const Cylinder *cy = &scene_cylinders(scene)[i];
+        m = fmax(m, fmax(vec3_max_abs(cy->centre), cy->radius));
+    }
     for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++) {
         const Cone *c = &scene_cones(scene)[i];
         m = fmax(m, fmax(fmax(vec3_max_abs(c->base), vec3_max_abs(c->apex)),

@@ -243,7 +243,8 @@ double scene_size(const Scene *scene)
         scene_widen(&lo, &hi, scene_cubes(scene)[i].hi, 0);
     }
     for (size_t i = 0; i < scene->shapes[SHAPE_SQUARE].count; i++)
-        scene_widen(&lo, &hi, scene_squares(scene)[i].centre, scene_squares(scene)[i].half * (real)1.5);
+        scene_widen(&lo, &hi, scene_squares(scene)[i].centre,
+                    scene_squares(scene)[i].half * (real)1.5);
     for (size_t i = 0; i < scene->shapes[SHAPE_PLANE].count; i++)
         scene_widen(&lo, &hi, scene_planes(scene)[i].point, 0);
     for (size_t i = 0; i < scene->shapes[SHAPE_CYLINDER].count; i++)
@@ -305,8 +306,9 @@ static int scene_push_shape(Scene *scene, ShapeKind kind, const void *item, cons
 int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
     Sphere s = {centre, radius, 0, 0, -1, {0, 0, 0}};
+    size_t count = scene->shapes[SHAPE_SPHERE].count;
     long at = -1;
-    int rc, last = scene->shapes[SHAPE_SPHERE].count > 0 ? scene_spheres(scene)[scene->shapes[SHAPE_SPHERE].count - 1].material : -1;
+    int rc, last = count > 0 ? scene_spheres(scene)[count - 1].material : -1;
 
     if (sphere_plain(m))
         sphere_set_plain(&s, m);
@@ -324,8 +326,8 @@ int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 
 int scene_add_shape(Scene *scene, ShapeKind kind, const void *shape)
 {
-    const Material *m = (const Material *)(const void *)((const char *)shape +
-                                                         scene_kinds[kind].material);
+    const Material *m =
+        (const Material *)(const void *)((const char *)shape + scene_kinds[kind].material);
 
     return scene_push_shape(scene, kind, shape, m);
 }
@@ -345,19 +347,21 @@ long scene_add_material(Scene *scene, const Material *m)
 int scene_append_triangle(Scene *scene, const Triangle *t, size_t material,
                           const TriangleShading *sh)
 {
-    int rc = scene_reserve(scene, &scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
-                           scene->shapes[SHAPE_TRIANGLE].count, sizeof *t);
+    ShapeArray *a = &scene->shapes[SHAPE_TRIANGLE];
+    int rc = scene_reserve(scene, &a->items, &a->capacity, a->count, sizeof *t);
+    Triangle *at;
 
     if (rc != 0)
         return rc;
-    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count] = *t;
-    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].order = (unsigned)scene_object_count(scene);
-    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].shading = TRIANGLE_PLAIN;
-    scene_triangles(scene)[scene->shapes[SHAPE_TRIANGLE].count].material = (unsigned)material;
-    scene->shapes[SHAPE_TRIANGLE].count++;
+    at = &scene_triangles(scene)[a->count];
+    *at = *t;
+    at->order = (unsigned)scene_object_count(scene);
+    at->shading = TRIANGLE_PLAIN;
+    at->material = (unsigned)material;
+    a->count++;
     scene->kinds |= 1u << SHAPE_TRIANGLE;
-    if (sh && (rc = scene_shade_triangle(scene, scene->shapes[SHAPE_TRIANGLE].count - 1, sh)) != 0)
-        scene->shapes[SHAPE_TRIANGLE].count--;
+    if (sh && (rc = scene_shade_triangle(scene, a->count - 1, sh)) != 0)
+        a->count--;
     return rc;
 }
 
@@ -435,15 +439,14 @@ static int scene_reserve_all(const Scene *scene, void **items, size_t *capacity,
 
 int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ctx), void *ctx)
 {
-    size_t entry = scene->shapes[SHAPE_SPHERE].capacity, first = scene->shapes[SHAPE_SPHERE].count;
+    ShapeArray *a = &scene->shapes[SHAPE_SPHERE];
+    size_t entry = a->capacity, first = a->count;
     size_t others = scene_object_count(scene); /* listed before */
-    int rc = scene_reserve_all(scene, &scene->shapes[SHAPE_SPHERE].items, &scene->shapes[SHAPE_SPHERE].capacity,
-                               first + n, sizeof(Sphere));
+    int rc = scene_reserve_all(scene, &a->items, &a->capacity, first + n, sizeof(Sphere));
     Sphere *room = rc == 0 ? scene_spheres(scene) + first : NULL;
 
     if (rc != 0 || (rc = fill(room, ctx)) != 0) {
-        scene_fit(&scene->shapes[SHAPE_SPHERE].items, &scene->shapes[SHAPE_SPHERE].capacity, entry,
-                  sizeof(Sphere));
+        scene_fit(&a->items, &a->capacity, entry, sizeof(Sphere));
         return rc;
     }
 #ifdef _OPENMP
@@ -452,7 +455,7 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
     for (size_t k = 0; k < n; k++) {
         room[k].order = (unsigned)(others + k);
     }
-    scene->shapes[SHAPE_SPHERE].count += n;
+    a->count += n;
     scene->kinds |= 1u << SHAPE_SPHERE;
     return 0;
 }
@@ -460,26 +463,24 @@ int scene_add_spheres(Scene *scene, size_t n, int (*fill)(Sphere *room, void *ct
 long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
                          size_t (*fill)(Triangle *tris, TriangleShading *sh, void *ctx), void *ctx)
 {
-    size_t entry_tris = scene->shapes[SHAPE_TRIANGLE].capacity, entry_shading = scene->shading_capacity;
-    size_t first = scene->shapes[SHAPE_TRIANGLE].count, shade = scene->shading_count, kept;
+    ShapeArray *a = &scene->shapes[SHAPE_TRIANGLE];
+    size_t entry_tris = a->capacity, entry_shading = scene->shading_capacity;
+    size_t first = a->count, shade = scene->shading_count, kept;
     size_t others = scene_object_count(scene); /* listed before */
-    int rc = scene_reserve_all(scene, &scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
-                               first + n, sizeof(Triangle));
+    int rc = scene_reserve_all(scene, &a->items, &a->capacity, first + n, sizeof(Triangle));
     Triangle *tris;
 
     if (rc == 0 && shaded)
         rc = scene_reserve_all(scene, (void **)&scene->shading, &scene->shading_capacity,
                                shade + n, sizeof *scene->shading);
-    kept = rc == 0 ? fill(scene_triangles(scene) + first, shaded ? scene->shading + shade : NULL, ctx)
-                   : SIZE_MAX;
+    tris = rc == 0 ? scene_triangles(scene) + first : NULL;
+    kept = rc == 0 ? fill(tris, shaded ? scene->shading + shade : NULL, ctx) : SIZE_MAX;
     if (kept > n) { /* as it was */
-        scene_fit(&scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity, entry_tris,
-                  sizeof(Triangle));
+        scene_fit(&a->items, &a->capacity, entry_tris, sizeof(Triangle));
         scene_fit((void **)&scene->shading, &scene->shading_capacity, entry_shading,
                   sizeof *scene->shading);
         return rc != 0 ? rc : -1;
     }
-    tris = scene_triangles(scene) + first;
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) if (kept >= 65536)
 #endif
@@ -490,11 +491,10 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
     }
     /* Give back the room of those without area: the capacities are those
      * that adding the kept ones one by one would make. */
-    scene->shapes[SHAPE_TRIANGLE].count = first + kept;
+    a->count = first + kept;
     if (kept > 0)
         scene->kinds |= 1u << SHAPE_TRIANGLE;
-    scene_fit(&scene->shapes[SHAPE_TRIANGLE].items, &scene->shapes[SHAPE_TRIANGLE].capacity,
-              scene_fit_capacity(scene->shapes[SHAPE_TRIANGLE].capacity, scene->shapes[SHAPE_TRIANGLE].count, entry_tris),
+    scene_fit(&a->items, &a->capacity, scene_fit_capacity(a->capacity, a->count, entry_tris),
               sizeof(Triangle));
     if (shaded) {
         scene->shading_count = shade + kept;

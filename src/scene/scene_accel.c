@@ -39,7 +39,8 @@ static real scene_reach(const Scene *scene)
 
 size_t scene_bounded_count(const Scene *scene)
 {
-    return scene_count_of(scene, SHAPE_SPHERE) + scene_count_of(scene, SHAPE_TRIANGLE) + scene_count_of(scene, SHAPE_CUBE) + scene_count_of(scene, SHAPE_SQUARE);
+    return scene_count_of(scene, SHAPE_SPHERE) + scene_count_of(scene, SHAPE_TRIANGLE) +
+           scene_count_of(scene, SHAPE_CUBE) + scene_count_of(scene, SHAPE_SQUARE);
 }
 
 enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
@@ -85,8 +86,8 @@ static void scene_build_buffers(Scene *scene, int threads)
         scene->eye_buffer = calloc(1, sizeof *scene->eye_buffer);
         if (scene->eye_buffer &&
             light_buffer_build(scene->eye_buffer, scene->camera.eye, scene_spheres(scene),
-                               scene_count_of(scene, SHAPE_SPHERE), pixels, scene_buffer_budget(scene, buffers),
-                               threads) != 0) {
+                               scene_count_of(scene, SHAPE_SPHERE), pixels,
+                               scene_buffer_budget(scene, buffers), threads) != 0) {
             free(scene->eye_buffer);
             scene->eye_buffer = NULL;
         }
@@ -97,17 +98,18 @@ static void scene_build_buffers(Scene *scene, int threads)
     for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
         if (!scene->lights[i].distant)
             (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
-                                     scene_spheres(scene), scene_count_of(scene, SHAPE_SPHERE), pixels,
-                                     scene_buffer_budget(scene, buffers), threads);
+                                     scene_spheres(scene), scene_count_of(scene, SHAPE_SPHERE),
+                                     pixels, scene_buffer_budget(scene, buffers), threads);
 }
 
 int scene_build_accel(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene_bounded_count(scene);
-    BvhShapes shapes = {scene_spheres(scene),  scene_count_of(scene, SHAPE_SPHERE), scene_triangles(scene),
-                        scene_count_of(scene, SHAPE_TRIANGLE), scene_cubes(scene), scene_count_of(scene, SHAPE_CUBE),
-                        scene_squares(scene),  scene_count_of(scene, SHAPE_SQUARE)};
+    BvhShapes shapes = {scene_spheres(scene),   scene_count_of(scene, SHAPE_SPHERE),
+                        scene_triangles(scene), scene_count_of(scene, SHAPE_TRIANGLE),
+                        scene_cubes(scene),     scene_count_of(scene, SHAPE_CUBE),
+                        scene_squares(scene),   scene_count_of(scene, SHAPE_SQUARE)};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;

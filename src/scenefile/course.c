@@ -294,7 +294,7 @@ static int course_objects(CourseParser *P, Scene *scene)
 }
 
 int course_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                     Scene *scene, SceneSource *source, Error *err)
+                      Scene *scene, SceneSource *source, Error *err)
 {
     CourseParser P;
 

@@ -46,8 +46,7 @@ SceneFormat load_detect(const char *text, size_t len)
 }
 
 int load_scene_text(const char *name, const char *text, size_t len, SceneFormat format,
-                    size_t memory_limit, int strict, Scene *scene, SceneSource *source,
-                    Error *err)
+                    size_t memory_limit, int strict, Scene *scene, SceneSource *source, Error *err)
 {
     SceneSource unkept;
     int rc;

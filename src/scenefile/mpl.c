@@ -436,8 +436,8 @@ static int mpl_lines(Mpl *M, Scene *scene)
     return rc;
 }
 
-int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit,
-                   int strict, Scene *scene, SceneSource *source, Error *err)
+int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory_limit, int strict,
+                   Scene *scene, SceneSource *source, Error *err)
 {
     Mpl M;
     int rc;

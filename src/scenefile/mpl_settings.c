@@ -70,8 +70,8 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
     M->source->fov = v[6];
     /* The seed's field of view is vertical; the camera's, horizontal. */
     half = angle_atan2(angle_tan(v[6] * ANGLE_PI / 360) * width, height);
-    switch (camera_look_at(&scene->camera, M->source->look_from, M->source->look_at, 2 * half, width,
-                           height)) {
+    switch (camera_look_at(&scene->camera, M->source->look_from, M->source->look_at, 2 * half,
+                           width, height)) {
     case CAMERA_VIEW_OK:
         return 0;
     case CAMERA_VIEW_NO_DIRECTION:

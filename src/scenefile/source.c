@@ -24,8 +24,8 @@ void source_free(SceneSource *src)
 
 int source_add_mesh(SceneSource *src, SceneMesh *mesh)
 {
-    if (grow_reserve((void **)&src->meshes, &src->mesh_capacity, src->mesh_count,
-                     sizeof *mesh) != 0) {
+    if (grow_reserve((void **)&src->meshes, &src->mesh_capacity, src->mesh_count, sizeof *mesh) !=
+        0) {
         free(mesh->path);
         free(mesh->opened);
         return -1;
