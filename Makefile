@@ -375,8 +375,9 @@ race: raytrace raytrace-diff $(BUILD)/scenegen
 	sh tests/bench/anchor.sh ./raytrace ./raytrace-diff $(BUILD)/scenegen
 
 # The course report: its class diagram checked against the code
-# (report/classes.sh), the module graph of docs/design.md written again
-# from the code (docs/modules.sh), the diagrams drawn by Graphviz, the PDF
+# (report/classes.sh), its quoted tables brought up to date from the pages
+# that measure them (report/quote.sh), the module graph of docs/design.md
+# written again from the code (docs/modules.sh), the diagrams drawn by Graphviz, the PDF
 # (A4, at most 6 pages) by pandoc and XeLaTeX (SVG figures through
 # rsvg-convert). Without those tools it says which are missing and fails.
 REPORT_TOOLS := pandoc:pandoc xelatex:texlive-xetex rsvg-convert:librsvg2-bin dot:graphviz
@@ -385,6 +386,7 @@ report:
 		missing="$$missing $${t%%:*} (Debian: $${t#*:})"; done; \
 	if [ -n "$$missing" ]; then echo "make report: missing:$$missing" >&2; exit 1; fi
 	sh report/classes.sh
+	sh report/quote.sh >report/report.md.new && mv report/report.md.new report/report.md
 	sh docs/modules.sh >docs/modules.dot
 	dot -Tsvg docs/modules.dot -o docs/modules.svg
 	dot -Tsvg report/classes.dot -o report/classes.svg

@@ -15,7 +15,9 @@
 #  4. every picture of report/figures is the renderer's own: the same bytes
 #     as docs/gallery/ (which tests/cli.sh renders again) or docs/trade-*.svg
 #     (which make trade draws) or docs/bench-*.svg (make bench, make race);
-#  5. report/report.pdf, once make report has built it, is at most 6 pages
+#  5. every table report.md quotes (report/quote.sh) is the table its page
+#     holds today, and a quote of a table that is not there is refused;
+#  6. report/report.pdf, once make report has built it, is at most 6 pages
 #     of A4 (pdfinfo, from poppler-utils, when installed;
 #     RAYTRACE_REPORT_PDF=required makes both the PDF and pdfinfo a must).
 #
@@ -108,7 +110,25 @@ for f in report/figures/*; do
 done
 [ -z "$bad" ] && pass || fail "report/figures holds pictures that are not the renderer's:$bad"
 
-# 5. The PDF: at most 6 pages of A4.
+# 5. The quoted tables are their pages' (make report brings them up to date).
+if sh report/quote.sh >"$T/quoted.md" 2>"$T/err" && cmp -s "$T/quoted.md" report/report.md; then
+    pass
+else
+    fail "report/report.md's quoted tables are not those of their pages: run make report" \
+        "$(cat "$T/err"; diff report/report.md "$T/quoted.md" | head -20)"
+fi
+grep -c '^<!-- quote ' report/report.md >"$T/quotes"
+[ "$(cat "$T/quotes")" -ge 1 ] && pass || fail "report/report.md quotes no table"
+printf '<!-- quote docs/benchmarks.md "## No such heading" columns 1 2 -->\n<!-- end quote -->\n' \
+    >"$T/planted-quote.md"
+if sh report/quote.sh "$T/planted-quote.md" >"$T/out" 2>&1; then
+    fail "report/quote.sh quotes a table that is not there"
+else
+    grep -q 'no table after "## No such heading"' "$T/out" && pass ||
+        fail "report/quote.sh misnames a missing table" "$(cat "$T/out")"
+fi
+
+# 6. The PDF: at most 6 pages of A4.
 need=${RAYTRACE_REPORT_PDF:-}
 if [ -f report/report.pdf ] && command -v pdfinfo >/dev/null 2>&1; then
     pdfinfo report/report.pdf >"$T/info" 2>&1
