@@ -174,6 +174,29 @@ if have cjpeg && have djpeg; then
         done
     done
     echo "jpeg: $damaged damaged files read as djpeg reads them"
+    # Progressive files cut short at five places each, where djpeg smooths
+    # the coefficients that never came: with two block rows an MCU row
+    # (2x2, 1x2), whose second and next-to-last MCU rows libjpeg-turbo 2.1
+    # smooths from nearer rows than 3.0.1 does, and two blocks wide (16
+    # pixels), whose window's right end it takes from the first column.
+    "$RT" -q --size 16x240 scenes/materials.txt "$T/narrow.ppm"
+    cuts=0
+    for opts in "-sample 2x2 $T/render.ppm" "-sample 1x2 $T/render.ppm" \
+        "-sample 1x1 $T/narrow.ppm" "-sample 2x2 $T/narrow.ppm"; do
+        # shellcheck disable=SC2086
+        cjpeg -quality 85 -progressive $opts >"$T/prog.jpg"
+        size=$(wc -c <"$T/prog.jpg")
+        for part in 2 3 4 5 6; do
+            head -c $((size * part / 7)) "$T/prog.jpg" >"$T/prog-cut.jpg"
+            djpeg -rgb -outfile "$T/prog-d.ppm" "$T/prog-cut.jpg" 2>/dev/null
+            [ -s "$T/prog-d.ppm" ] || continue # cut before its first scan's data
+            "$DIFF" "$T/prog-d.ppm" "$T/prog-cut.jpg" >"$T/out" 2>&1 && pass ||
+                fail "progressive cjpeg $opts file cut to $part/7: not djpeg's pixels" \
+                    "$(cat "$T/out")"
+            cuts=$((cuts + 1))
+        done
+    done
+    echo "jpeg: $cuts progressive files cut short read as djpeg reads them"
 fi
 
 # --- 2. Exif orientation ---

@@ -1,7 +1,7 @@
 /* jpeg_smooth.c: block smoothing of progressive JPEGs whose coefficients
  * did not all come (see jpeg_decode.h): where a file is cut short, or its
- * scans stop before the last bits, djpeg (libjpeg-turbo 2.1 and later)
- * estimates the first AC coefficients of each block from the DC values of
+ * scans stop before the last bits, djpeg (libjpeg-turbo 2.1, as Debian
+ * ships it; 3.0.1 moved the window's edges, below) estimates the first AC coefficients of each block from the DC values of
  * the 5 x 5 blocks around it (JPEG's annex K.8, widened), and its DC too
  * where no AC coefficient came at all; we do the same, so that such a
  * file gives djpeg's picture. */
@@ -82,16 +82,26 @@ static int16_t jpeg_smooth_estimate(int64_t num, int64_t q, int al)
     return (int16_t)(uint16_t)(uint64_t)(num < 0 ? -pred : pred);
 }
 
+/* Returns the column of block bx's neighbour j (0..4, 2 the block itself)
+ * in a component wb blocks wide, as libjpeg-turbo 2.1 slides its window:
+ * clamped to the picture, but for wb = 2, where the window's right end
+ * keeps the first column (3.0.1 clamps those too). */
+static int jpeg_smooth_column(int bx, int j, int wb)
+{
+    int x = bx + j - 2;
+
+    if (wb == 2 && bx + j >= 4)
+        return 0;
+    return x < 0 ? 0 : x > wb - 1 ? wb - 1 : x;
+}
+
 void jpeg_smooth_block(const Jpeg *J, const JpegComponent *c, int bx, int by, int16_t ws[64])
 {
     /* The component's blocks that are the picture's, its MCU rows (libjpeg's
-     * iMCU rows) and the block rows it counts in the one of by. */
+     * iMCU rows), the last of them, and the block rows of the one of by. */
     int wb = (c->width + 7) / 8, hb = (c->height + 7) / 8;
-    int rows = (J->height + 8 * J->vmax - 1) / (8 * J->vmax), imcu = by / c->v;
-    int block_rows = imcu < rows - 1 ? c->v : (hb % c->v ? hb % c->v : c->v);
-    /* libjpeg tells the picture's edge by this count (for a component of
-     * several block rows a row, it is not always the picture's). */
-    int image_row = imcu * block_rows + by % c->v, image_rows = block_rows * rows;
+    int last = (J->height + 8 * J->vmax - 1) / (8 * J->vmax) - 1, imcu = by / c->v;
+    int block_rows = imcu < last ? c->v : (hb % c->v ? hb % c->v : c->v), b = by % c->v;
     const int *bits = imcu > J->last_good ? c->prev_bits : c->bits;
     int latched[10], row[5], dc[25], change_dc = 1;
     const int16_t *blk = c->coef + 64 * ((size_t)by * (size_t)c->bw + (size_t)bx);
@@ -104,17 +114,21 @@ void jpeg_smooth_block(const Jpeg *J, const JpegComponent *c, int bx, int by, in
         latched[k] = bits == c->prev_bits && J->scans <= 1 ? -1 : bits[k];
     for (int k = 1; k < 10; k++)
         change_dc &= latched[k] == -1;
-    /* The rows of the 5 x 5 neighbourhood, repeated at the edges. */
+    /* The rows of the 5 x 5 neighbourhood, repeated at the edges as
+     * libjpeg-turbo 2.1 (Debian's djpeg) tells them: by the block row's
+     * place in its MCU row and the MCU row's in the picture, which for a
+     * component of two block rows an MCU row keeps the second and the
+     * next-to-last MCU rows from their second neighbours (3.0.1 counts
+     * the picture's block rows). */
     row[2] = by;
-    row[1] = image_row > 0 ? by - 1 : by;
-    row[0] = image_row > 1 ? by - 2 : row[1];
-    row[3] = image_row < image_rows - 1 ? by + 1 : by;
-    row[4] = image_row < image_rows - 2 ? by + 2 : row[3];
+    row[1] = b > 0 || imcu > 0 ? by - 1 : by;
+    row[0] = b > 1 || imcu > 1 ? by - 2 : row[1];
+    row[3] = b < block_rows - 1 || imcu < last ? by + 1 : by;
+    row[4] = b < block_rows - 2 || imcu + 1 < last ? by + 2 : row[3];
     for (int i = 0; i < 5; i++)
         for (int j = 0; j < 5; j++) {
-            int x = bx + j - 2;
-            x = x < 0 ? 0 : x > wb - 1 ? wb - 1 : x;
-            dc[5 * i + j] = c->coef[64 * ((size_t)row[i] * (size_t)c->bw + (size_t)x)];
+            size_t x = (size_t)jpeg_smooth_column(bx, j, wb);
+            dc[5 * i + j] = c->coef[64 * ((size_t)row[i] * (size_t)c->bw + x)];
         }
     for (int k = 1; k < (change_dc ? 10 : 6); k++) {
         int pos = jpeg_smooth_pos[k];
