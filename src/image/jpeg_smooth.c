@@ -1,10 +1,11 @@
 /* jpeg_smooth.c: block smoothing of progressive JPEGs whose coefficients
  * did not all come (see jpeg_decode.h): where a file is cut short, or its
  * scans stop before the last bits, djpeg (libjpeg-turbo 2.1, as Debian
- * ships it; 3.0.1 moved the window's edges, below) estimates the first AC coefficients of each block from the DC values of
- * the 5 x 5 blocks around it (JPEG's annex K.8, widened), and its DC too
- * where no AC coefficient came at all; we do the same, so that such a
- * file gives djpeg's picture. */
+ * ships it; 3.0.1 moved the window's edges, below) estimates the first AC
+ * coefficients of each block from the DC values of the 5 x 5 blocks
+ * around it (JPEG's annex K.8, widened), and its DC too where no AC
+ * coefficient came at all; we do the same, so that such a file gives
+ * djpeg's picture. */
 #include <stdint.h>
 
 #include "jpeg_decode.h"
