@@ -197,6 +197,25 @@ if have cjpeg && have djpeg; then
         done
     done
     echo "jpeg: $cuts progressive files cut short read as djpeg reads them"
+    # Junk between the data and the end marker: the bytes passed over are
+    # counted as djpeg counts them, after the bytes the decoder read ahead
+    # (djpeg's read-ahead depends on how its 4096-byte reads fall: the
+    # counts may differ by the 8 bytes its bit buffer holds).
+    cjpeg -quality 85 -outfile "$T/good.jpg" "$T/render.ppm"
+    size=$(wc -c <"$T/good.jpg")
+    for n in 17 300; do
+        { head -c $((size - 2)) "$T/good.jpg"; head -c "$n" /dev/zero | tr '\0' A
+            tail -c 2 "$T/good.jpg"; } >"$T/junk.jpg"
+        djpeg -rgb -outfile "$T/junk-d.ppm" "$T/junk.jpg" 2>"$T/djpeg-err"
+        count=$(sed -n 's/.*: \([0-9]*\) extraneous bytes.*/\1/p' "$T/djpeg-err")
+        "$DIFF" "$T/junk-d.ppm" "$T/junk.jpg" >"$T/out" 2>"$T/err"
+        status=$?
+        ours=$(sed -n 's/.*: \([0-9]*\) extraneous bytes before marker 0xD9.*/\1/p' "$T/err")
+        [ "$status" = 0 ] && [ -n "$count" ] && [ -n "$ours" ] && [ "$ours" -le "$n" ] &&
+            [ $((ours - count)) -le 8 ] && [ $((count - ours)) -le 8 ] &&
+            pass || fail "$n junk bytes before the end: not djpeg's pixels or count" \
+            "$(cat "$T/djpeg-err" "$T/err" "$T/out")"
+    done
 fi
 
 # --- 2. Exif orientation ---

@@ -357,10 +357,12 @@ int jpeg_scan_data(Jpeg *J, const JpegScan *s)
     }
     (void)jpeg_ran_out(J);
     /* On to the marker after the data, passing over (with a warning) what
-     * is left before it, restart markers included. */
+     * is left before it, restart markers included. The bytes counted as
+     * passed over are those after the ones read into the bit buffer, as
+     * libjpeg counts them at a scan's end (it drops its buffer unsaid;
+     * it reads further ahead, so its count may be a few bytes less). */
     if (!J->marker) {
-        size_t left = J->nbits > J->pad ? (size_t)(J->nbits - J->pad) / 8 : 0;
-        if (jpeg_find_marker(J, left) < 0)
+        if (jpeg_find_marker(J, 0) < 0)
             J->pos = J->len;
     }
     while (J->pos + 1 < J->len && J->data[J->pos + 1] >= 0xD0 && J->data[J->pos + 1] <= 0xD7) {
