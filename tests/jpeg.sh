@@ -128,6 +128,11 @@ fi
 # of every valid range reach the inverse DCT), fill bytes before a marker,
 # a frame 256 rows taller than its data, junk between segments, no end
 # marker, or cut short.
+# marker_at FILE XX N: the offset of the Nth marker 0xFF 0xXX in FILE.
+marker_at() {
+    od -An -v -tx1 -w1 "$1" | awk -v m="$2" -v n="$3" '
+        $1 == "ff" { f = NR; next } $1 == m && f == NR - 1 && ++k == n { print NR - 2; exit }'
+}
 corrupt() {
     size=$(wc -c <"$1")
     sos=$(od -An -v -tx1 -w1 "$1" | awk '/ff/ { f = NR } /da/ && f == NR - 1 { print NR; exit }')
@@ -197,6 +202,34 @@ if have cjpeg && have djpeg; then
         done
     done
     echo "jpeg: $cuts progressive files cut short read as djpeg reads them"
+    # Tables as libjpeg-turbo takes them: a sequential file without its
+    # Huffman tables (Motion JPEG leaves out the standard's, which cjpeg
+    # writes) is read with the standard's; a progressive AC scan naming DC
+    # table 15, which it does not use, is read; a DC table with a symbol
+    # above 15 is refused.
+    cjpeg -quality 85 -outfile "$T/good.jpg" "$T/render.ppm"
+    dht=$(marker_at "$T/good.jpg" c4 1)
+    dht_len=$(od -An -tu1 -j $((dht + 2)) -N 2 "$T/good.jpg" | awk '{ print $1 * 256 + $2 }')
+    { head -c "$dht" "$T/good.jpg"; tail -c +$((dht + 3 + dht_len)) "$T/good.jpg"; } >"$T/notables.jpg"
+    djpeg -rgb -outfile "$T/notables-d.ppm" "$T/notables.jpg" 2>/dev/null
+    "$DIFF" "$T/notables-d.ppm" "$T/notables.jpg" >"$T/out" 2>&1 && pass ||
+        fail "a file without Huffman tables: not djpeg's pixels" "$(cat "$T/out")"
+    cjpeg -quality 85 -progressive -outfile "$T/prog.jpg" "$T/render.ppm"
+    sos=$(marker_at "$T/prog.jpg" da 2)
+    cp "$T/prog.jpg" "$T/dc15.jpg"
+    printf '\360' | dd of="$T/dc15.jpg" bs=1 seek=$((sos + 6)) conv=notrunc 2>/dev/null
+    djpeg -rgb -outfile "$T/dc15-d.ppm" "$T/dc15.jpg" 2>/dev/null
+    "$DIFF" "$T/dc15-d.ppm" "$T/dc15.jpg" >"$T/out" 2>&1 && pass ||
+        fail "an AC scan naming DC table 15: not djpeg's pixels" "$(cat "$T/out")"
+    cp "$T/good.jpg" "$T/dc-symbol.jpg"
+    printf '\040' | dd of="$T/dc-symbol.jpg" bs=1 seek=$((dht + 21)) conv=notrunc 2>/dev/null
+    if djpeg -rgb -outfile "$T/dc-symbol-d.ppm" "$T/dc-symbol.jpg" 2>/dev/null; then
+        fail "djpeg reads a DC table with a symbol above 15: the test is wrong"
+    else
+        expect_exit "a DC table with a symbol above 15" 2 "$DIFF" "$T/dc-symbol.jpg" "$T/dc-symbol.jpg"
+        grep -q "a DC symbol above 15" "$T/err" && pass ||
+            fail "a DC table with a symbol above 15: not refused as such" "$(cat "$T/err")"
+    fi
     # Junk between the data and the end marker: the bytes passed over are
     # counted as djpeg counts them, after the bytes the decoder read ahead
     # (djpeg's read-ahead depends on how its 4096-byte reads fall: the

@@ -36,6 +36,8 @@ typedef struct {
     int32_t delta[17];                     /* symbol index of a code = code + delta */
     uint8_t symbols[256];
     int defined;
+    int dc_ok;                             /* every symbol is 0..15, as a DC
+                                              table's must be */
 } JpegHuffman;
 
 /* A component of the frame and its decoding state. */

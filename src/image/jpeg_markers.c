@@ -37,6 +37,9 @@ static int jpeg_build(JpegHuffman *h, const uint8_t counts[16], const uint8_t *s
     }
     h->maxcode[17] = INT32_MAX;
     h->defined = 1;
+    h->dc_ok = 1;
+    for (int i = 0; i < n; i++)
+        h->dc_ok &= symbols[i] <= 15;
     return 0;
 }
 
@@ -269,8 +272,6 @@ static int jpeg_sos(Jpeg *J, int n)
         s.c[i] = &J->comp[k];
         s.c[i]->dc = tables >> 4;
         s.c[i]->ac = tables & 15;
-        if (s.c[i]->dc > 3 || s.c[i]->ac > 3)
-            return jpeg_fail(J, "a scan names a Huffman table above 3%s", NULL);
     }
     s.ss = p[1 + 2 * s.n];
     s.se = p[2 + 2 * s.n];
@@ -285,12 +286,30 @@ static int jpeg_sos(Jpeg *J, int n)
         s.se = 63;
         s.ah = s.al = 0;
     }
+    /* A sequential file's DC and AC tables 0 and 1, when no segment gave
+     * them, are the standard's examples, as libjpeg-turbo takes them. */
+    for (int t = 0; t < 2 && !J->progressive; t++) {
+        if (!J->dc[t].defined)
+            (void)jpeg_build(&J->dc[t], jpeg_std_dc[t].counts, jpeg_std_dc[t].symbols,
+                             jpeg_std_dc[t].n);
+        if (!J->ac[t].defined)
+            (void)jpeg_build(&J->ac[t], jpeg_std_ac[t].counts, jpeg_std_ac[t].symbols,
+                             jpeg_std_ac[t].n);
+    }
     for (int i = 0; i < s.n; i++) {
         JpegComponent *c = s.c[i];
+        /* Only the tables the scan decodes with must be there (libjpeg
+         * passes over the others' numbers). */
         int needs_dc = !J->progressive || (s.ss == 0 && s.ah == 0);
         int needs_ac = !J->progressive || s.ss > 0;
+        if ((needs_dc && c->dc > 3) || (needs_ac && c->ac > 3))
+            return jpeg_fail(J, "a scan names a Huffman table above 3%s", NULL);
         if ((needs_dc && !J->dc[c->dc].defined) || (needs_ac && !J->ac[c->ac].defined))
             return jpeg_fail(J, "a scan uses a Huffman table not defined before it%s", NULL);
+        /* As libjpeg, a DC table with a symbol past 15 is refused when a
+         * scan takes it up, before its data. */
+        if (needs_dc && !J->dc[c->dc].dc_ok)
+            return jpeg_fail(J, "bad Huffman table: a DC symbol above 15%s", NULL);
         if (!c->latched) {
             if (!J->qt_defined[c->tq])
                 return jpeg_fail(J, "a component's quantisation table is not defined%s", NULL);
