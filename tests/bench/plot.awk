@@ -31,6 +31,9 @@ NF >= 3 && (!logx || $2 > 0) && (!logy || $3 > 0) {
 }
 
 END {
+    # Room on the right for the longest series name (about 7 px a letter).
+    for (k = 1; k <= ns; k++)
+        if (36 + 7 * length(order[k]) > R) { W += 36 + 7 * length(order[k]) - R; R = 36 + 7 * length(order[k]) }
     if (n == 0) { x0 = 0; x1 = 1; y0 = 0; y1 = 1 }
     if (x1 == x0) { x0 -= 0.5; x1 += 0.5 }
     if (y1 == y0) { y0 -= 0.5; y1 += 0.5 }
@@ -39,7 +42,8 @@ END {
     # Log axes spanning a decade or more are cut at whole decades.
     if (logx && x1 - x0 >= 1) { x0 = floor(x0); x1 = ceil(x1) }
     if (logy && y1 - y0 >= 1) { y0 = floor(y0); y1 = ceil(y1) }
-    split("#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #17becf", colours, " ")
+    # Ten colours; past ten series they come again, dashed.
+    split("#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #17becf #8c564b #e377c2 #7f7f7f #bcbd22", colours, " ")
     printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" font-family=\"sans-serif\" font-size=\"12\">\n", W, H
     printf "<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", W, H
     printf "<text x=\"%d\" y=\"24\" font-size=\"15\">%s</text>\n", L, esc(title)
@@ -64,19 +68,23 @@ END {
     printf "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">%s%s</text>\n", (L + W - R) / 2, H - 12, esc(xlabel), logx ? " (log scale)" : ""
     printf "<text x=\"16\" y=\"%d\" text-anchor=\"middle\" transform=\"rotate(-90 16 %d)\">%s%s</text>\n", (T + H - B) / 2, (T + H - B) / 2, esc(ylabel), logy ? " (log scale)" : ""
     for (k = 1; k <= ns; k++) {
-        c = colours[(k - 1) % 6 + 1]
+        c = colours[(k - 1) % 10 + 1]
+        dash = k > 10 ? " stroke-dasharray=\"6 3\"" : ""
         pts = ""
         for (i = 1; i <= n; i++)
             if (s[i] == order[k])
                 pts = pts sprintf("%.1f,%.1f ", px(x[i]), py(y[i]))
-        printf "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"%s\"/>\n", c, pts
+        printf "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\"%s points=\"%s\"/>\n", c, dash, pts
         for (i = 1; i <= n; i++)
             if (s[i] == order[k]) {
                 printf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>\n", px(x[i]), py(y[i]), c
                 if (lab[i] != "")
                     printf "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" fill=\"%s\">%s</text>\n", px(x[i]) + 5, py(y[i]) - 5, c, esc(lab[i])
             }
-        printf "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>\n", W - R + 12, T + 18 * (k - 1), c
+        if (dash != "")
+            printf "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" stroke-width=\"3\"%s/>\n", W - R + 8, T + 18 * (k - 1) + 6, W - R + 26, T + 18 * (k - 1) + 6, c, dash
+        else
+            printf "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>\n", W - R + 12, T + 18 * (k - 1), c
         printf "<text x=\"%d\" y=\"%d\">%s</text>\n", W - R + 30, T + 18 * (k - 1) + 11, esc(order[k])
     }
     print "</svg>"
