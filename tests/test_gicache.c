@@ -199,6 +199,52 @@ static void gicache_lookup_is_the_weighted_mean(void)
     gicache_free(&c);
 }
 
+/* A lookup reads every record whose reach holds the point, wherever the
+ * point falls among the grid's cells: a record whose reach spans three
+ * cells of its scale is found from the third (it was missed there), and
+ * over a field of records and points the lookups count what testing every
+ * record counts, before and after the records are filed again. */
+static void gicache_lookup_finds_every_record_in_reach(void)
+{
+    GiCache c;
+    /* Reach 2 x 0.3 x 1 = 0.6: cells of side 1; its box, -0.1 to 1.1
+     * across, spans three. */
+    GiPlace edge = {vec3(0.5, 0.5, 0.5), vec3(0, 0, 1), 1, 0, 0};
+    GiValue v[1];
+    Colour out;
+    uint64_t h = 12345;
+    int same = 0;
+
+    memset(v, 0, sizeof v);
+    gicache_init(&c, 0.3, 1, 0);
+    CHECK(gicache_add(&c, &edge, v) == 0);
+    CHECK_INT(1, gicache_lookup(&c, 0, 2, vec3(1.05, 0.5, 0.5), vec3(0, 0, 1), &out));
+    CHECK_INT(1, gicache_lookup(&c, 0, 2, vec3(0.5, -0.05, 0.5), vec3(0, 0, 1), &out));
+    gicache_free(&c);
+    gicache_init(&c, 0.3, 1, 0);
+    for (int i = 0; i < 300; i++) {
+        GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
+        h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+        p.point = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
+        p.radius = 0.05 + (double)(h >> 8 & 255) / 100;
+        CHECK(gicache_add(&c, &p, v) == 0);
+    }
+    for (int pass = 0; pass < 2; pass++) {
+        for (int k = 0; k < 400; k++) {
+            Vec3 x, n = vec3(0, 0, 1);
+            int brute = 0;
+            h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+            x = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
+            for (size_t i = 0; i < c.count; i++)
+                brute += gicache_weight(gicache_error(&c.places[i], x, n), 0.6) > 0;
+            same += gicache_lookup(&c, 0, 2, x, n, &out) == brute;
+        }
+        gicache_refile(&c);
+    }
+    CHECK_INT(800, same);
+    gicache_free(&c);
+}
+
 /* A cache whose limit is too small refuses the record, unchanged. */
 static void gicache_limit_refuses_records(void)
 {
@@ -222,5 +268,6 @@ const TestCase gicache_tests[] = {
     {"gicache_error_and_weight", gicache_error_and_weight},
     {"gicache_lookup_is_the_weighted_mean", gicache_lookup_is_the_weighted_mean},
     {"gicache_limit_refuses_records", gicache_limit_refuses_records},
+    {"gicache_lookup_finds_every_record_in_reach", gicache_lookup_finds_every_record_in_reach},
     {NULL, NULL},
 };

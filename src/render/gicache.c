@@ -16,19 +16,28 @@
  * their normals is below -GICACHE_FRONT R (Ward's test). */
 #define GICACHE_FRONT 0.05
 
+/* The most cells a record is entered in. */
+#define GICACHE_CELLS 27
+
 /* An empty slot's head, a list's end. */
 #define GICACHE_NONE UINT32_MAX
 
-/* A record's entry in a cell: the record, and the cell's next entry. */
+/* A record's entry in a cell: the record's point and radius (as when it
+ * was entered: a radius only shrinks, so this one never lets a lookup
+ * pass a record by that it should read), the record, and the cell's next
+ * entry. A lookup tests the distance here, reading the record only when
+ * it is near. */
 typedef struct GiEntry {
+    Vec3 point;
+    double radius;
     uint32_t record, next;
 } GiEntry;
 
 /* A cell of the hash grid: a cube of 2^scale a side at (ix, iy, iz) in
  * units of its side; head is its last entry added (then the entries'
  * next). A record is entered in every cell of its scale its reach
- * overlaps (at most 8: it is no wider than a cell), so a lookup reads one
- * cell a scale. */
+ * overlaps (at most 27: its reach is less than a cell's side, its box at
+ * most three cells across), so a lookup reads one cell a scale. */
 typedef struct GiCell {
     int64_t ix, iy, iz;
     int scale;
@@ -238,7 +247,8 @@ void gicache_free(GiCache *c)
 /* Returns the bytes of records of `records` slots and a grid of `cells`. */
 static size_t gicache_bytes(const GiCache *c, size_t records, size_t cells)
 {
-    return records * (sizeof(GiPlace) + 8 * sizeof(GiEntry) + (size_t)c->levels * sizeof(GiValue)) +
+    return records * (sizeof(GiPlace) + GICACHE_CELLS * sizeof(GiEntry) +
+                      (size_t)c->levels * sizeof(GiValue)) +
            cells * sizeof(GiCell);
 }
 
@@ -310,7 +320,7 @@ static int gicache_reserve(GiCache *c)
 
     if (c->count == records)
         records = records ? 2 * records : 256;
-    if (2 * (c->cell_count + 8) > cells)
+    if (2 * (c->cell_count + GICACHE_CELLS) > cells)
         cells = cells ? 2 * cells : 512;
     if (records == c->capacity && cells == c->cell_capacity)
         return 0;
@@ -326,7 +336,7 @@ static int gicache_reserve(GiCache *c)
         if (!p)
             return -1;
         c->places = p;
-        e = realloc(c->entries, 8 * records * sizeof *e);
+        e = realloc(c->entries, GICACHE_CELLS * records * sizeof *e);
         if (!e)
             return -1;
         c->entries = e;
@@ -368,6 +378,8 @@ static void gicache_enter(GiCache *c, uint32_t i, int s, int64_t ix, int64_t iy,
         c->cells[slot].iz = iz;
         c->cell_count++;
     }
+    e->point = c->places[i].point;
+    e->radius = c->places[i].radius;
     e->record = i;
     e->next = c->cells[slot].head;
     c->cells[slot].head = (uint32_t)c->entry_count++;
@@ -425,9 +437,9 @@ static void gicache_file(GiCache *c, uint32_t i)
     hi[0] = gicache_coord((real)(place->point.x + reach), s);
     hi[1] = gicache_coord((real)(place->point.y + reach), s);
     hi[2] = gicache_coord((real)(place->point.z + reach), s);
-    for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 1; z++)
-        for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 1; y++)
-            for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 1; x++)
+    for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 2; z++)
+        for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 2; y++)
+            for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 2; x++)
                 gicache_enter(c, i, s, x, y, z);
     gicache_use_scale(c, s);
 }
@@ -449,6 +461,9 @@ int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values)
 
 void gicache_refile(GiCache *c)
 {
+    GiEntry *packed;
+    size_t next = 0;
+
     for (size_t k = 0; k < c->cell_capacity; k++)
         c->cells[k].head = GICACHE_NONE;
     c->cell_count = 0;
@@ -456,6 +471,26 @@ void gicache_refile(GiCache *c)
     c->scale_count = 0;
     for (size_t i = 0; i < c->count; i++)
         gicache_file(c, (uint32_t)i);
+    /* Each cell's entries side by side, in the same order, so that a
+     * lookup reads them from one stretch of memory (without the room, as
+     * they were: the same answers). */
+    packed = c->entry_count ? malloc(c->entry_count * sizeof *packed) : NULL;
+    if (!packed)
+        return;
+    for (size_t k = 0; k < c->cell_capacity; k++) {
+        uint32_t e = c->cells[k].head;
+        if (e == GICACHE_NONE)
+            continue;
+        c->cells[k].head = (uint32_t)next;
+        for (; e != GICACHE_NONE; e = c->entries[e].next) {
+            packed[next] = c->entries[e];
+            packed[next].next = (uint32_t)(next + 1);
+            next++;
+        }
+        packed[next - 1].next = GICACHE_NONE;
+    }
+    memcpy(c->entries, packed, c->entry_count * sizeof *packed);
+    free(packed);
 }
 
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
@@ -477,13 +512,15 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
                                    gicache_coord(x.z, s));
 
         for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
-            uint32_t i = c->entries[e].record;
-            Vec3 d = vec3_sub(x, c->places[i].point);
-            double reach = a * c->places[i].radius, w;
+            const GiEntry *entry = &c->entries[e];
+            uint32_t i = entry->record;
+            Vec3 d = vec3_sub(x, entry->point);
+            double reach = a * entry->radius, w;
             Colour g;
 
             /* Out of reach by distance alone (its error is at least
-             * |d| / R): skipped before the square roots. */
+             * |d| / R): skipped before the square roots, and before the
+             * record is read. */
             if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6) ||
                 c->places[i].first > level)
                 continue;
