@@ -232,12 +232,16 @@ static void gicache_lookup_finds_every_record_in_reach(void)
     for (int pass = 0; pass < 2; pass++) {
         for (int k = 0; k < 400; k++) {
             Vec3 x, n = vec3(0, 0, 1);
-            int brute = 0;
+            int brute = 0, near = 0;
             h = h * 6364136223846793005ULL + 1442695040888963407ULL;
             x = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
-            for (size_t i = 0; i < c.count; i++)
+            for (size_t i = 0; i < c.count; i++) {
                 brute += gicache_weight(gicache_error(&c.places[i], x, n), 0.6) > 0;
-            same += gicache_lookup(&c, 0, 2, x, n, &out) == brute;
+                near += gicache_weight(gicache_error(&c.places[i], x, n), 0.3) > 0;
+            }
+            /* Reach 2 reads the wider grid, reach 1 the finer. */
+            same += gicache_lookup(&c, 0, 2, x, n, &out) == brute &&
+                    gicache_lookup(&c, 0, 1, x, n, &out) == near;
         }
         gicache_refile(&c);
     }

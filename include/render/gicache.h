@@ -104,20 +104,29 @@ double gicache_weight(double e, double a);
  * its gradients (each channel at least 0). */
 Colour gicache_extrapolate(const GiPlace *place, const GiValue *v, Vec3 x, Vec3 nx);
 
-/* The cache: records, their values (levels of them each), and a hash grid
- * over space by which a lookup finds the records near a point. */
+/* A hash grid over space by which a lookup finds the records near a
+ * point: each record is entered in the cells its reach (reach a R) overlaps,
+ * cells of at least that reach a side. */
+typedef struct GiGrid {
+    double reach;      /* the widest lookup reach it serves */
+    struct GiEntry *entries; /* the records' places in the grid's cells */
+    size_t entry_count;
+    struct GiCell *cells; /* open addressing, cell_capacity (a power of 2) */
+    size_t cell_count, cell_capacity;
+    int scales[64];    /* the cell sizes in use, as exponents of 2, ascending */
+    int scale_count;
+} GiGrid;
+
+/* The cache: records, their values (levels of them each), and two grids:
+ * one for the lookups of reach 1 (most of them), its cells the smaller,
+ * and one for the wider ones. */
 typedef struct GiCache {
     double a;          /* accuracy: the error a record is valid within */
     int levels;        /* bounce levels each record keeps, >= 1 */
     GiPlace *places;   /* count of them, in the order added */
     GiValue *values;   /* count x levels: record i's level k at i x levels + k */
-    struct GiEntry *entries; /* the records' places in the grid's cells */
-    size_t entry_count;
     size_t count, capacity;
-    struct GiCell *cells; /* open addressing, cell_capacity (a power of 2) */
-    size_t cell_count, cell_capacity;
-    int scales[64];    /* the cell sizes in use, as exponents of 2, ascending */
-    int scale_count;
+    GiGrid grids[2];   /* reach 1, then the widest reach */
     size_t limit;      /* bytes the cache may take; 0: no limit */
 } GiCache;
 

@@ -8,15 +8,15 @@
 #include "base/hash.h"
 #include "math/angle.h"
 
-/* The most a lookup's reach may widen the accuracy by: a record is filed
- * in a cell of at least GICACHE_MAX_REACH a R a side. */
+/* The most a lookup's reach may widen the accuracy by: the wider grid's
+ * cells are at least GICACHE_MAX_REACH a R a side. */
 #define GICACHE_MAX_REACH 2.0
 
 /* A record is in front of a point when their offset along the mean of
  * their normals is below -GICACHE_FRONT R (Ward's test). */
 #define GICACHE_FRONT 0.05
 
-/* The most cells a record is entered in. */
+/* The most cells of a grid a record is entered in. */
 #define GICACHE_CELLS 27
 
 /* An empty slot's head, a list's end. */
@@ -233,37 +233,44 @@ void gicache_init(GiCache *c, double a, int levels, size_t limit)
     c->a = a;
     c->levels = levels;
     c->limit = limit;
+    c->grids[0].reach = 1;
+    c->grids[1].reach = GICACHE_MAX_REACH;
 }
 
 void gicache_free(GiCache *c)
 {
     free(c->places);
     free(c->values);
-    free(c->entries);
-    free(c->cells);
+    for (int k = 0; k < 2; k++) {
+        free(c->grids[k].entries);
+        free(c->grids[k].cells);
+    }
     gicache_init(c, c->a, c->levels, c->limit);
 }
 
-/* Returns the bytes of records of `records` slots and a grid of `cells`. */
-static size_t gicache_bytes(const GiCache *c, size_t records, size_t cells)
+/* Returns the bytes of records of `records` slots and grids of cells[0]
+ * and cells[1] cells. */
+static size_t gicache_bytes(const GiCache *c, size_t records, const size_t cells[2])
 {
-    return records * (sizeof(GiPlace) + GICACHE_CELLS * sizeof(GiEntry) +
+    return records * (sizeof(GiPlace) + 2 * GICACHE_CELLS * sizeof(GiEntry) +
                       (size_t)c->levels * sizeof(GiValue)) +
-           cells * sizeof(GiCell);
+           (cells[0] + cells[1]) * sizeof(GiCell);
 }
 
 size_t gicache_memory(const GiCache *c)
 {
-    return gicache_bytes(c, c->capacity, c->cell_capacity);
+    size_t cells[2] = {c->grids[0].cell_capacity, c->grids[1].cell_capacity};
+
+    return gicache_bytes(c, c->capacity, cells);
 }
 
-/* Returns the scale (exponent of 2) of the cells a record of radius R is
- * filed in: a side of at least its widest reach. */
-static int gicache_scale_of(const GiCache *c, double radius)
+/* Returns the scale (exponent of 2) of grid g's cells a record of radius R
+ * is filed in: a side of at least its reach there. */
+static int gicache_scale_of(const GiCache *c, const GiGrid *g, double radius)
 {
     int e;
 
-    frexp(GICACHE_MAX_REACH * c->a * radius, &e);
+    frexp(g->reach * c->a * radius, &e);
     return e;
 }
 
@@ -275,54 +282,60 @@ static int64_t gicache_coord(real x, int s)
     return q > 4e18 ? (int64_t)4e18 : q < -4e18 ? (int64_t)-4e18 : (int64_t)q;
 }
 
-/* Returns the slot of cell (s, ix, iy, iz): its own, or the empty one it
- * would take. */
-static size_t gicache_slot(const GiCache *c, int s, int64_t ix, int64_t iy, int64_t iz)
+/* Returns the slot of grid g's cell (s, ix, iy, iz): its own, or the empty
+ * one it would take. */
+static size_t gicache_slot(const GiGrid *g, int s, int64_t ix, int64_t iy, int64_t iz)
 {
     uint64_t h = hash_u64(hash_u64(hash_u64(hash_u64(0, (uint64_t)(int64_t)s), (uint64_t)ix),
                                    (uint64_t)iy),
                           (uint64_t)iz);
-    size_t mask = c->cell_capacity - 1, i = (size_t)(h ^ (h >> 29)) & mask;
+    size_t mask = g->cell_capacity - 1, i = (size_t)(h ^ (h >> 29)) & mask;
 
-    while (c->cells[i].head != GICACHE_NONE &&
-           !(c->cells[i].scale == s && c->cells[i].ix == ix && c->cells[i].iy == iy &&
-             c->cells[i].iz == iz))
+    while (g->cells[i].head != GICACHE_NONE &&
+           !(g->cells[i].scale == s && g->cells[i].ix == ix && g->cells[i].iy == iy &&
+             g->cells[i].iz == iz))
         i = (i + 1) & mask;
     return i;
 }
 
-/* Grows the grid to `capacity` slots (a power of 2), refiling its cells;
+/* Grows grid g to `capacity` slots (a power of 2), refiling its cells;
  * returns 0 or -1. */
-static int gicache_regrid(GiCache *c, size_t capacity)
+static int gicache_regrid(GiGrid *g, size_t capacity)
 {
-    GiCell *old = c->cells;
-    size_t old_capacity = c->cell_capacity;
+    GiCell *old = g->cells;
+    size_t old_capacity = g->cell_capacity;
 
-    c->cells = malloc(capacity * sizeof *c->cells);
-    if (!c->cells) {
-        c->cells = old;
+    g->cells = malloc(capacity * sizeof *g->cells);
+    if (!g->cells) {
+        g->cells = old;
         return -1;
     }
     for (size_t i = 0; i < capacity; i++)
-        c->cells[i].head = GICACHE_NONE;
-    c->cell_capacity = capacity;
+        g->cells[i].head = GICACHE_NONE;
+    g->cell_capacity = capacity;
     for (size_t i = 0; i < old_capacity; i++)
         if (old[i].head != GICACHE_NONE)
-            c->cells[gicache_slot(c, old[i].scale, old[i].ix, old[i].iy, old[i].iz)] = old[i];
+            g->cells[gicache_slot(g, old[i].scale, old[i].ix, old[i].iy, old[i].iz)] = old[i];
     free(old);
     return 0;
 }
 
-/* Makes room for one more record and cell; returns 0, -1 or -2. */
+/* Makes room for one more record and its cells; returns 0, -1 or -2. */
 static int gicache_reserve(GiCache *c)
 {
-    size_t records = c->capacity, cells = c->cell_capacity;
+    size_t records = c->capacity, cells[2];
+    int grow = 0;
 
     if (c->count == records)
         records = records ? 2 * records : 256;
-    if (2 * (c->cell_count + GICACHE_CELLS) > cells)
-        cells = cells ? 2 * cells : 512;
-    if (records == c->capacity && cells == c->cell_capacity)
+    for (int k = 0; k < 2; k++) {
+        const GiGrid *g = &c->grids[k];
+        cells[k] = g->cell_capacity;
+        if (2 * (g->cell_count + GICACHE_CELLS) > cells[k])
+            cells[k] = cells[k] ? 2 * cells[k] : 512;
+        grow |= cells[k] != g->cell_capacity;
+    }
+    if (records == c->capacity && !grow)
         return 0;
     if (records >= GICACHE_NONE)
         return -2;
@@ -330,59 +343,64 @@ static int gicache_reserve(GiCache *c)
         return -2;
     if (records != c->capacity) {
         GiPlace *p = realloc(c->places, records * sizeof *p);
-        GiEntry *e;
         GiValue *v;
 
         if (!p)
             return -1;
         c->places = p;
-        e = realloc(c->entries, GICACHE_CELLS * records * sizeof *e);
-        if (!e)
-            return -1;
-        c->entries = e;
+        for (int k = 0; k < 2; k++) {
+            GiEntry *e = realloc(c->grids[k].entries, GICACHE_CELLS * records * sizeof *e);
+            if (!e)
+                return -1;
+            c->grids[k].entries = e;
+        }
         v = realloc(c->values, records * (size_t)c->levels * sizeof *v);
         if (!v)
             return -1;
         c->values = v;
         c->capacity = records;
     }
-    return cells != c->cell_capacity ? gicache_regrid(c, cells) : 0;
+    for (int k = 0; k < 2; k++)
+        if (cells[k] != c->grids[k].cell_capacity && gicache_regrid(&c->grids[k], cells[k]) != 0)
+            return -1;
+    return 0;
 }
 
-/* Notes that cells of scale s hold records (kept ascending). */
-static void gicache_use_scale(GiCache *c, int s)
+/* Notes that grid g's cells of scale s hold records (kept ascending). */
+static void gicache_use_scale(GiGrid *g, int s)
 {
     int i = 0;
 
-    while (i < c->scale_count && c->scales[i] < s)
+    while (i < g->scale_count && g->scales[i] < s)
         i++;
-    if (i < c->scale_count && c->scales[i] == s)
+    if (i < g->scale_count && g->scales[i] == s)
         return;
-    if (c->scale_count == (int)(sizeof c->scales / sizeof c->scales[0]))
+    if (g->scale_count == (int)(sizeof g->scales / sizeof g->scales[0]))
         return; /* cannot happen: radii are clamped within 2^60 of each other */
-    memmove(&c->scales[i + 1], &c->scales[i], (size_t)(c->scale_count - i) * sizeof c->scales[0]);
-    c->scales[i] = s;
-    c->scale_count++;
+    memmove(&g->scales[i + 1], &g->scales[i], (size_t)(g->scale_count - i) * sizeof g->scales[0]);
+    g->scales[i] = s;
+    g->scale_count++;
 }
 
-/* Enters record i in cell (s, ix, iy, iz). */
-static void gicache_enter(GiCache *c, uint32_t i, int s, int64_t ix, int64_t iy, int64_t iz)
+/* Enters record i, at place, in grid g's cell (s, ix, iy, iz). */
+static void gicache_enter(GiGrid *g, const GiPlace *place, uint32_t i, int s, int64_t ix,
+                          int64_t iy, int64_t iz)
 {
-    size_t slot = gicache_slot(c, s, ix, iy, iz);
-    GiEntry *e = &c->entries[c->entry_count];
+    size_t slot = gicache_slot(g, s, ix, iy, iz);
+    GiEntry *e = &g->entries[g->entry_count];
 
-    if (c->cells[slot].head == GICACHE_NONE) {
-        c->cells[slot].scale = s;
-        c->cells[slot].ix = ix;
-        c->cells[slot].iy = iy;
-        c->cells[slot].iz = iz;
-        c->cell_count++;
+    if (g->cells[slot].head == GICACHE_NONE) {
+        g->cells[slot].scale = s;
+        g->cells[slot].ix = ix;
+        g->cells[slot].iy = iy;
+        g->cells[slot].iz = iz;
+        g->cell_count++;
     }
-    e->point = c->places[i].point;
-    e->radius = c->places[i].radius;
+    e->point = place->point;
+    e->radius = place->radius;
     e->record = i;
-    e->next = c->cells[slot].head;
-    c->cells[slot].head = (uint32_t)c->entry_count++;
+    e->next = g->cells[slot].head;
+    g->cells[slot].head = (uint32_t)g->entry_count++;
 }
 
 /* A record whose rays met nothing GICACHE_SEAM more often than a
@@ -394,22 +412,23 @@ static void gicache_enter(GiCache *c, uint32_t i, int s, int64_t ix, int64_t iy,
  * neighbour's plus their distance, so that the small radius of a record
  * near a corner reaches those beside it; and a record on a seam is kept
  * from its neighbours. Applied between record i and every record whose
- * cells hold its point. Shrinking a radius keeps the record's cells
- * valid: they cover more than its reach. */
+ * cells of the wider grid hold its point. Shrinking a radius keeps the
+ * record's cells valid: they cover more than its reach. */
 static void gicache_clamp_neighbours(GiCache *c, uint32_t i)
 {
+    const GiGrid *g = &c->grids[1];
     GiPlace *p = &c->places[i];
 
-    for (int k = 0; k < c->scale_count; k++) {
-        int s = c->scales[k];
-        size_t slot = gicache_slot(c, s, gicache_coord(p->point.x, s), gicache_coord(p->point.y, s),
+    for (int k = 0; k < g->scale_count; k++) {
+        int s = g->scales[k];
+        size_t slot = gicache_slot(g, s, gicache_coord(p->point.x, s), gicache_coord(p->point.y, s),
                                    gicache_coord(p->point.z, s));
 
-        for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
-            GiPlace *q = &c->places[c->entries[e].record];
+        for (uint32_t e = g->cells[slot].head; e != GICACHE_NONE; e = g->entries[e].next) {
+            GiPlace *q = &c->places[g->entries[e].record];
             double d = (double)vec3_length(vec3_sub(p->point, q->point));
 
-            if (c->entries[e].record == i)
+            if (g->entries[e].record == i)
                 continue;
             if (p->radius > q->radius + d)
                 p->radius = q->radius + d;
@@ -423,12 +442,13 @@ static void gicache_clamp_neighbours(GiCache *c, uint32_t i)
     }
 }
 
-/* Enters record i in the cells of its scale its reach overlaps. */
-static void gicache_file(GiCache *c, uint32_t i)
+/* Enters record i in grid g's cells of its scale its reach there
+ * overlaps. */
+static void gicache_file(GiCache *c, GiGrid *g, uint32_t i)
 {
     const GiPlace *place = &c->places[i];
-    double reach = GICACHE_MAX_REACH * c->a * place->radius;
-    int s = gicache_scale_of(c, place->radius);
+    double reach = g->reach * c->a * place->radius;
+    int s = gicache_scale_of(c, g, place->radius);
     int64_t lo[3], hi[3];
 
     lo[0] = gicache_coord((real)(place->point.x - reach), s);
@@ -440,8 +460,8 @@ static void gicache_file(GiCache *c, uint32_t i)
     for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 2; z++)
         for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 2; y++)
             for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 2; x++)
-                gicache_enter(c, i, s, x, y, z);
-    gicache_use_scale(c, s);
+                gicache_enter(g, place, i, s, x, y, z);
+    gicache_use_scale(g, s);
 }
 
 int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values)
@@ -455,42 +475,50 @@ int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values)
     c->places[i] = *place;
     memcpy(&c->values[(size_t)i * (size_t)c->levels], values, (size_t)c->levels * sizeof *values);
     gicache_clamp_neighbours(c, i);
-    gicache_file(c, i);
+    for (int k = 0; k < 2; k++)
+        gicache_file(c, &c->grids[k], i);
     return 0;
 }
 
-void gicache_refile(GiCache *c)
+/* Lays grid g's entries of each cell side by side, in the same order, so
+ * that a lookup reads them from one stretch of memory (without the room,
+ * as they were: the same answers). */
+static void gicache_pack(GiGrid *g)
 {
-    GiEntry *packed;
+    GiEntry *packed = g->entry_count ? malloc(g->entry_count * sizeof *packed) : NULL;
     size_t next = 0;
 
-    for (size_t k = 0; k < c->cell_capacity; k++)
-        c->cells[k].head = GICACHE_NONE;
-    c->cell_count = 0;
-    c->entry_count = 0;
-    c->scale_count = 0;
-    for (size_t i = 0; i < c->count; i++)
-        gicache_file(c, (uint32_t)i);
-    /* Each cell's entries side by side, in the same order, so that a
-     * lookup reads them from one stretch of memory (without the room, as
-     * they were: the same answers). */
-    packed = c->entry_count ? malloc(c->entry_count * sizeof *packed) : NULL;
     if (!packed)
         return;
-    for (size_t k = 0; k < c->cell_capacity; k++) {
-        uint32_t e = c->cells[k].head;
+    for (size_t k = 0; k < g->cell_capacity; k++) {
+        uint32_t e = g->cells[k].head;
         if (e == GICACHE_NONE)
             continue;
-        c->cells[k].head = (uint32_t)next;
-        for (; e != GICACHE_NONE; e = c->entries[e].next) {
-            packed[next] = c->entries[e];
+        g->cells[k].head = (uint32_t)next;
+        for (; e != GICACHE_NONE; e = g->entries[e].next) {
+            packed[next] = g->entries[e];
             packed[next].next = (uint32_t)(next + 1);
             next++;
         }
         packed[next - 1].next = GICACHE_NONE;
     }
-    memcpy(c->entries, packed, c->entry_count * sizeof *packed);
+    memcpy(g->entries, packed, g->entry_count * sizeof *packed);
     free(packed);
+}
+
+void gicache_refile(GiCache *c)
+{
+    for (int k = 0; k < 2; k++) {
+        GiGrid *g = &c->grids[k];
+        for (size_t j = 0; j < g->cell_capacity; j++)
+            g->cells[j].head = GICACHE_NONE;
+        g->cell_count = 0;
+        g->entry_count = 0;
+        g->scale_count = 0;
+        for (size_t i = 0; i < c->count; i++)
+            gicache_file(c, g, (uint32_t)i);
+        gicache_pack(g);
+    }
 }
 
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
@@ -502,17 +530,18 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
 {
     double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH), total = 0;
     double sum[3] = {0, 0, 0};
+    const GiGrid *g = &c->grids[reach <= c->grids[0].reach ? 0 : 1];
     int used = 0;
 
     if (c->count == 0 || level >= c->levels)
         return 0;
-    for (int k = 0; k < c->scale_count; k++) {
-        int s = c->scales[k];
-        size_t slot = gicache_slot(c, s, gicache_coord(x.x, s), gicache_coord(x.y, s),
+    for (int k = 0; k < g->scale_count; k++) {
+        int s = g->scales[k];
+        size_t slot = gicache_slot(g, s, gicache_coord(x.x, s), gicache_coord(x.y, s),
                                    gicache_coord(x.z, s));
 
-        for (uint32_t e = c->cells[slot].head; e != GICACHE_NONE; e = c->entries[e].next) {
-            const GiEntry *entry = &c->entries[e];
+        for (uint32_t e = g->cells[slot].head; e != GICACHE_NONE; e = g->entries[e].next) {
+            const GiEntry *entry = &g->entries[e];
             uint32_t i = entry->record;
             Vec3 d = vec3_sub(x, entry->point);
             double reach = a * entry->radius, w;
