@@ -15,8 +15,8 @@
 #  4. every picture of report/figures is the renderer's own: the same bytes
 #     as docs/gallery/ (which tests/cli.sh renders again) or docs/trade-*.svg
 #     (which make trade draws) or docs/bench-*.svg (make bench, make race);
-#  5. every table report.md quotes (report/quote.sh) is the table its page
-#     holds today, and a quote of a table that is not there is refused;
+#  5. every table and figure report.md quotes (report/quote.sh) is what its
+#     page holds today, and a quote of one that is not there is refused;
 #  6. report/report.pdf, once make report has built it, is at most 6 pages
 #     of A4 (pdfinfo, from poppler-utils, when installed;
 #     RAYTRACE_REPORT_PDF=required makes both the PDF and pdfinfo a must).
@@ -126,6 +126,14 @@ if sh report/quote.sh "$T/planted-quote.md" >"$T/out" 2>&1; then
 else
     grep -q 'no table after "## No such heading"' "$T/out" && pass ||
         fail "report/quote.sh misnames a missing table" "$(cat "$T/out")"
+fi
+printf 'a <!-- cell docs/trade.md "## Samples per pixel" "3" 5 -->x<!-- /cell --> b\n' \
+    >"$T/planted-cell.md"
+if sh report/quote.sh "$T/planted-cell.md" >"$T/out" 2>&1; then
+    fail "report/quote.sh quotes a figure that is not there"
+else
+    grep -q 'no row "3" column 5' "$T/out" && pass ||
+        fail "report/quote.sh misnames a missing figure" "$(cat "$T/out")"
 fi
 
 # 6. The PDF: at most 6 pages of A4.
