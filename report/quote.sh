@@ -86,7 +86,7 @@ awk '
             }
             rest = substr(rest, end_at + 14)
             page = spec; sub(/ .*/, "", page)
-            n = split(spec, q, "\"")
+            split(spec, q, "\"")
             heading = q[2]; key = q[4]; tail_spec = q[5]; sub(/^ +/, "", tail_spec)
             split(tail_spec, ts, " ")
             v = cell(page, heading, key, ts[1] + 0)

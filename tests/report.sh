@@ -119,22 +119,20 @@ else
 fi
 grep -c '^<!-- quote ' report/report.md >"$T/quotes"
 [ "$(cat "$T/quotes")" -ge 1 ] && pass || fail "report/report.md quotes no table"
-printf '<!-- quote docs/benchmarks.md "## No such heading" columns 1 2 -->\n<!-- end quote -->\n' \
-    >"$T/planted-quote.md"
-if sh report/quote.sh "$T/planted-quote.md" >"$T/out" 2>&1; then
-    fail "report/quote.sh quotes a table that is not there"
-else
-    grep -q 'no table after "## No such heading"' "$T/out" && pass ||
-        fail "report/quote.sh misnames a missing table" "$(cat "$T/out")"
-fi
-printf 'a <!-- cell docs/trade.md "## Samples per pixel" "3" 5 -->x<!-- /cell --> b\n' \
-    >"$T/planted-cell.md"
-if sh report/quote.sh "$T/planted-cell.md" >"$T/out" 2>&1; then
-    fail "report/quote.sh quotes a figure that is not there"
-else
-    grep -q 'no row "3" column 5' "$T/out" && pass ||
-        fail "report/quote.sh misnames a missing figure" "$(cat "$T/out")"
-fi
+# refuses WHAT TEXT MESSAGE: report/quote.sh refuses a report of TEXT (a
+# quote of WHAT that is not there), saying MESSAGE.
+refuses() {
+    printf '%s\n' "$2" >"$T/planted.md"
+    if sh report/quote.sh "$T/planted.md" >"$T/out" 2>&1; then
+        fail "report/quote.sh quotes $1 that is not there"
+    else
+        grep -qF "$3" "$T/out" && pass || fail "report/quote.sh misnames $1" "$(cat "$T/out")"
+    fi
+}
+refuses "a table" '<!-- quote docs/benchmarks.md "## No such heading" columns 1 2 -->
+<!-- end quote -->' 'no table after "## No such heading"'
+refuses "a figure" 'a <!-- cell docs/trade.md "## Samples per pixel" "3" 5 -->x<!-- /cell --> b' \
+    'no row "3" column 5'
 
 # 6. The PDF: at most 6 pages of A4.
 need=${RAYTRACE_REPORT_PDF:-}
