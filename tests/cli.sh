@@ -513,6 +513,8 @@ sed 's/^200 .*/48    # horizontal resolution/' scenes/room.txt >"$T/room.txt"
 "$RT" -v --gi 32 --gi-cache --gi-cache-map "$T/gcmap.png" "$T/room.txt" "$T/gcv.ppm" 2>"$T/err"
 expect_grep "--gi-cache -v records" "irradiance cache: error 0.3, " "$T/err"
 expect_grep "--gi-cache -v lookups" "lookups served" "$T/err"
+# Its rays counted with the render's, its time with the render's too.
+expect_grep "--gi-cache -v speed over both" "Mrays/s over both" "$T/err"
 [ -s "$T/gcmap.png" ] && pass || fail "--gi-cache-map wrote no map"
 expect_exit "--gi-cache-map with --tile" 1 "$RT" -q --gi 32 --gi-cache --gi-cache-map "$T/m.png" --tile 1/2 "$T/room.txt" "$T/t.ppm"
 "$RT" --gi 0 --gi-cache "$T/room.txt" "$T/n.ppm" 2>"$T/err"

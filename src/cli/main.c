@@ -571,7 +571,8 @@ static int main_render(const Options *opts)
         goto fail_image;
     write_time = process_seconds() - write_time;
     if (opts->verbose) {
-        SummaryTimes times = {read_time, accel_time, render_time, write_time};
+        SummaryTimes times = {read_time, accel_time, ropts.gicache ? gi_stats.seconds : 0,
+                              render_time, write_time};
         summary_verbose(&scene, &img, &ropts, opts->spp_map, &times, threads, &counts);
         if (ropts.gicache)
             summary_gi_cache(&cache, &gi_stats, &counts, opts->gi_cache_map);
