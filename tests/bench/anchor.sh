@@ -162,16 +162,26 @@ else
     echo >>"$section"
 fi
 
-# Scaling with the sphere count: the benchmark's field at 480 x 270.
+# Scaling with the sphere count: the benchmark's field at 480 x 270, and
+# the anchor's times and memory on the same files when it was built.
 {
     echo "### Time and memory against the sphere count"
     echo
     echo "The benchmark's field (tests/bench/scenegen.c) at 480 × 270, $ALL threads,"
     echo "one run each: reading, building and rendering (from -v), peak memory and"
     echo "the memory it takes a sphere ((peak − the 10-sphere run's) / n)."
-    echo
-    echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere |"
-    echo "|---------|------|-------|--------|-----------------|-------------|----------------|"
+    if [ -n "$have_anchor" ]; then
+        echo "Beside them, the anchor's on the same file (its own parse, build and"
+        echo "render times, and its peak memory; its times exclude starting"
+        echo "Embree's device)."
+        echo
+        echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere | anchor's read | anchor's build | anchor's render | anchor's peak |"
+        echo "|---------|------|-------|--------|-----------------|-------------|----------------|---------------|----------------|-----------------|---------------|"
+    else
+        echo
+        echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere |"
+        echo "|---------|------|-------|--------|-----------------|-------------|----------------|"
+    fi
 } >>"$section"
 : >"$DIR/fit"
 : >"$DIR/plot-time"
@@ -191,18 +201,34 @@ while [ "$n" -le "$SCALE_MAX" ]; do
     per=—
     [ "$n" -lt 10000 ] || per=$(printf '%.0f' "$(echo "($peak - $base) * 1000000 / $n" | bc -l)")
     lg=$(echo "l($n) / l(2)" | bc -l)
-    printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %s |\n' "$n" "$read_s" \
-        "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per" >>"$section"
+    row=$(printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %s |' "$n" "$read_s" \
+        "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per")
+    echo "raytrace-build $n ${build_s:-0}" >>"$DIR/plot-time"
+    echo "raytrace-render $n $render_s" >>"$DIR/plot-time"
+    echo "raytrace-peak $n $peak" >>"$DIR/plot-memory"
+    if [ -n "$have_anchor" ]; then
+        : >"$DIR/t-s"
+        timed "$DIR/t-s" "$DIR/embree_rt" "$DIR/field.txt" "$DIR/a.ppm" --threads "$ALL" \
+            --stats "$DIR/stats"
+        line=$(tail -n 1 "$DIR/stats")
+        a_read=$(echo "$line" | sed -n 's/.*| parse \([0-9.]*\) s |.*/\1/p')
+        a_build=$(echo "$line" | sed -n 's/.*| build \([0-9.]*\) s |.*/\1/p')
+        a_render=$(echo "$line" | sed -n 's/.*| render \([0-9.]*\) s |.*/\1/p')
+        a_peak=$(awk '{ printf "%.1f", $2 / 1024 }' "$DIR/t-s")
+        row="$row $a_read s | $a_build s | $a_render s | $a_peak MB |"
+        echo "anchor-build $n $a_build" >>"$DIR/plot-time"
+        echo "anchor-render $n $a_render" >>"$DIR/plot-time"
+        echo "anchor-peak $n $a_peak" >>"$DIR/plot-memory"
+    fi
+    echo "$row" >>"$section"
     echo "$lg $render_s" >>"$DIR/fit"
-    echo "render $n $render_s" >>"$DIR/plot-time"
-    echo "peak $n $peak" >>"$DIR/plot-memory"
     echo "anchor: scaling: $n spheres" >&2
     n=$((n * 10))
 done
-rm -f "$DIR/field.txt"
+rm -f "$DIR/field.txt" "$DIR/stats"
 # Drawn too (tests/bench/plot.awk), for the report.
-awk -v title="Render time against the sphere count (480 x 270, $ALL threads)" \
-    -v xlabel="spheres" -v ylabel="render time (s)" -v logx=1 \
+awk -v title="Build and render time against the sphere count (480 x 270, $ALL threads)" \
+    -v xlabel="spheres" -v ylabel="time (s)" -v logx=1 -v logy=1 \
     -f tests/bench/plot.awk "$DIR/plot-time" >docs/bench-scaling.svg
 awk -v title="Peak memory against the sphere count" -v xlabel="spheres" \
     -v ylabel="peak memory (MB)" -v logx=1 -v logy=1 \
@@ -214,7 +240,7 @@ awk 'NR >= 3 { x += $1; y += $2; xx += $1 * $1; xy += $1 * $2; yy += $2 * $2; k+
           printf "\nRender time fitted from 1,000 spheres on: %.4f s + %.4f s × log2 n (correlation %.3f).\n\n", a, b, r }' \
     "$DIR/fit" >>"$section"
 {
-    echo "![render time against the sphere count](bench-scaling.svg)"
+    echo "![build and render time against the sphere count](bench-scaling.svg)"
     echo
     echo "![peak memory against the sphere count](bench-memory.svg)"
     echo
