@@ -274,28 +274,57 @@ static int gicache_scale_of(const GiCache *c, const GiGrid *g, double radius)
     return e;
 }
 
-/* Returns the cell coordinate of x at scale s, clamped far inside int64. */
+/* Returns the cell coordinate of x at scale s, clamped far inside int64:
+ * x times 2^-s (a product exact as ldexp's while 2^-s is a normal double),
+ * rounded down. */
 static int64_t gicache_coord(real x, int s)
 {
-    double q = floor(ldexp((double)x, -s));
+    double q;
 
+    if (s > -1000 && s < 1000) {
+        uint64_t bits = (uint64_t)(1023 - s) << 52; /* 2^-s, IEEE 754 binary64 */
+        double unit;
+        memcpy(&unit, &bits, sizeof unit);
+        q = (double)x * unit;
+    } else {
+        q = ldexp((double)x, -s);
+    }
+
+    q = floor(q);
     return q > 4e18 ? (int64_t)4e18 : q < -4e18 ? (int64_t)-4e18 : (int64_t)q;
 }
 
-/* Returns the slot of grid g's cell (s, ix, iy, iz): its own, or the empty
- * one it would take. */
-static size_t gicache_slot(const GiGrid *g, int s, int64_t ix, int64_t iy, int64_t iz)
+/* Returns the slot where grid g's search for cell (s, ix, iy, iz) starts:
+ * a hash mixing the four in a few multiplies (where a cell lies in the
+ * table changes no answer: a cell's entries keep their order). */
+static size_t gicache_home(const GiGrid *g, int s, int64_t ix, int64_t iy, int64_t iz)
 {
-    uint64_t h = hash_u64(hash_u64(hash_u64(hash_u64(0, (uint64_t)(int64_t)s), (uint64_t)ix),
-                                   (uint64_t)iy),
-                          (uint64_t)iz);
-    size_t mask = g->cell_capacity - 1, i = (size_t)(h ^ (h >> 29)) & mask;
+    uint64_t h = (uint64_t)ix * 0x9e3779b97f4a7c15u ^ (uint64_t)iy * 0xc2b2ae3d27d4eb4fu ^
+                 (uint64_t)iz * 0x165667b19e3779f9u ^ (uint64_t)(int64_t)s * 0xd6e8feb86659fd93u;
+
+    h ^= h >> 32;
+    h *= 0x9e3779b97f4a7c15u;
+    return (size_t)(h ^ (h >> 29)) & (g->cell_capacity - 1);
+}
+
+/* Returns the slot of grid g's cell (s, ix, iy, iz), searched from slot i
+ * (its home): its own, or the empty one it would take. */
+static size_t gicache_probe(const GiGrid *g, size_t i, int s, int64_t ix, int64_t iy, int64_t iz)
+{
+    size_t mask = g->cell_capacity - 1;
 
     while (g->cells[i].head != GICACHE_NONE &&
            !(g->cells[i].scale == s && g->cells[i].ix == ix && g->cells[i].iy == iy &&
              g->cells[i].iz == iz))
         i = (i + 1) & mask;
     return i;
+}
+
+/* Returns the slot of grid g's cell (s, ix, iy, iz): its own, or the empty
+ * one it would take. */
+static size_t gicache_slot(const GiGrid *g, int s, int64_t ix, int64_t iy, int64_t iz)
+{
+    return gicache_probe(g, gicache_home(g, s, ix, iy, iz), s, ix, iy, iz);
 }
 
 /* Grows grid g to `capacity` slots (a power of 2), refiling its cells;
@@ -533,14 +562,38 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
     const GiGrid *g = &c->grids[reach <= c->grids[0].reach ? 0 : 1];
     int used = 0;
 
+    enum { SCALES = sizeof g->scales / sizeof g->scales[0] };
+    uint32_t heads[SCALES];
+    size_t homes[SCALES];
+    int64_t at[SCALES][3];
+
     if (c->count == 0 || level >= c->levels)
         return 0;
+    /* Each scale's cell, then its entries, asked for from memory at once
+     * for every scale (they are far apart: the waits overlap); then read,
+     * scale by scale. */
     for (int k = 0; k < g->scale_count; k++) {
         int s = g->scales[k];
-        size_t slot = gicache_slot(g, s, gicache_coord(x.x, s), gicache_coord(x.y, s),
-                                   gicache_coord(x.z, s));
 
-        for (uint32_t e = g->cells[slot].head; e != GICACHE_NONE; e = g->entries[e].next) {
+        at[k][0] = gicache_coord(x.x, s);
+        at[k][1] = gicache_coord(x.y, s);
+        at[k][2] = gicache_coord(x.z, s);
+        homes[k] = gicache_home(g, s, at[k][0], at[k][1], at[k][2]);
+#if defined(__GNUC__)
+        __builtin_prefetch(&g->cells[homes[k]]);
+#endif
+    }
+    for (int k = 0; k < g->scale_count; k++) {
+        size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
+
+        heads[k] = g->cells[slot].head;
+#if defined(__GNUC__)
+        if (heads[k] != GICACHE_NONE)
+            __builtin_prefetch(&g->entries[heads[k]]);
+#endif
+    }
+    for (int k = 0; k < g->scale_count; k++) {
+        for (uint32_t e = heads[k]; e != GICACHE_NONE; e = g->entries[e].next) {
             const GiEntry *entry = &g->entries[e];
             uint32_t i = entry->record;
             Vec3 d = vec3_sub(x, entry->point);
