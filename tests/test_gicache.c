@@ -199,6 +199,62 @@ static void gicache_lookup_is_the_weighted_mean(void)
     gicache_free(&c);
 }
 
+/* gicache_any() gives one valid record's value (none out of reach, none
+ * not holding the level), and finds one wherever a lookup finds any. */
+static void gicache_any_gives_one_valid_record(void)
+{
+    GiCache c;
+    GiPlace p[3] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0}};
+    double values[3] = {10, 20, 1000};
+    Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
+    Colour out = {-1, 0, 0}, blend;
+    uint64_t h = 99;
+    int agree = 0;
+
+    gicache_init(&c, 0.4, 1, 0);
+    for (int i = 0; i < 3; i++) {
+        GiValue v[1];
+        memset(v, 0, sizeof v);
+        v[0].g = colour(values[i], 0, 0);
+        CHECK(gicache_add(&c, &p[i], v) == 0);
+    }
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK(out.r == 10 || out.r == 20);
+    out.r = -1;
+    CHECK_INT(0, gicache_any(&c, 0, 1, vec3(10, 10, 10), n, &out));
+    CHECK_NEAR(-1, out.r, 0); /* untouched */
+    c.places[0].first = 1; /* record 0 holds only later levels: record 1 it is */
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK_NEAR(20, out.r, 0);
+    gicache_free(&c);
+    gicache_init(&c, 0.3, 1, 0);
+    for (int i = 0; i < 200; i++) {
+        GiPlace q = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
+        GiValue v[1];
+        memset(v, 0, sizeof v);
+        h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+        q.point = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
+        q.radius = 0.05 + (double)(h >> 8 & 255) / 100;
+        v[0].g = colour(i, 0, 0);
+        CHECK(gicache_add(&c, &q, v) == 0);
+    }
+    gicache_refile(&c);
+    for (int k = 0; k < 400; k++) {
+        int any, all;
+        h = h * 6364136223846793005ULL + 1442695040888963407ULL;
+        x = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
+        any = gicache_any(&c, 0, 1, x, n, &out);
+        all = gicache_lookup(&c, 0, 1, x, n, &blend);
+        /* A record's value is its number: the one found must be valid. */
+        agree += any == (all > 0) &&
+                 (!any || gicache_weight(gicache_error(&c.places[(size_t)out.r], x, n), 0.3) > 0);
+    }
+    CHECK_INT(400, agree);
+    gicache_free(&c);
+}
+
 /* A lookup reads every record whose reach holds the point, wherever the
  * point falls among the grid's cells: a record whose reach spans three
  * cells of its scale is found from the third (it was missed there), and
@@ -265,6 +321,7 @@ static void gicache_limit_refuses_records(void)
 
 const TestCase gicache_tests[] = {
     {"gicache_strata_cover_the_rays", gicache_strata_cover_the_rays},
+    {"gicache_any_gives_one_valid_record", gicache_any_gives_one_valid_record},
     {"gicache_furnace_gives_the_light_everywhere", gicache_furnace_gives_the_light_everywhere},
     {"gicache_radius_is_the_harmonic_mean_distance", gicache_radius_is_the_harmonic_mean_distance},
     {"gicache_rotation_gradient_of_a_sky", gicache_rotation_gradient_of_a_sky},

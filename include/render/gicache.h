@@ -156,6 +156,15 @@ void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);
  * records used (0: none valid, *out untouched). */
 int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
 
+/* As gicache_lookup(), but into *out the value of the first record the
+ * grid lists as valid at x (holding that level), carried there by its
+ * gradients, not a blend of them all; returns 1, or 0 when none is valid.
+ * Within the cache's accuracy as any one valid record is, without the
+ * blend's smooth seams between records: for the light a gathering ray
+ * brings, which reaches the picture only averaged over a record's rays
+ * (it reads less: it stops at the first). */
+int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
+
 /* Returns the bytes *c holds. */
 size_t gicache_memory(const GiCache *c);
 

@@ -555,7 +555,10 @@ void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
     c->values[i * (size_t)c->levels + (size_t)level] = *v;
 }
 
-int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+/* gicache_lookup(), or with `first` set gicache_any(): the scan stops at
+ * the first record valid at x. */
+static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, int first,
+                        Colour *out)
 {
     double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH), total = 0;
     double sum[3] = {0, 0, 0};
@@ -616,9 +619,23 @@ int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, C
             sum[2] += w * g.b;
             total += w;
             used++;
+            if (first) {
+                *out = g;
+                return 1;
+            }
         }
     }
     if (used)
         *out = colour(sum[0] / total, sum[1] / total, sum[2] / total);
     return used;
+}
+
+int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+{
+    return gicache_scan(c, level, reach, x, nx, 0, out);
+}
+
+int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+{
+    return gicache_scan(c, level, reach, x, nx, 1, out);
 }

@@ -348,9 +348,16 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
         return colour(0, 0, 0);
     }
     if (t->gicache) {
+        /* The camera's points blend the records (the picture shows their
+         * seams otherwise); a gathering ray's hit, in the cache's pre-pass,
+         * takes the first valid one (its light is averaged over the rays
+         * of the record that cast it). */
+        int (*look)(const GiCache *, int, double, Vec3, Vec3, Colour *) =
+            path.bounce == 0 ? gicache_lookup : gicache_any;
+
         t->counts->lookups++;
-        if (gicache_lookup(t->gicache, path.bounce, 1, sh->sp.point, ns, &g) ||
-            gicache_lookup(t->gicache, path.bounce, GICACHE_FALLBACK_REACH, sh->sp.point, ns, &g))
+        if (look(t->gicache, path.bounce, 1, sh->sp.point, ns, &g) ||
+            look(t->gicache, path.bounce, GICACHE_FALLBACK_REACH, sh->sp.point, ns, &g))
             t->counts->served++;
         else
             g = trace_gather(t, sh, n, ns, depth, weight, path);
