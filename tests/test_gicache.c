@@ -225,9 +225,15 @@ static void gicache_any_gives_one_valid_record(void)
     out.r = -1;
     CHECK_INT(0, gicache_any(&c, 0, 1, vec3(10, 10, 10), n, &out));
     CHECK_NEAR(-1, out.r, 0); /* untouched */
-    c.places[0].first = 1; /* record 0 holds only later levels: record 1 it is */
+    /* Each record holding only later levels in turn: the other it is
+     * (whichever the grid lists first). */
+    c.places[0].first = 1;
     CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
     CHECK_NEAR(20, out.r, 0);
+    c.places[0].first = 0;
+    c.places[1].first = 1;
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK_NEAR(10, out.r, 0);
     gicache_free(&c);
     gicache_init(&c, 0.3, 1, 0);
     for (int i = 0; i < 200; i++) {
