@@ -158,6 +158,19 @@ static void gicache_error_and_weight(void)
     CHECK(gicache_weight(0, 0.3) > 1e11);
 }
 
+/* Adds records at p[0..n) to c, record i of value values[i] (red) at its
+ * first level, 0 elsewhere, without gradients. */
+static void add_records(GiCache *c, const GiPlace *p, const double *values, int n)
+{
+    for (int i = 0; i < n; i++) {
+        GiValue v[2];
+
+        memset(v, 0, sizeof v);
+        v[0].g = colour(values[i], 0, 0);
+        CHECK(c->levels <= 2 && gicache_add(c, &p[i], v) == 0);
+    }
+}
+
 /* Interpolation is the mean of the valid records' values by their weights
  * (which sum to one once normalised); records out of reach add nothing. */
 static void gicache_lookup_is_the_weighted_mean(void)
@@ -172,13 +185,7 @@ static void gicache_lookup_is_the_weighted_mean(void)
     Colour out = {0, 0, 0};
 
     gicache_init(&c, 0.4, 2, 0);
-    for (int i = 0; i < 4; i++) {
-        GiValue v[2];
-
-        memset(v, 0, sizeof v);
-        v[0].g = colour(values[i], 0, 0);
-        CHECK(gicache_add(&c, &p[i], v) == 0);
-    }
+    add_records(&c, p, values, 4);
     for (int i = 0; i < 4; i++) { /* the radii as neighbour clamping left them */
         double w = gicache_weight(gicache_error(&c.places[i], x, n), 0.4);
         want += w * values[i];
@@ -214,12 +221,7 @@ static void gicache_any_gives_one_valid_record(void)
     int agree = 0;
 
     gicache_init(&c, 0.4, 1, 0);
-    for (int i = 0; i < 3; i++) {
-        GiValue v[1];
-        memset(v, 0, sizeof v);
-        v[0].g = colour(values[i], 0, 0);
-        CHECK(gicache_add(&c, &p[i], v) == 0);
-    }
+    add_records(&c, p, values, 3);
     CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
     CHECK(out.r == 10 || out.r == 20);
     out.r = -1;
