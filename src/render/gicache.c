@@ -614,15 +614,15 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
                 continue;
             g = gicache_extrapolate(&c->places[i], &c->values[i * (size_t)c->levels + (size_t)level],
                                     x, nx);
+            if (first) {
+                *out = g;
+                return 1;
+            }
             sum[0] += w * g.r;
             sum[1] += w * g.g;
             sum[2] += w * g.b;
             total += w;
             used++;
-            if (first) {
-                *out = g;
-                return 1;
-            }
         }
     }
     if (used)
