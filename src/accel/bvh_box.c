@@ -57,62 +57,66 @@ real bvh_padding(const BvhShapes *shapes, real reach, int threads)
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
 }
 
-/* Pads p's box by pad on every side. */
-static void bvh_pad(BuildPrim *p, real pad)
+/* Grows lo and hi by the corner p. */
+static void bvh_bounds_grow(real lo[3], real hi[3], Vec3 p)
 {
+    real c[3] = {p.x, p.y, p.z};
+
     for (int a = 0; a < 3; a++) {
-        p->box.lo[a] -= pad;
-        p->box.hi[a] += pad;
+        lo[a] = c[a] < lo[a] ? c[a] : lo[a];
+        hi[a] = c[a] > hi[a] ? c[a] : hi[a];
     }
 }
 
-void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p)
+void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3], real hi[3])
 {
     size_t i = bvh_index(ref);
+    real r = pad; /* the margin every side gets */
 
-    p->ref = ref;
+    for (int a = 0; a < 3; a++) {
+        lo[a] = INFINITY;
+        hi[a] = -INFINITY;
+    }
     switch (bvh_kind(ref)) {
-    case BVH_TRIANGLE: {
-        const Triangle *t = &shapes->triangles[i];
-        box_empty(&p->box);
-        for (int k = 0; k < 3; k++) {
-            real v[3] = {t->v[k].x, t->v[k].y, t->v[k].z};
-            box_grow_point(&p->box, v);
-        }
-        bvh_pad(p, pad);
+    case BVH_TRIANGLE:
+        for (int k = 0; k < 3; k++)
+            bvh_bounds_grow(lo, hi, shapes->triangles[i].v[k]);
         break;
-    }
-    case BVH_CUBE: {
-        const Cube *c = &shapes->cubes[i];
-        real lo[3] = {c->lo.x, c->lo.y, c->lo.z}, hi[3] = {c->hi.x, c->hi.y, c->hi.z};
-        box_empty(&p->box);
-        box_grow_point(&p->box, lo);
-        box_grow_point(&p->box, hi);
-        bvh_pad(p, pad);
+    case BVH_CUBE:
+        bvh_bounds_grow(lo, hi, shapes->cubes[i].lo);
+        bvh_bounds_grow(lo, hi, shapes->cubes[i].hi);
         break;
-    }
     case BVH_SQUARE: {
         /* Its four corners; the plane test rounds like a triangle's. */
         const Square *sq = &shapes->squares[i];
         Vec3 u = vec3_scale(sq->axis_u, sq->half), v = vec3_scale(sq->axis_v, sq->half);
-        box_empty(&p->box);
-        for (int k = 0; k < 4; k++) {
-            Vec3 q = vec3_add(vec3_add(sq->centre, k & 1 ? u : vec3_neg(u)), k & 2 ? v : vec3_neg(v));
-            real c[3] = {q.x, q.y, q.z};
-            box_grow_point(&p->box, c);
-        }
+        for (int k = 0; k < 4; k++)
+            bvh_bounds_grow(lo, hi, vec3_add(vec3_add(sq->centre, k & 1 ? u : vec3_neg(u)),
+                                             k & 2 ? v : vec3_neg(v)));
         /* The corners round by a few ulps of the square's size too. */
-        bvh_pad(p, pad + 2 * sq->half * REAL_EPSILON * BVH_PAD_ULPS);
+        r += 2 * sq->half * REAL_EPSILON * BVH_PAD_ULPS;
         break;
     }
     default: {
         const Sphere *s = &shapes->spheres[i];
-        real c[3] = {s->centre.x, s->centre.y, s->centre.z};
-        real r = s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16)) + pad;
-        for (int a = 0; a < 3; a++) {
-            p->box.lo[a] = c[a] - r;
-            p->box.hi[a] = c[a] + r;
-        }
+        bvh_bounds_grow(lo, hi, s->centre);
+        r += s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16));
     }
+    }
+    for (int a = 0; a < 3; a++) {
+        lo[a] -= r;
+        hi[a] += r;
+    }
+}
+
+void bvh_prim_box(const Bvh *bvh, uint32_t ref, real pad, BuildPrim *p)
+{
+    real lo[3], hi[3];
+
+    bvh_prim_bounds(&bvh->shapes, ref, pad, lo, hi);
+    p->ref = ref;
+    for (int a = 0; a < 3; a++) {
+        p->box.lo[a] = bvh_float_below(((double)lo[a] - bvh->centre[a]) * bvh->scale);
+        p->box.hi[a] = bvh_float_above(((double)hi[a] - bvh->centre[a]) * bvh->scale);
     }
 }

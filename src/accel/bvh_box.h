@@ -15,9 +15,11 @@ enum {
     BVH_TASK_MIN = 16384 /* fewer primitives: built by the thread at hand */
 };
 
-/* A box, as lo and hi corners. */
+/* A box, as lo and hi corners, in the hierarchy's frame (bvh.h: scene
+ * coordinates less centre, times scale) and in floats, as its nodes hold
+ * them: the build reads half the bytes doubles would take. */
 typedef struct {
-    real lo[3], hi[3];
+    float lo[3], hi[3];
 } Box;
 
 /* The box helpers' loops are unrolled: they run per primitive and bin. */
@@ -41,7 +43,7 @@ static inline void box_grow(Box *b, const Box *c)
     }
 }
 
-static inline void box_grow_point(Box *b, const real p[3])
+static inline void box_grow_point(Box *b, const float p[3])
 {
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
@@ -51,15 +53,15 @@ static inline void box_grow_point(Box *b, const real p[3])
 }
 
 /* Half the surface area of b (0 for an empty box). */
-static inline real box_half_area(const Box *b)
+static inline float box_half_area(const Box *b)
 {
-    real dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
+    float dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
     return dx < 0 ? 0 : dx * dy + dy * dz + dz * dx;
 }
 
-/* What the build needs of each primitive. */
+/* What the build needs of each primitive: 28 bytes. */
 typedef struct {
-    Box box;         /* padded bounds */
+    Box box;         /* padded bounds, rounded outwards (bvh_prim_box()) */
     uint32_t ref;    /* primitive reference */
 } BuildPrim;
 
@@ -73,9 +75,9 @@ typedef struct {
 } BuildNode;
 
 /* Returns coordinate axis of the centre of p's box, its centroid. */
-static inline real bvh_centroid(const BuildPrim *p, int axis)
+static inline float bvh_centroid(const BuildPrim *p, int axis)
 {
-    return 0.5 * p->box.lo[axis] + 0.5 * p->box.hi[axis];
+    return 0.5f * p->box.lo[axis] + 0.5f * p->box.hi[axis];
 }
 
 /* Returns the padding of every box for shapes and the reach bvh_build()
@@ -83,7 +85,13 @@ static inline real bvh_centroid(const BuildPrim *p, int axis)
  * units of the real type's precision. */
 real bvh_padding(const BvhShapes *shapes, real reach, int threads);
 
-/* Stores in *p the box of primitive ref of shapes, padded by pad. */
-void bvh_prim_box(const BvhShapes *shapes, uint32_t ref, real pad, BuildPrim *p);
+/* Stores in lo and hi the corners of the box of primitive ref of shapes,
+ * padded by pad, in scene coordinates. */
+void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3], real hi[3]);
+
+/* Stores in *p primitive ref of bvh's shapes and its box padded by pad
+ * (bvh_prim_bounds()), in bvh's frame, rounded outwards to floats
+ * (bvh_float_below() and bvh_float_above()). */
+void bvh_prim_box(const Bvh *bvh, uint32_t ref, real pad, BuildPrim *p);
 
 #endif

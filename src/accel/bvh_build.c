@@ -25,30 +25,63 @@ static int bvh_real_order(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Returns the reference of the i-th primitive, first[k] the first of kind
+ * k. */
+static uint32_t bvh_ref_at(const size_t first[4], size_t i)
+{
+    unsigned kind = i >= first[3]   ? BVH_SQUARE
+                    : i >= first[2] ? BVH_CUBE
+                    : i >= first[1] ? BVH_TRIANGLE
+                                    : BVH_SPHERE;
+
+    return bvh_ref(kind, i - first[kind]);
+}
+
 /* Sets bvh's frame: on each axis the median of the centroids of up to
  * BVH_FRAME_SAMPLE of the n primitives, spread evenly over them (all of
  * them when there are no more), as the boxes' rounding margins grow with
  * their distance from it and most boxes are near it (the centre of all
  * the boxes would sit 10^5 away from spheres of radius 0.1 beside a floor
  * sphere of radius 10^5); and the power of two that brings the boxes'
- * half-extent within [1, 2) (within 2^+-1000). */
-static void bvh_frame(Bvh *bvh, const BuildPrim *prims, size_t n)
+ * half-extent within [1, 2) (within 2^+-1000). The boxes are bvh's shapes'
+ * (first[k] the first of kind k) padded by pad, in scene coordinates. */
+static void bvh_frame(Bvh *bvh, const size_t first[4], size_t n, real pad, int threads)
 {
-    Box all;
+    real lo0 = INFINITY, lo1 = INFINITY, lo2 = INFINITY;
+    real hi0 = -INFINITY, hi1 = -INFINITY, hi2 = -INFINITY;
     double half = 0;
     real c[BVH_FRAME_SAMPLE];
     size_t m = n < BVH_FRAME_SAMPLE ? n : BVH_FRAME_SAMPLE;
 
-    box_empty(&all);
-    for (size_t i = 0; i < n; i++)
-        box_grow(&all, &prims[i].box);
+    (void)threads;
+    /* The smallest and largest of finite values: the same on any number of
+     * threads. */
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN) \
+    reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
+#endif
+    for (size_t i = 0; i < n; i++) {
+        real lo[3], hi[3];
+        bvh_prim_bounds(&bvh->shapes, bvh_ref_at(first, i), pad, lo, hi);
+        lo0 = lo[0] < lo0 ? lo[0] : lo0;
+        lo1 = lo[1] < lo1 ? lo[1] : lo1;
+        lo2 = lo[2] < lo2 ? lo[2] : lo2;
+        hi0 = hi[0] > hi0 ? hi[0] : hi0;
+        hi1 = hi[1] > hi1 ? hi[1] : hi1;
+        hi2 = hi[2] > hi2 ? hi[2] : hi2;
+    }
     for (int a = 0; a < 3; a++) {
-        for (size_t i = 0; i < m; i++)
-            c[i] = bvh_centroid(&prims[(size_t)((unsigned long long)i * n / m)], a);
+        for (size_t i = 0; i < m; i++) {
+            real lo[3], hi[3];
+            size_t k = (size_t)((unsigned long long)i * n / m);
+            bvh_prim_bounds(&bvh->shapes, bvh_ref_at(first, k), pad, lo, hi);
+            c[i] = 0.5 * lo[a] + 0.5 * hi[a];
+        }
         qsort(c, m, sizeof *c, bvh_real_order);
         bvh->centre[a] = c[m / 2];
-        half = fmax(half, 0.5 * (double)all.hi[a] - 0.5 * (double)all.lo[a]);
     }
+    half = fmax(fmax(0.5 * (double)hi0 - 0.5 * (double)lo0, 0.5 * (double)hi1 - 0.5 * (double)lo1),
+                0.5 * (double)hi2 - 0.5 * (double)lo2);
     bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;
 }
 
@@ -91,16 +124,12 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
         bvh_free(bvh);
         return -1;
     }
+    bvh_frame(bvh, first, n, pad, threads);
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #endif
-    for (size_t i = 0; i < n; i++) {
-        unsigned kind = i >= first[3] ? BVH_SQUARE : i >= first[2] ? BVH_CUBE
-                        : i >= first[1]               ? BVH_TRIANGLE
-                                                      : BVH_SPHERE;
-        bvh_prim_box(shapes, bvh_ref(kind, i - first[kind]), pad, &prims[i]);
-    }
-    bvh_frame(bvh, prims, n);
+    for (size_t i = 0; i < n; i++)
+        bvh_prim_box(bvh, bvh_ref_at(first, i), pad, &prims[i]);
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #pragma omp single

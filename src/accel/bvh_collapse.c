@@ -1,5 +1,5 @@
 /* bvh_collapse.c: the binary tree's nodes gathered into the wide nodes of
- * bvh.h, their boxes rounded outwards to floats (see bvh_collapse.h). */
+ * bvh.h (see bvh_collapse.h). */
 #include "bvh_collapse.h"
 
 #include <string.h>
@@ -46,7 +46,7 @@ size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
  * the previous child's); stores the box of its children's boxes in *bounds
  * and the depth of its deepest node (it being at depth) in *deepest;
  * returns how many nodes it wrote. A leaf's box is that of its primitives'
- * padded boxes (bvh_prim_box() with pad), as the build had it. In an OpenMP
+ * padded boxes (bvh_prim_box() with pad, in the frame), as the build had it. In an OpenMP
  * parallel region, children of BVH_TASK_MIN primitives or more are made
  * by tasks, their places counted first: the nodes are the same. */
 size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
@@ -68,7 +68,7 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
         if (c->count > 0) {
             for (uint32_t i = c->index; i < c->index + c->count; i++) {
                 BuildPrim p;
-                bvh_prim_box(&bvh->shapes, bvh->prims[i], pad, &p);
+                bvh_prim_box(bvh, bvh->prims[i], pad, &p);
                 box_grow(&box[k], &p.box);
             }
             w->link[k] = bvh_link(c->index, c->count);
@@ -92,9 +92,8 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
     *deepest = depth;
     for (int k = 0; k < BVH_WIDTH; k++) {
         for (int a = 0; a < 3; a++) {
-            w->box[a][k] = bvh_float_below(((double)box[k].lo[a] - bvh->centre[a]) * bvh->scale);
-            w->box[3 + a][k] =
-                bvh_float_above(((double)box[k].hi[a] - bvh->centre[a]) * bvh->scale);
+            w->box[a][k] = box[k].lo[a];
+            w->box[3 + a][k] = box[k].hi[a];
         }
         box_grow(bounds, &box[k]);
         *deepest = deep[k] > *deepest ? deep[k] : *deepest;

@@ -16,10 +16,10 @@ enum {
 static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axis)
 {
     while (hi - lo > 1) {
-        real pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
+        float pivot = bvh_centroid(&prims[lo + (hi - lo) / 2], axis);
         size_t less = lo, i = lo, more = hi; /* [lo, less) < pivot, [more, hi) > */
         while (i < more) {
-            real c = bvh_centroid(&prims[i], axis);
+            float c = bvh_centroid(&prims[i], axis);
             BuildPrim tmp = prims[i];
             if (c < pivot) {
                 prims[i++] = prims[less];
@@ -40,19 +40,21 @@ static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axi
     }
 }
 
-/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo. */
-static int bvh_bin(const BuildPrim *p, int axis, real lo, real scale, int bins)
+/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo
+ * (scale may be infinite, for centroids a few subnormals apart: the
+ * product is then NaN or infinite, and each has its bin). */
+static int bvh_bin(const BuildPrim *p, int axis, float lo, float scale, int bins)
 {
-    int b = (int)((bvh_centroid(p, axis) - lo) * scale);
+    float x = (bvh_centroid(p, axis) - lo) * scale;
 
-    return b < 0 ? 0 : b >= bins ? bins - 1 : b;
+    return x >= 0 ? (x < (float)bins ? (int)x : bins - 1) : 0;
 }
 
 /* The primitives of prims[start..end) sorted into the centroid bins of
  * each axis whose bit is set in axes, in one pass: how many in each bin,
  * and the box of their boxes. */
 static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsigned axes,
-                         const real lo[3], const real scale[3], int bins,
+                         const float lo[3], const float scale[3], int bins,
                          size_t count[3][BVH_BINS], Box bin[3][BVH_BINS])
 {
     for (int a = 0; a < 3; a++) {
@@ -77,12 +79,12 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
  * (traversal 1, intersection 1 a primitive, areas relative to the box of
  * them all), and the first bin of the right part (-1 when no split leaves
  * both parts non-empty). */
-static real bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], int bins,
+static float bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], int bins,
                          size_t n, int *split)
 {
     size_t left_n[BVH_BINS];
     Box acc;
-    real left_area[BVH_BINS], best = INFINITY, per_area;
+    float left_area[BVH_BINS], best = INFINITY, per_area;
 
     *split = -1;
     /* An empty bin changes neither box nor count: it takes its left
@@ -103,14 +105,14 @@ static real bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], 
     per_area = 1 / box_half_area(&acc); /* acc holds every bin */
     box_empty(&acc);
     for (int b = bins - 1; b > 0; b--) {
-        real cost;
+        float cost;
         if (count[b] == 0)
             continue;
         box_grow(&acc, &bin[b]);
         if (left_n[b - 1] == 0 || left_n[b - 1] == n)
             continue;
-        cost = 1 + (left_area[b - 1] * (real)left_n[b - 1] +
-                    box_half_area(&acc) * (real)(n - left_n[b - 1])) *
+        cost = 1 + (left_area[b - 1] * (float)left_n[b - 1] +
+                    box_half_area(&acc) * (float)(n - left_n[b - 1])) *
                        per_area;
         if (cost < best) {
             best = cost;
@@ -126,7 +128,7 @@ static real bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], 
 static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *cb, int depth)
 {
     size_t n = end - start, mid, count[3][BVH_BINS];
-    real extent[3], scale[3], best = INFINITY;
+    float extent[3], scale[3], best = INFINITY;
     int best_split = -1, axis;
     unsigned axes = 0;
     Box bin[3][BVH_BINS];
@@ -157,7 +159,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
     bvh_bin_axes(prims, start, end, axes, cb->lo, scale, bins, count, bin);
     for (int a = 0; a < 3; a++) {
         int split;
-        real cost;
+        float cost;
         if (!(axes >> a & 1))
             continue;
         cost = bvh_sah_axis(count[a], bin[a], bins, n, &split);
@@ -167,7 +169,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
             axis = a;
         }
     }
-    if (best_split < 0 || (best >= (real)n && n <= BVH_LEAF_MAX))
+    if (best_split < 0 || (best >= (float)n && n <= BVH_LEAF_MAX))
         return n <= BVH_LEAF_MAX ? start : start + n / 2;
     /* Partition by bin. */
     {
@@ -208,7 +210,7 @@ void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root)
 
         box_empty(&cb);
         for (size_t i = task.start; i < task.end; i++) {
-            real c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+            float c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
                          bvh_centroid(&prims[i], 2)};
             box_grow_point(&cb, c);
         }
