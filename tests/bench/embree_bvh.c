@@ -130,6 +130,15 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     return 0;
 }
 
+/* Embree keeps its own order: the spheres stay where they are (bvh.h
+ * allows it: the answers are the same). */
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
+{
+    (void)bvh;
+    (void)spheres;
+    return -1;
+}
+
 void bvh_free(Bvh *bvh)
 {
     rtcReleaseScene(eb_scene);
@@ -141,6 +150,13 @@ void bvh_free(Bvh *bvh)
  * reports the process's peak instead); n * 64 keeps the memory-limit check
  * of scene.c in use with a rough size of its nodes. */
 size_t bvh_build_memory(size_t n)
+{
+    return n * 64;
+}
+
+/* The light buffers' budget (scene_accel.c) is a share of this: the
+ * same rough size. */
+size_t bvh_build_scratch(size_t n)
 {
     return n * 64;
 }
