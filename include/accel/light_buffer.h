@@ -33,6 +33,8 @@ typedef struct LightBuffer {
                                   nearest point first */
     size_t entry_count;
     double slack;              /* the padding of distances, scene units */
+    int ahead;                 /* shadow queries ask memory for spheres
+                                  ahead (they outgrow the caches) */
 } LightBuffer;
 
 /* Builds into *lb the light buffer of the count spheres around centre,

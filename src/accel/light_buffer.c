@@ -42,9 +42,12 @@ enum {
     LB_CELLS_A_SPHERE = 64, /* cells, at most, for each sphere */
     LB_HOLDERS_MAX = 8, /* spheres listed in every cell, at most */
     LB_BUCKETS = 64,    /* of the spheres' apparent sizes, by power of 2 */
-    LB_STEPS = 8        /* a buffer coarser than the resolution that pays
+    LB_STEPS = 8,       /* a buffer coarser than the resolution that pays
                            best by more than 2^(LB_STEPS / 4) = 4 is not
                            worth building */
+    LB_AHEAD = 4,       /* a shadow query asks memory for the sphere this
+                           many entries on... */
+    LB_AHEAD_BYTES = 1 << 20 /* ...when the spheres take more than this */
 };
 
 /* The axes of face f / 2: the face's own, then u's and v's. */
@@ -465,6 +468,7 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
         lb_sort(lb->entries + lb->first[c], lb->first[c + 1] - lb->first[c], near);
     free(near);
     lb->slack = LB_SLACK * m;
+    lb->ahead = count * sizeof *spheres > LB_AHEAD_BYTES;
     return 0;
 }
 
@@ -509,6 +513,16 @@ int light_buffer_occluded(const LightBuffer *lb, const Ray *ray, real tmax, uint
     limit = vec3_length(d) * (1 + LB_PAD) + lb->slack;
     for (uint32_t i = lb->first[c], end = lb->first[c + 1]; i < end; i++) {
         const Sphere *s = &lb->spheres[lb->entries[i]];
+#if defined(__GNUC__)
+        /* A lit point tests every sphere nearer than it: theirs are read
+         * at random, and asked for ahead the waits overlap (both of the
+         * cache lines its centre and radius may straddle). */
+        if (lb->ahead && i + LB_AHEAD < end) {
+            const char *next = (const char *)&lb->spheres[lb->entries[i + LB_AHEAD]];
+            __builtin_prefetch(next);
+            __builtin_prefetch(next + sizeof s->centre + sizeof s->radius - 1);
+        }
+#endif
         if (lb_beyond(lb, s, limit))
             break;
         if (sphere_hit(s->centre, s->radius, ray, 0, tmax, &t)) {
