@@ -149,6 +149,47 @@ static void light_buffer_answers_as_the_loops(void)
     free(spheres);
 }
 
+/* A field whose spheres outgrow the caches (more than 1 MiB): shadow
+ * queries ask memory for spheres ahead of the one they test (a fewer
+ * hold none), and still answer as the loops, lists of every length read
+ * to their ends. */
+static void light_buffer_reads_ahead_as_the_loops(void)
+{
+    enum { N = 20000 };
+    Sphere *spheres = malloc(N * sizeof *spheres);
+    Vec3 c = vec3(0.3, 3, -2);
+    LightBuffer lb;
+    int differ = 0, blocked = 0, lit = 0;
+
+    if (!spheres) {
+        CHECK(spheres != NULL);
+        return;
+    }
+    random_spheres(spheres, N, 1);
+    for (int i = 0; i < N; i++)
+        spheres[i].radius *= 0.1; /* a field mostly lit, some points hidden */
+    CHECK_INT(0, light_buffer_build(&lb, c, spheres, 1000, SIZE_MAX, SIZE_MAX, 2));
+    CHECK(!lb.ahead);
+    light_buffer_free(&lb);
+    CHECK_INT(0, light_buffer_build(&lb, c, spheres, N, SIZE_MAX, SIZE_MAX, 2));
+    CHECK(lb.ahead);
+    for (int i = 0; i < 1000; i++) {
+        const Sphere *sp = &spheres[(int)(rng_uniform() * N)];
+        Vec3 at = rim_point(sp, c, i);
+        Ray shadow = {at, vec3_sub(c, at)};
+        uint32_t cache = UINT32_MAX;
+        int fa = loop_occluded(spheres, N, &shadow, 1);
+
+        differ += fa != light_buffer_occluded(&lb, &shadow, 1, &cache);
+        blocked += fa;
+        lit += !fa;
+    }
+    light_buffer_free(&lb);
+    CHECK(blocked > 50 && lit > 50);
+    CHECK_INT(0, differ);
+    free(spheres);
+}
+
 /* Budgets: a buffer that would not fit is not built (nothing held), and a
  * ray with no direction is left to the caller. */
 static void light_buffer_keeps_to_its_budget(void)
@@ -247,6 +288,7 @@ static void scene_buffers_answer_as_without(void)
 
 const TestCase light_buffer_tests[] = {
     {"light_buffer_answers_as_the_loops", light_buffer_answers_as_the_loops},
+    {"light_buffer_reads_ahead_as_the_loops", light_buffer_reads_ahead_as_the_loops},
     {"light_buffer_keeps_to_its_budget", light_buffer_keeps_to_its_budget},
     {"scene_buffers_answer_as_without", scene_buffers_answer_as_without},
     {NULL, NULL},

@@ -17,7 +17,7 @@ enum {
 
 /* A box, as lo and hi corners, in the hierarchy's frame (bvh.h: scene
  * coordinates less centre, times scale) and in floats, as its nodes hold
- * them: the build reads half the bytes doubles would take. */
+ * them: the build holds half the bytes doubles would take. */
 typedef struct {
     float lo[3], hi[3];
 } Box;

@@ -46,9 +46,10 @@ size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
  * the previous child's); stores the box of its children's boxes in *bounds
  * and the depth of its deepest node (it being at depth) in *deepest;
  * returns how many nodes it wrote. A leaf's box is that of its primitives'
- * padded boxes (bvh_prim_box() with pad, in the frame), as the build had it. In an OpenMP
- * parallel region, children of BVH_TASK_MIN primitives or more are made
- * by tasks, their places counted first: the nodes are the same. */
+ * padded boxes in the frame (bvh_prim_box() with pad), as the build had
+ * them. In an OpenMP parallel region, children of BVH_TASK_MIN primitives
+ * or more are made by tasks, their places counted first: the nodes are
+ * the same. */
 size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
                     Bvh *bvh, Box *bounds, int *deepest)
 {
