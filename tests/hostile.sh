@@ -83,16 +83,16 @@ check "10^6 spheres on one line" 1 "raytrace: $T/one-line.txt:8:30: error: expec
 
 # 32768 x 32768 pixels: the limit stops it before a byte is allocated.
 printf '0 0 -5\n-1 1 0\n1 1 0\n-1 -1 0\n32768\n0 0 0\n5 5 -5 255 255 255\n%s\n' "$S" >"$T/huge.txt"
-check "32768 x 32768 PNG under the default limit" 1 "raytrace: $T/huge.txt: error: a 32768 x 32768 image needs 9.001 GiB to render and write: with the scene's 2.5 KiB, more than the memory limit of 4 GiB (raise it with --memory-limit)" \
+check "32768 x 32768 PNG under the default limit" 1 "raytrace: $T/huge.txt: error: a 32768 x 32768 image needs 9.001 GiB to render and write: with the scene's 2.375 KiB, more than the memory limit of 4 GiB (raise it with --memory-limit)" \
     "$T/o/out.png" "$T/huge.txt" "$T/o/out.png"
-check "32768 x 32768 PPM under a 1G limit" 1 "raytrace: $T/huge.txt: error: a 32768 x 32768 image needs 3 GiB to render and write: with the scene's 2.5 KiB, more than the memory limit of 1 GiB (raise it with --memory-limit)" \
+check "32768 x 32768 PPM under a 1G limit" 1 "raytrace: $T/huge.txt: error: a 32768 x 32768 image needs 3 GiB to render and write: with the scene's 2.375 KiB, more than the memory limit of 1 GiB (raise it with --memory-limit)" \
     "$T/o/out.ppm" --memory-limit 1G "$T/huge.txt" "$T/o/out.ppm"
 
 # The memory limit reached while reading: positioned at the element.
 { echo "$H"; awk 'BEGIN { for (i = 0; i < 2000; i++) printf "sphere: %d 0 3 1 200 100 50 0\n", i }'; } >"$T/many.txt"
-check "memory limit while reading" 1 "raytrace: $T/many.txt:1032:1: error: the scene would pass the memory limit of 100 KiB here: raise it with --memory-limit" \
-    "$T/o/out.ppm" --memory-limit 100K "$T/many.txt" "$T/o/out.ppm"
-check "memory limit before the hierarchy" 1 "raytrace: $T/many.txt: error: the bounding volume hierarchy of 2000 objects needs up to 308.9 KiB, more than the 286.2 KiB the memory limit leaves (--memory-limit; --no-accel renders without it, slowly)" \
+check "memory limit while reading" 1 "raytrace: $T/many.txt:1032:1: error: the scene would pass the memory limit of 90 KiB here: raise it with --memory-limit" \
+    "$T/o/out.ppm" --memory-limit 90K "$T/many.txt" "$T/o/out.ppm"
+check "memory limit before the hierarchy" 1 "raytrace: $T/many.txt: error: the bounding volume hierarchy of 2000 objects needs up to 308.9 KiB, more than the 302.2 KiB the memory limit leaves (--memory-limit; --no-accel renders without it, slowly)" \
     "$T/o/out.ppm" --memory-limit 400K "$T/many.txt" "$T/o/out.ppm"
 check "--memory-limit 0 is no limit" 0 - "$T/o/out.ppm" --memory-limit 0 "$T/many.txt" "$T/o/out.ppm"
 check "a bad --memory-limit" 2 "raytrace: option '--memory-limit' takes a size in bytes such as 512M or 8G (0: no limit), found '1T'" \

@@ -69,7 +69,7 @@ static void parse_sphere_materials_read_back_exactly(void)
         CHECK(memcmp(&m.colour.r, &want[i][0], sizeof want[i][0]) == 0);
         CHECK(memcmp(&m.colour.g, &want[i][1], sizeof want[i][1]) == 0);
         CHECK(memcmp(&m.colour.b, &want[i][2], sizeof want[i][2]) == 0);
-        CHECK_INT(i == 0 ? -1 : (long long)i - 1, scene_spheres(&sc)[i].material);
+        CHECK_INT(i == 0 ? -1 : (long long)i - 1, sphere_material_index(&scene_spheres(&sc)[i]));
     }
     CHECK_NEAR(0.25, scene_material(&sc, SHAPE_SPHERE, 4).transparency, 0);
     CHECK_NEAR(1.5, scene_material(&sc, SHAPE_SPHERE, 4).ior, 0);
@@ -92,9 +92,9 @@ static void parse_spheres_share_a_material_until_one_changes(void)
                               "sphere: 0 0 8 1 200 100 50 0.25 0.5 1.25\n",
                        &sc, &err));
     CHECK_INT(2, (long long)sc.material_count);
-    CHECK_INT(0, scene_spheres(&sc)[0].material);
-    CHECK_INT(0, scene_spheres(&sc)[2].material);
-    CHECK_INT(1, scene_spheres(&sc)[3].material);
+    CHECK_INT(0, sphere_material_index(&scene_spheres(&sc)[0]));
+    CHECK_INT(0, sphere_material_index(&scene_spheres(&sc)[2]));
+    CHECK_INT(1, sphere_material_index(&scene_spheres(&sc)[3]));
     m = scene_material_edit(&sc, SHAPE_SPHERE, 1, &rc);
     CHECK(m != NULL);
     if (m)

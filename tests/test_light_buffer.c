@@ -155,7 +155,7 @@ static void light_buffer_answers_as_the_loops(void)
  * to their ends. */
 static void light_buffer_reads_ahead_as_the_loops(void)
 {
-    enum { N = 20000 };
+    enum { N = 30000 };
     Sphere *spheres = malloc(N * sizeof *spheres);
     Vec3 c = vec3(0.3, 3, -2);
     LightBuffer lb;

@@ -96,8 +96,10 @@ static int limits_fill(Sphere *room, void *ctx)
 static int same_sphere(const Sphere *a, const Sphere *b)
 {
     return memcmp(&a->centre, &b->centre, sizeof a->centre) == 0 && a->radius == b->radius &&
-           a->reflection == b->reflection && a->order == b->order &&
-           a->material == b->material && memcmp(a->rgb, b->rgb, sizeof a->rgb) == 0;
+           a->plain == b->plain && a->order == b->order &&
+           (a->plain ? a->material.reflection == b->material.reflection
+                     : a->material.index == b->material.index) &&
+           memcmp(a->rgb, b->rgb, sizeof a->rgb) == 0;
 }
 
 /* Spheres added at once take the room, positions and materials that adding

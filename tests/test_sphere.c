@@ -10,7 +10,7 @@
 
 static Sphere sphere_at(double x, double y, double z, double r)
 {
-    Sphere s = {{x, y, z}, r, 0, 0, -1, {255, 255, 255}};
+    Sphere s = {{x, y, z}, r, {0}, 0, {255, 255, 255}, 1};
     return s;
 }
 

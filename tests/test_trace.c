@@ -116,10 +116,10 @@ static void trace_mirror_reflects_background_and_spheres(void)
      * the background. */
     CHECK_COLOUR(10, 20, 30, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* Half a mirror: half its own light, half the background. */
-    scene_spheres(&sc)[0].reflection = 0.5;
+    scene_spheres(&sc)[0].material.reflection = 0.5;
     CHECK_COLOUR(105, 60, 40, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     /* A green ball behind the eye, lit from below, is seen in the mirror. */
-    scene_spheres(&sc)[0].reflection = 1;
+    scene_spheres(&sc)[0].material.reflection = 1;
     add_sphere(&sc, vec3(0, 0, 8), 1, colour(0, 250, 0), 0);
     CHECK_COLOUR(0, 250, 0, seen(&sc, vec3(0, 0, 3), vec3(0, 0, -1), 10), 1e-12);
     scene_free(&sc);
@@ -264,7 +264,7 @@ static void trace_shadow_through_glass_is_attenuated_per_crossing(void)
     add_sphere_of(&sc, vec3(0, 5, 0), 1, glass(colour(255, 255, 255), 0, 0.5, 1.5));
     CHECK(sc.has_transparency);
     CHECK_COLOUR(50, 25, 10, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 1e-12);
-    sc.materials[scene_spheres(&sc)[0].material].transparency = 0; /* glass: in the table */
+    sc.materials[sphere_material_index(&scene_spheres(&sc)[0])].transparency = 0; /* glass: in the table */
     CHECK_COLOUR(0, 0, 0, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 0);
     scene_spheres(&sc)[0].centre.x = 4;
     CHECK_COLOUR(200, 100, 40, seen(&sc, vec3(3, 1, 0), vec3(-3, -1, 0), 0), 1e-12);
@@ -293,7 +293,7 @@ static void trace_refraction_enters_and_leaves_a_ball(void)
     add_sphere(&sc, vec3(10, h, 0), 0.05, colour(0, 255, 0), 0);
     CHECK_COLOUR(255, 0, 0, seen(&sc, vec3(-10, h, 0), vec3(1, 0, 0), 10), 1e-9);
     /* With n = 1 the same ray goes straight to the green target. */
-    sc.materials[scene_spheres(&sc)[0].material].ior = 1;
+    sc.materials[sphere_material_index(&scene_spheres(&sc)[0])].ior = 1;
     CHECK_COLOUR(0, 255, 0, seen(&sc, vec3(-10, h, 0), vec3(1, 0, 0), 10), 1e-9);
     scene_free(&sc);
 }

@@ -17,19 +17,35 @@
 #include "geometry/ray.h"
 #include "math/vec3.h"
 
-/* A sphere: 56 bytes, as a scene may hold millions. Most spheres' material
+/* A sphere: 48 bytes, as a scene may hold millions. Most spheres' material
  * is plain (sphere_plain()): its mirror weight and colour are held here;
- * any other is in the scene's table of materials. */
+ * any other is in the scene's table of materials (sphere_material_index()). */
 typedef struct {
     Vec3 centre;       /* scene units */
     real radius;       /* scene units, > 0 */
-    double reflection; /* a plain material's mirror weight R */
+    union {
+        double reflection; /* plain: the material's mirror weight R */
+        int index;         /* else: its index in the scene's materials
+                              (scene.h: scene_material()) */
+    } material;
     unsigned order;    /* position among the scene's objects, for ties */
-    int material;      /* -1: the plain material of reflection and rgb;
-                          else the index of the sphere's in the scene's
-                          materials (scene.h: scene_material()) */
-    uint8_t rgb[3];    /* a plain material's colour Ci */
+    uint8_t rgb[3];    /* plain: the material's colour Ci */
+    uint8_t plain;     /* 1: the material is plain, held here; 0: indexed */
 } Sphere;
+
+/* Returns the index of sphere s's material in the scene's materials, or
+ * -1 when s holds it itself (plain). */
+static inline int sphere_material_index(const Sphere *s)
+{
+    return s->plain ? -1 : s->material.index;
+}
+
+/* Gives sphere s the material of index k in the scene's materials. */
+static inline void sphere_set_material_index(Sphere *s, int k)
+{
+    s->material.index = k;
+    s->plain = 0;
+}
 
 /* Returns 1 when a sphere holds material m itself: m is plain
  * (material_is_plain()) and its colour's channels are whole numbers from 0
@@ -47,14 +63,14 @@ static inline int sphere_plain(const Material *m)
 /* Returns the plain material sphere s holds (sphere_plain()). */
 static inline Material sphere_material(const Sphere *s)
 {
-    return material_plain(colour(s->rgb[0], s->rgb[1], s->rgb[2]), s->reflection);
+    return material_plain(colour(s->rgb[0], s->rgb[1], s->rgb[2]), s->material.reflection);
 }
 
 /* Gives sphere s the plain material m (sphere_plain(m)). */
 static inline void sphere_set_plain(Sphere *s, const Material *m)
 {
-    s->reflection = m->reflection;
-    s->material = -1;
+    s->material.reflection = m->reflection;
+    s->plain = 1;
     s->rgb[0] = (uint8_t)m->colour.r;
     s->rgb[1] = (uint8_t)m->colour.g;
     s->rgb[2] = (uint8_t)m->colour.b;

@@ -300,7 +300,7 @@ static inline Material scene_material(const Scene *scene, ShapeKind kind, size_t
     if (kind != SHAPE_SPHERE)
         return *scene_shape_material(scene, kind, index);
     s = &scene_spheres(scene)[index];
-    return s->material < 0 ? sphere_material(s) : scene->materials[s->material];
+    return s->plain ? sphere_material(s) : scene->materials[s->material.index];
 }
 
 /* Returns the material of the shape of kind and index in scene, to be

@@ -208,12 +208,12 @@ Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
         return scene_shape_material(scene, kind, k);
     /* A copy of its own: spheres in a row may share one (scene_add_sphere()). */
     s = &scene_spheres(scene)[k];
-    m = s->material < 0 ? sphere_material(s) : scene->materials[s->material];
+    m = s->plain ? sphere_material(s) : scene->materials[s->material.index];
     if ((at = scene_add_material(scene, &m)) < 0) {
         *rc = (int)at;
         return NULL;
     }
-    s->material = (int)at;
+    sphere_set_material_index(s, (int)at);
     return &scene->materials[at];
 }
 
@@ -305,19 +305,19 @@ static int scene_push_shape(Scene *scene, ShapeKind kind, const void *item, cons
 
 int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 {
-    Sphere s = {centre, radius, 0, 0, -1, {0, 0, 0}};
+    Sphere s = {centre, radius, {0}, 0, {0, 0, 0}, 0};
     size_t count = scene->shapes[SHAPE_SPHERE].count;
     long at = -1;
-    int rc, last = count > 0 ? scene_spheres(scene)[count - 1].material : -1;
+    int rc, last = count > 0 ? sphere_material_index(&scene_spheres(scene)[count - 1]) : -1;
 
     if (sphere_plain(m))
         sphere_set_plain(&s, m);
     else if (last >= 0 && memcmp(&scene->materials[last], m, sizeof *m) == 0)
-        s.material = last; /* the previous sphere's: shared (an edit copies it first) */
+        sphere_set_material_index(&s, last); /* the previous sphere's: shared (an edit copies it first) */
     else if ((at = scene_add_material(scene, m)) < 0)
         return (int)at;
     else
-        s.material = (int)at;
+        sphere_set_material_index(&s, (int)at);
     rc = scene_push_shape(scene, SHAPE_SPHERE, &s, m);
     if (rc != 0 && at >= 0)
         scene->material_count--;
