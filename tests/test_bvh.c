@@ -110,7 +110,8 @@ static Vec3 in_frame(const Bvh *bvh, Vec3 p)
 
 /* Checks node id's subtree: each child's box holds its children's boxes or
  * its primitives', leaves are small, unused children come last with a box
- * no ray meets; counts the primitives in seen. */
+ * no ray meets, a node not full has leaves alone; counts the primitives in
+ * seen. */
 static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
                           unsigned char *seen, int *bad)
 {
@@ -180,6 +181,11 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
     }
     if (used < 2 && id != 0)
         (*bad)++;
+    /* A node of fewer children than BVH_WIDTH holds leaves alone (as
+     * bvh_build_memory() counts on). */
+    for (int k = 0; k < used && used < BVH_WIDTH; k++)
+        if (bvh_link_count(n->link[k]) == 0)
+            (*bad)++;
 }
 
 static void bvh_holds_every_primitive_once_in_nested_boxes(void)

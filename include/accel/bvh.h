@@ -3,10 +3,11 @@
  * (spheres, triangles, cubes and squares), built with the surface area
  * heuristic on binned centroids.
  *
- * Unbounded shapes (planes, cylinders, cones) stay outside it. The binary tree the heuristic
- * builds is then collapsed into nodes of BVH_WIDTH children, whose boxes a
- * ray is tested against together (GNU C vector extensions: gcc and clang
- * turn them into SIMD instructions). Each box is padded so that every ray
+ * Unbounded shapes (planes, cylinders, cones) stay outside it. The binary
+ * tree the heuristic builds is then collapsed, as the same heuristic plans,
+ * into nodes of BVH_WIDTH children, whose boxes a ray is tested against
+ * together (GNU C vector extensions: gcc and clang turn them into SIMD
+ * instructions). Each box is padded so that every ray
  * the exact primitive tests accept also enters the boxes around the
  * primitive; a query visits the boxes the ray crosses, nearest first, and
  * applies the same primitive tests and the same tie rule as a loop over

@@ -70,7 +70,8 @@ typedef struct {
 typedef struct {
     uint32_t index;  /* interior: the right child (the left is the next
                         node); leaf: the first of its primitives */
-    uint32_t count;  /* primitives in a leaf; 0 for an interior node */
+    uint32_t count;  /* primitives in a leaf; 0 for an interior node, until
+                        bvh_plan() stores its plan there */
     uint32_t size;   /* primitives in its subtree */
 } BuildNode;
 

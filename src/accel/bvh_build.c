@@ -85,6 +85,24 @@ static void bvh_frame(Bvh *bvh, const size_t first[4], size_t n, real pad, int t
     bvh->scale = half > 0 ? ldexp(1, -(ilogb(half) < -1000 ? -1000 : ilogb(half))) : 1;
 }
 
+/* Returns the references of the n primitives of prims, in their order, in
+ * the memory prims held, given back but for their 4 bytes each: the build
+ * never holds both. */
+static uint32_t *bvh_refs_in_place(BuildPrim *prims, size_t n)
+{
+    unsigned char *at = (unsigned char *)prims;
+    uint32_t *refs;
+
+    /* Reference i goes to bytes 4 i, below primitive i + 1's, which is yet
+     * to be read. */
+    for (size_t i = 0; i < n; i++) {
+        uint32_t ref = prims[i].ref;
+        memcpy(at + i * sizeof ref, &ref, sizeof ref);
+    }
+    refs = realloc(prims, n * sizeof *refs);
+    return refs ? refs : (uint32_t *)(void *)at;
+}
+
 /* Returns 1 when this program has the queries' AVX2 build and the
  * processor (and its system) runs AVX2 and FMA instructions. */
 static int bvh_has_avx2(void)
@@ -117,8 +135,7 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
         return -1;
     prims = malloc(n * sizeof *prims);
     nodes = malloc((2 * n - 1) * sizeof *nodes);
-    bvh->prims = malloc(n * sizeof *bvh->prims);
-    if (!prims || !nodes || !bvh->prims) {
+    if (!prims || !nodes) {
         free(prims);
         free(nodes);
         bvh_free(bvh);
@@ -136,17 +153,22 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 #endif
     bvh_build_subtree(prims, nodes, (BuildTask){0, n, 0, 0});
     (void)threads;
-    for (size_t i = 0; i < n; i++)
-        bvh->prims[i] = prims[i].ref;
-    bvh->prim_count = n;
-    free(prims);
-    /* Give back the slots the fixed offsets left unused: the binary tree
-     * and the nodes made from it are held together next. */
+    /* Give back the slots the fixed offsets left unused, plan the wide
+     * nodes on the primitives' boxes (in the leaves' order), then keep
+     * their references alone: the binary tree and the nodes made from it
+     * are held together next. */
     {
         BuildNode *fit = realloc(nodes, bvh_compact(nodes) * sizeof *nodes);
         if (fit)
             nodes = fit;
     }
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
+#pragma omp single
+#endif
+    bvh_plan(nodes, prims);
+    bvh->prims = bvh_refs_in_place(prims, n);
+    bvh->prim_count = n;
     bvh->node_count = bvh_collapsed_count(nodes, 0);
     bvh->nodes = aligned_new(_Alignof(BvhNode), bvh->node_count * sizeof *bvh->nodes);
     if (!bvh->nodes) {
@@ -204,18 +226,19 @@ int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
 
 size_t bvh_build_memory(size_t n)
 {
-    /* Building: the primitives' boxes, the binary tree and the references.
-     * Collapsing: the tree, the references and the nodes, at most
-     * W n / (2 (W - 1)) of them (W = BVH_WIDTH): a node of W children
-     * takes up W - 1 of the tree's interior nodes; one of m < W children has
-     * only leaves, m >= 2 of them, and takes up m - 1. With F nodes of the
-     * first kind and S of the second holding M leaves in all, the tree's
-     * L <= n leaves give L - 1 = (W - 1) F + M - S, M >= 2 S and M <= L, so
-     * F + S = (L - 1 - M + W S) / (W - 1) <= (L - 1 + (W - 2) S) / (W - 1)
-     * <= W L / (2 (W - 1)). After: the nodes, the references and, to
-     * renumber the spheres, 4 bytes and a bit a primitive, less than the
-     * binary tree's two nodes. */
-    size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode) + sizeof(uint32_t);
+    /* Building: the primitives' boxes and the binary tree (the references
+     * then take the boxes' place). Collapsing: the tree (its plan in it),
+     * the references and the nodes, at most W n / (2 (W - 1)) of them (W =
+     * BVH_WIDTH): a node of W children takes up W - 1 of the tree's
+     * interior nodes; one of m < W children has only leaves, m >= 2 of
+     * them, and takes up m - 1 (bvh_plan()). With F nodes of the first kind
+     * and S of the second holding M leaves in all, the tree's L <= n leaves
+     * (a leaf: a subtree of the tree made one) give L - 1 = (W - 1) F + M - S,
+     * M >= 2 S and M <= L, so F + S = (L - 1 - M + W S) / (W - 1) <=
+     * (L - 1 + (W - 2) S) / (W - 1) <= W L / (2 (W - 1)). After: the nodes,
+     * the references and, to renumber the spheres, 4 bytes and a bit a
+     * primitive, less than the binary tree's two nodes. */
+    size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode);
     size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 
     if (n > (SIZE_MAX / 2 - 4096) / (build + sizeof(BvhNode)))

@@ -9,11 +9,19 @@
 
 #include "bvh_box.h"
 
-/* Returns how many wide nodes collapsing binary node id's subtree makes. */
+/* Plans how the binary tree nodes, over prims, is gathered into wide nodes:
+ * which subtrees become a wide node's children, leaves or nodes, for the
+ * least cost by the surface area heuristic; the plan replaces each
+ * interior node's count (0). Each node has BVH_WIDTH children, or fewer
+ * and all leaves. */
+void bvh_plan(BuildNode *nodes, const BuildPrim *prims);
+
+/* Returns how many wide nodes collapsing planned binary node id's subtree
+ * makes. */
 size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id);
 
-/* Writes the wide node made from binary node id, and its subtree's, into
- * bvh->nodes from self on; stores their bounds in *bounds and the depth of
+/* Writes the wide node made from planned binary node id, and its
+ * subtree's, into bvh->nodes from self on; stores their bounds in *bounds and the depth of
  * the deepest in *deepest; returns how many it wrote. */
 size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
                     Bvh *bvh, Box *bounds, int *deepest);
