@@ -109,6 +109,32 @@ void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3]
     }
 }
 
+void bvh_prim_prefetch(const BvhShapes *shapes, uint32_t ref)
+{
+    size_t i = bvh_index(ref);
+    const char *at, *end; /* the first and last bytes bvh_prim_bounds() reads */
+
+    switch (bvh_kind(ref)) {
+    case BVH_TRIANGLE:
+        at = (const char *)&shapes->triangles[i].v;
+        end = at + sizeof shapes->triangles[i].v - 1;
+        break;
+    case BVH_CUBE:
+        at = (const char *)&shapes->cubes[i];
+        end = at + sizeof shapes->cubes[i] - 1;
+        break;
+    case BVH_SQUARE:
+        at = (const char *)&shapes->squares[i];
+        end = at + sizeof shapes->squares[i] - 1;
+        break;
+    default:
+        at = (const char *)&shapes->spheres[i].centre;
+        end = (const char *)&shapes->spheres[i].radius + sizeof shapes->spheres[i].radius - 1;
+    }
+    __builtin_prefetch(at);
+    __builtin_prefetch(end);
+}
+
 void bvh_prim_box(const Bvh *bvh, uint32_t ref, real pad, BuildPrim *p)
 {
     real lo[3], hi[3];

@@ -90,6 +90,10 @@ real bvh_padding(const BvhShapes *shapes, real reach, int threads);
  * padded by pad, in scene coordinates. */
 void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3], real hi[3]);
 
+/* Asks memory for what bvh_prim_bounds() reads of primitive ref of shapes,
+ * without waiting for it. */
+void bvh_prim_prefetch(const BvhShapes *shapes, uint32_t ref);
+
 /* Stores in *p primitive ref of bvh's shapes and its box padded by pad
  * (bvh_prim_bounds()), in bvh's frame, rounded outwards to floats
  * (bvh_float_below() and bvh_float_above()). */

@@ -213,6 +213,14 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
     size_t next = self + 1;
     Box box[BVH_WIDTH];
 
+    /* The leaves' primitives are read where the file put them, at random:
+     * memory is asked for all of them before the first is read. */
+    for (int k = 0; k < m; k++)
+        if (members[k].leaf) {
+            uint32_t first = bvh_first_prim(nodes, members[k].id);
+            for (uint32_t i = first; i < first + nodes[members[k].id].size; i++)
+                bvh_prim_prefetch(&bvh->shapes, bvh->prims[i]);
+        }
     memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
     for (int k = 0; k < BVH_WIDTH; k++) {
         box_empty(&box[k]); /* stays empty for an unused child */
