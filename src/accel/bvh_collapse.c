@@ -246,7 +246,8 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
             bvh_collapse(nodes, members[k].id, at, depth + 1, pad, bvh, &box[k], &deep[k]);
         } else {
             w->link[k] = bvh_link((uint32_t)next, 0);
-            next += bvh_collapse(nodes, members[k].id, next, depth + 1, pad, bvh, &box[k], &deep[k]);
+            next += bvh_collapse(nodes, members[k].id, next, depth + 1, pad, bvh, &box[k],
+                                 &deep[k]);
         }
     }
 #ifdef _OPENMP
