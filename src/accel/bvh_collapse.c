@@ -212,13 +212,14 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
     BvhNode *w = &bvh->nodes[self];
     size_t next = self + 1;
     Box box[BVH_WIDTH];
+    uint32_t first[BVH_WIDTH]; /* a leaf's first primitive */
 
     /* The leaves' primitives are read where the file put them, at random:
      * memory is asked for all of them before the first is read. */
     for (int k = 0; k < m; k++)
         if (members[k].leaf) {
-            uint32_t first = bvh_first_prim(nodes, members[k].id);
-            for (uint32_t i = first; i < first + nodes[members[k].id].size; i++)
+            first[k] = bvh_first_prim(nodes, members[k].id);
+            for (uint32_t i = first[k]; i < first[k] + nodes[members[k].id].size; i++)
                 bvh_prim_prefetch(&bvh->shapes, bvh->prims[i]);
         }
     memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
@@ -229,13 +230,12 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
     for (int k = 0; k < m; k++) {
         const BuildNode *c = &nodes[members[k].id];
         if (members[k].leaf) {
-            uint32_t first = bvh_first_prim(nodes, members[k].id);
-            for (uint32_t i = first; i < first + c->size; i++) {
+            for (uint32_t i = first[k]; i < first[k] + c->size; i++) {
                 BuildPrim p;
                 bvh_prim_box(bvh, bvh->prims[i], pad, &p);
                 box_grow(&box[k], &p.box);
             }
-            w->link[k] = bvh_link(first, c->size);
+            w->link[k] = bvh_link(first[k], c->size);
         } else if (c->size >= BVH_TASK_MIN) {
             size_t at = next;
             next += bvh_collapsed_count(nodes, members[k].id);
