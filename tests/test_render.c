@@ -107,6 +107,16 @@ static void render_pixels_are_their_camera_rays_traced(void)
                                 "1000002.9 2000000.3 -3099999.3\n1000000.7 1999998.1 -3099998.9\n"
                                 "53\n0 0 0\n1e6 3e6 -3e6 255 255 255\n"
                                 "sphere: 1000004 1999996 -3099990 3 200 100 50 0.5\n");
+    /* Small spheres on a wide image: most tiles' rays are proven to miss
+     * (render.c answers them untraced), some tiles' by a hair. */
+    check_pixels_are_their_rays("0 0 -10\n-1 1 -9\n1 1 -9\n-1 -1 -9\n200\n10 20 30\n"
+                                "10 10 -10 255 255 255\n"
+                                "sphere: 0.5 0.5 0 0.2 200 100 50 0.5\n"
+                                "sphere: -0.32 0 0.8 0.0001 50 200 100 0.2\n");
+    check_pixels_are_their_rays("1e6 2e6 -3.1e6\n1000000.123 2000000.7 -3099999.1\n"
+                                "1000002.9 2000000.3 -3099999.3\n1000000.7 1999998.1 -3099998.9\n"
+                                "150\n0 0 0\n1e6 3e6 -3e6 255 255 255\n"
+                                "sphere: 1000004 1999996 -3099990 0.5 200 100 50 0.5\n");
     /* Wider than two tiles and lower than one: every edge tile cut short. */
     check_pixels_are_their_rays("0 0 -10\n-3 0.1 -9\n3 0.1 -9\n-3 -0.1 -9\n70\n10 20 30\n"
                                 "10 10 -10 255 255 255\n"

@@ -68,4 +68,8 @@ static inline void image_set(Image *img, int x, int y, Colour c)
     }
 }
 
+/* Stores colour c at every pixel of [x0, x1) x [y0, y1) (not empty), as
+ * image_set() would at each, quantising once. */
+void image_fill(Image *img, int x0, int y0, int x1, int y1, Colour c);
+
 #endif

@@ -21,6 +21,10 @@ typedef struct Model {
     /* The colour seen along primary ray `ray` (differentials diff, or
      * NULL), tracing deeper rays down to t->max_depth. */
     Colour (*trace)(const Tracer *t, const Ray *ray, const RayDiff *diff);
+    /* What trace returns for a primary ray that meets nothing, and
+     * whether that is the same colour for every ray. */
+    Colour (*miss)(const Tracer *t, const Ray *ray);
+    int (*miss_uniform)(const Tracer *t);
     int max_depth;          /* the deepest ray when no option says */
     int ao_rays, gi_rays;   /* occlusion and gathering rays when neither
                                the command line nor the scene says */

@@ -73,4 +73,11 @@ Colour seed001_trace(const Tracer *t, const Ray *ray);
  * filter averages over a footprint (trace.h). */
 Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
 
+/* Returns what seed001_trace_diff() returns for a primary ray that meets
+ * nothing (the model table's miss). */
+Colour seed001_miss(const Tracer *t, const Ray *ray);
+
+/* Says whether seed001_miss() is the same colour for every ray. */
+int seed001_miss_uniform(const Tracer *t);
+
 #endif

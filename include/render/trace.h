@@ -40,6 +40,13 @@ Colour trace_ray(const Tracer *t, const Ray *ray);
  * read over the pixel's footprint at every hit. */
 Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
 
+/* Returns what trace_ray_diff() returns for a primary ray that meets
+ * nothing (the model table's miss: render.c asks it for rays proven to). */
+Colour trace_miss(const Tracer *t, const Ray *ray);
+
+/* Says whether trace_miss() is the same colour for every ray. */
+int trace_miss_uniform(const Tracer *t);
+
 /* What a ray met: how far (INFINITY: nothing) and whether it met the
  * surface from behind (against its outward normal). */
 typedef struct {

@@ -127,6 +127,9 @@ typedef struct {
                             model_tracer() */
     const struct GiCache *gicache; /* where diffuse points look their
                             gathered light up first (gicache.h), or NULL */
+    int primary_misses;  /* 1: the primary rays traced are proven to meet
+                            nothing; they take the model's miss colour
+                            untraced (render.c) */
     GatherPoints *collect; /* non-NULL: diffuse points gather nothing, but
                             are added here (the cache's pre-pass) */
 } Tracer;

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 
+#include "geometry/frustum.h"
 #include "geometry/ray.h"
 #include "scene/scene.h"
 
@@ -32,6 +33,11 @@ int visibility_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit);
  * (bit k for ShapeKind k), the others left out. */
 int visibility_nearest_among(const Scene *scene, const Ray *ray, real tmax, unsigned kinds,
                              Hit *hit);
+
+/* Says whether no ray of f can meet an object of the scene: 1 when
+ * proven, 0 when one may. Proven for scenes of spheres alone, too few for
+ * a hierarchy (their bounds tested one by one); any other may. */
+int visibility_frustum_clear(const Scene *scene, const Frustum *f);
 
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +

@@ -11,6 +11,7 @@
 #ifndef RAYTRACE_CAMERA_H
 #define RAYTRACE_CAMERA_H
 
+#include "geometry/frustum.h"
 #include "geometry/ray.h"
 #include "math/vec3.h"
 
@@ -113,6 +114,12 @@ static inline Ray camera_ray_through(const Camera *cam, CameraStep column, Camer
     ray.dir = len > 0 ? vec3_scale(d, 1.0 / len) : vec3(0, 0, 0);
     return ray;
 }
+
+/* Makes f the pyramid of the primary rays through the image positions
+ * [x0, x1] x [y0, y1] (x1 > x0, y1 > y0), as camera_ray() computes them;
+ * returns 0, or -1 when there is none to make: a lens (its rays leave
+ * from the whole disk), or frustum_make()'s. */
+int camera_frustum(const Camera *cam, double x0, double y0, double x1, double y1, Frustum *f);
 
 /* Returns the primary ray through image position (x, y) that leaves the
  * lens at disk point lens (a point of the unit disk, scaled by half the

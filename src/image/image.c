@@ -2,6 +2,7 @@
 #include "image/image.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "math/power.h"
 
@@ -49,6 +50,27 @@ int image_encode_gamma(Image *img, double gamma)
     img->encode = t;
     img->gamma = gamma;
     return 0;
+}
+
+void image_fill(Image *img, int x0, int y0, int x1, int y1, Colour c)
+{
+    size_t first = 3 * ((size_t)y0 * (size_t)img->width + (size_t)x0);
+    size_t row = 3 * (size_t)img->width, done = 3, wide = 3 * (size_t)(x1 - x0);
+
+    image_set(img, x0, y0, c);
+    /* The first row by doubling what is done, then the others from it. */
+    for (; done < wide; done *= 2) {
+        size_t n = done < wide - done ? done : wide - done;
+        memcpy(img->rgb + first + done, img->rgb + first, n);
+        if (img->linear)
+            memcpy(img->linear + first + done, img->linear + first, n * sizeof *img->linear);
+    }
+    for (int y = y0 + 1; y < y1; y++) {
+        size_t i = first + (size_t)(y - y0) * row;
+        memcpy(img->rgb + i, img->rgb + first, wide);
+        if (img->linear)
+            memcpy(img->linear + i, img->linear + first, wide * sizeof *img->linear);
+    }
 }
 
 void image_free(Image *img)

@@ -12,10 +12,10 @@ static int model_seed001_occludes(const Scene *scene)
 }
 
 static const Model model_table[] = {
-    {SCENE_MODEL_PHYSICAL, "physical", trace_ray_diff, 10, 0, 0, 0, 0, 1, NULL, NULL, NULL,
-     trace_has_ambient}, /* the tracer's own ambient rule */
-    {SCENE_MODEL_SEED001, "seed001", seed001_trace_diff, SEED001_MAX_DEPTH, SEED001_AO_RAYS,
-     SEED001_GI_RAYS, SEED001_AO_DISTANCE, SEED001_GAMMA, 0,
+    {SCENE_MODEL_PHYSICAL, "physical", trace_ray_diff, trace_miss, trace_miss_uniform, 10, 0, 0, 0,
+     0, 1, NULL, NULL, NULL, trace_has_ambient}, /* the tracer's own ambient rule */
+    {SCENE_MODEL_SEED001, "seed001", seed001_trace_diff, seed001_miss, seed001_miss_uniform,
+     SEED001_MAX_DEPTH, SEED001_AO_RAYS, SEED001_GI_RAYS, SEED001_AO_DISTANCE, SEED001_GAMMA, 0,
      "seed 001's model: its program's light, occlusion and gathering",
      "seed 001's model gathers the colours its rays meet, one bounce (--model physical gathers "
      "light)",

@@ -10,6 +10,7 @@
 #include "render/noise.h"
 #include "render/sampler.h"
 #include "render/trace.h"
+#include "render/visibility.h"
 #include "scene/camera.h"
 
 #ifdef _OPENMP
@@ -35,7 +36,7 @@ typedef struct {
  * scene's model (model.h). */
 RENDER_INLINE Colour render_trace(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
-    return t->model->trace(t, ray, diff);
+    return t->primary_misses ? t->model->miss(t, ray) : t->model->trace(t, ray, diff);
 }
 
 /* Stores in *out the differentials of pixel (x, y)'s primary rays when
@@ -265,6 +266,26 @@ static int render_tiles_over(int n)
     return (n + RENDER_TILE - 1) / RENDER_TILE;
 }
 
+/* Returns the picture's row of the image's row y: the image's own, or a
+ * tile's (tile.h). */
+static int render_picture_row(const RenderOptions *opts, int y)
+{
+    return opts->row_step > 0 ? opts->row_first + y * opts->row_step : y;
+}
+
+/* Says whether no primary ray of the image's pixels [x0, x1) x [y0, y1)
+ * can meet an object (camera_frustum(), visibility_frustum_clear()): every
+ * sample of theirs lies within its pixel. */
+static int render_tile_clear(const Tracer *t, const RenderOptions *opts, int x0, int y0, int x1,
+                             int y1)
+{
+    Frustum f;
+    int top = render_picture_row(opts, y0), bottom = render_picture_row(opts, y1 - 1) + 1;
+
+    return camera_frustum(&t->scene->camera, x0, top, x1, bottom, &f) == 0 &&
+           visibility_frustum_clear(t->scene, &f);
+}
+
 /* Renders tile k of the image (numbered left to right, then top to
  * bottom) with tracer t and the pixels' sample grid g (columns as in
  * RenderRow). */
@@ -276,10 +297,27 @@ static void render_tile(const Tracer *t, const RenderOptions *opts, const Sample
     int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
     NoiseScale scale = noise_scale_of(img);
+    Tracer clear;
 
+    /* A tile whose rays all miss takes the miss colour without tracing
+     * them: the same colour, sample for sample. When that colour is the
+     * same for every ray, so is every pixel's (made alike from the same
+     * samples): the first pixel's is made, and copied. */
+    if (render_tile_clear(t, opts, x0, y0, x1, y1)) {
+        clear = *t;
+        clear.primary_misses = 1;
+        t = &clear;
+        if (opts->noise.level == 0 && t->model->miss_uniform(t)) {
+            int py = render_picture_row(opts, y0);
+            RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
+
+            image_fill(img, x0, y0, x1, y1, render_pixel(t, opts, g, &row, x0, py));
+            t->counts->primary += ((unsigned long long)(x1 - x0) * (y1 - y0) - 1) * g->n;
+            return;
+        }
+    }
     for (int y = y0; y < y1; y++) {
-        /* The picture's row: the image's, or a tile's (tile.h). */
-        int py = opts->row_step > 0 ? opts->row_first + y * opts->row_step : y;
+        int py = render_picture_row(opts, y);
         RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
 
         for (int x = x0; x < x1; x++) {

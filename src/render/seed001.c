@@ -318,6 +318,17 @@ Colour seed001_trace(const Tracer *t, const Ray *ray)
     return seed001_trace_diff(t, ray, NULL);
 }
 
+Colour seed001_miss(const Tracer *t, const Ray *ray)
+{
+    /* As seed001_path() answers, on seed001_trace_diff()'s scale. */
+    return colour_scale(colour_scale(trace_background(t->scene, ray), 1.0 / 255), 255);
+}
+
+int seed001_miss_uniform(const Tracer *t)
+{
+    return !t->scene->has_sky;
+}
+
 Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
     return colour_scale(seed001_path(t, ray, diff, 0, 0), 255);

@@ -218,6 +218,17 @@ Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
     return trace_path(t, ray, 0, 1, primary);
 }
 
+Colour trace_miss(const Tracer *t, const Ray *ray)
+{
+    /* As trace_named_path() and trace_path() answer at depth 0. */
+    return t->named ? trace_background(t->scene, ray) : t->scene->background;
+}
+
+int trace_miss_uniform(const Tracer *t)
+{
+    return !t->named || !t->scene->has_sky;
+}
+
 /* Returns the share of the hemisphere over sh (n and ns its facing
  * normals) that nothing nearer than the occlusion distance hides, seen
  * through t's occlusion rays: cosine-weighted and stratified over the

@@ -174,6 +174,18 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
     return found;
 }
 
+int visibility_frustum_clear(const Scene *scene, const Frustum *f)
+{
+    if (scene->accel || (scene->kinds & ~(1u << SHAPE_SPHERE)) != 0)
+        return 0;
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
+        const Sphere *s = &scene_spheres(scene)[k];
+        if (!frustum_misses_sphere(f, s->centre, s->radius))
+            return 0;
+    }
+    return 1;
+}
+
 /* Says whether some shape of kind crosses the ray at 0 < t < tmax. */
 static int visibility_occluded_by(const Scene *scene, ShapeKind kind, const Ray *ray, real tmax)
 {

@@ -72,6 +72,29 @@ Ray camera_ray(const Camera *cam, double x, double y)
     return camera_ray_through(cam, camera_column(cam, x), camera_row(cam, y));
 }
 
+int camera_frustum(const Camera *cam, double x0, double y0, double x1, double y1, Frustum *f)
+{
+    CameraStep c[2] = {camera_column(cam, x0), camera_column(cam, x1)};
+    CameraStep r[2] = {camera_row(cam, y0), camera_row(cam, y1)};
+    Vec3 corner[4];
+    real err;
+
+    if (cam->aperture > 0)
+        return -1;
+    /* Around the quadrilateral: top-left, top-right, bottom-right,
+     * bottom-left. */
+    for (int k = 0; k < 4; k++) {
+        CameraStep a = c[k == 1 || k == 2], b = r[k >= 2];
+        corner[k] = vec3(a.x + b.x, a.y + b.y, a.z + b.z);
+    }
+    /* A point camera_ray() aims at: x / W and y / H, their products with u
+     * and v, two sums, in doubles, then rounded to real; a few roundings
+     * of coordinates no larger than |TL| + |u| + |v|, with room to spare. */
+    err = 16 * REAL_EPSILON *
+          (vec3_max_abs(cam->top_left) + vec3_max_abs(cam->u) + vec3_max_abs(cam->v));
+    return frustum_make(f, cam->eye, corner, err);
+}
+
 CameraViewFault camera_look_at(Camera *cam, Vec3 from, Vec3 at, double fov, int width,
                                int height)
 {
