@@ -31,6 +31,22 @@ static void frustum_known_answers(void)
     CHECK_INT(0, frustum_misses_sphere(&f, vec3(12, 0, 10), 1.42));
 }
 
+static void frustum_box_known_answers(void)
+{
+    Frustum f = frustum_unit();
+
+    CHECK_INT(0, frustum_misses_box(&f, vec3(-1, -1, 9), vec3(1, 1, 11)));   /* on the axis */
+    CHECK_INT(1, frustum_misses_box(&f, vec3(99, -1, 9), vec3(101, 1, 11))); /* to the side */
+    CHECK_INT(1, frustum_misses_box(&f, vec3(-1, -1, -11), vec3(1, 1, -9))); /* behind */
+    CHECK_INT(0, frustum_misses_box(&f, vec3(-1, -1, -1), vec3(1, 1, 1)));   /* around */
+    /* Inside is x <= z: the box's corner (11.1, y, 11) lies 0.1 / sqrt(2)
+     * outside the plane x = z; moved to x = 10.9999999, inside. */
+    CHECK_INT(1, frustum_misses_box(&f, vec3(11.1, -1, 9), vec3(12, 1, 11)));
+    CHECK_INT(0, frustum_misses_box(&f, vec3(10.9999999, -1, 9), vec3(12, 1, 11)));
+    /* A box across the plane x = z, though its centre is outside. */
+    CHECK_INT(0, frustum_misses_box(&f, vec3(10, -1, 9), vec3(14, 1, 13)));
+}
+
 static void frustum_degenerate_proves_nothing(void)
 {
     Vec3 flat[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
@@ -217,6 +233,7 @@ static void frustum_of_a_camera(void)
 
 const TestCase frustum_tests[] = {
     {"frustum_known_answers", frustum_known_answers},
+    {"frustum_box_known_answers", frustum_box_known_answers},
     {"frustum_degenerate_proves_nothing", frustum_degenerate_proves_nothing},
     {"frustum_rays_lie_within_the_slack", frustum_rays_lie_within_the_slack},
     {"frustum_proof_holds_for_computed_rays", frustum_proof_holds_for_computed_rays},

@@ -10,6 +10,7 @@
 #include "render/trace.h"
 #include "rng.h"
 #include "scene/camera.h"
+#include "scene/scene_accel.h"
 #include "scenefile/course.h"
 #include "scenefile/load.h"
 #include "test.h"
@@ -59,9 +60,10 @@ static void render_eye_on_the_screen_sees_background(void)
     CHECK_NEAR(0, vec3_length(r.dir), 0);
 }
 
-/* Checks that every pixel of a render of text is the course format's
- * primary ray traced: P = TL + ((i + 0.5) / W) u + ((j + 0.5) / H) v,
- * summed left to right, its direction normalize(P - eye), to the bit. */
+/* Checks that every pixel of a render of text (with its hierarchy, when
+ * it has enough shapes) is the course format's primary ray traced: P =
+ * TL + ((i + 0.5) / W) u + ((j + 0.5) / H) v, summed left to right, its
+ * direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
     RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
@@ -72,6 +74,7 @@ static void check_pixels_are_their_rays(const char *text)
     int bad = 0;
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_COURSE, 0, 0, &sc, NULL, &err));
+    CHECK_INT(0, scene_build_accel(&sc, 1));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
     render(&sc, &opts, &img, NULL);
     for (int j = 0; j < img.height; j++)
@@ -117,6 +120,31 @@ static void render_pixels_are_their_camera_rays_traced(void)
                                 "1000002.9 2000000.3 -3099999.3\n1000000.7 1999998.1 -3099998.9\n"
                                 "150\n0 0 0\n1e6 3e6 -3e6 255 255 255\n"
                                 "sphere: 1000004 1999996 -3099990 0.5 200 100 50 0.5\n");
+    /* Twenty small spheres and a triangle: a hierarchy, whose walk proves
+     * most tiles clear. */
+    check_pixels_are_their_rays("0 0 -10\n-1 1 -9\n1 1 -9\n-1 -1 -9\n300\n10 20 30\n"
+                                "10 10 -10 255 255 255\n"
+                                "sphere: -0.4228 -0.8380 1.1273 0.02 200 100 50 0.5\n"
+                                "sphere: 0.7711 -0.9741 0.9570 0.05 200 100 50 0.5\n"
+                                "sphere: -1.1100 -0.1593 -0.3254 0.02 200 100 50 0.5\n"
+                                "sphere: 0.1225 -1.0581 0.9136 0.05 200 100 50 0.5\n"
+                                "sphere: 0.3135 0.1992 -0.3453 0.1 200 100 50 0.5\n"
+                                "sphere: -1.0810 -0.6694 0.8917 0.05 200 100 50 0.5\n"
+                                "sphere: -0.5049 -0.8538 -0.2055 0.001 200 100 50 0.5\n"
+                                "sphere: 0.1446 0.4368 -0.2424 0.05 200 100 50 0.5\n"
+                                "sphere: -0.3062 0.1146 -0.3430 0.02 200 100 50 0.5\n"
+                                "sphere: 0.2856 -0.0086 0.8293 0.001 200 100 50 0.5\n"
+                                "sphere: -0.0826 1.0163 0.4040 0.05 200 100 50 0.5\n"
+                                "sphere: 0.7065 0.4776 0.1102 0.001 200 100 50 0.5\n"
+                                "sphere: 0.0605 0.9003 1.3236 0.001 200 100 50 0.5\n"
+                                "sphere: 0.2615 -1.0243 0.7798 0.05 200 100 50 0.5\n"
+                                "sphere: 0.6171 -0.8352 0.7224 0.02 200 100 50 0.5\n"
+                                "sphere: 1.1088 -1.0137 0.8952 0.001 200 100 50 0.5\n"
+                                "sphere: -0.3837 -0.3596 0.7417 0.1 200 100 50 0.5\n"
+                                "sphere: -1.0350 -0.9754 0.1748 0.02 200 100 50 0.5\n"
+                                "sphere: -1.0544 0.4836 1.1178 0.1 200 100 50 0.5\n"
+                                "sphere: -0.5170 -0.2741 1.1716 0.02 200 100 50 0.5\n"
+                                "triangle: 0.9 -0.9 0 1.0 -0.9 0 0.9 -0.8 0.5 50 200 100 0.3\n");
     /* Wider than two tiles and lower than one: every edge tile cut short. */
     check_pixels_are_their_rays("0 0 -10\n-3 0.1 -9\n3 0.1 -9\n-3 -0.1 -9\n70\n10 20 30\n"
                                 "10 10 -10 255 255 255\n"

@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "geometry/cube.h"
+#include "geometry/frustum.h"
 #include "geometry/ray.h"
 #include "geometry/sphere.h"
 #include "geometry/square.h"
@@ -220,5 +221,14 @@ typedef int (*BvhVisit)(void *ctx, uint32_t prim, int crossings);
  * 0 < t < tmax, in no set order, until one call returns non-zero; returns
  * that value, or 0 when every crossing was visited. */
 int bvh_crossings(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit visit, void *ctx);
+
+/* Nodes bvh_frustum_clear() visits at most before it gives up. */
+enum { BVH_FRUSTUM_VISITS = 256 };
+
+/* Says whether no ray of f can meet a primitive of the hierarchy: 1 when
+ * every leaf's box is proven beyond the pyramid (frustum_misses_box()),
+ * 0 when one may not be, or when the proof would visit more than
+ * BVH_FRUSTUM_VISITS nodes. */
+int bvh_frustum_clear(const Bvh *bvh, const Frustum *f);
 
 #endif

@@ -30,4 +30,8 @@ int frustum_make(Frustum *f, Vec3 apex, const Vec3 corner[4], real err);
  * 1 when proven, 0 when one may. */
 int frustum_misses_sphere(const Frustum *f, Vec3 centre, real radius);
 
+/* Says whether no ray of f can meet a point of the box [lo, hi] (lo <= hi
+ * in every coordinate): 1 when proven, 0 when one may. */
+int frustum_misses_box(const Frustum *f, Vec3 lo, Vec3 hi);
+
 #endif

@@ -35,8 +35,9 @@ int visibility_nearest_among(const Scene *scene, const Ray *ray, real tmax, unsi
                              Hit *hit);
 
 /* Says whether no ray of f can meet an object of the scene: 1 when
- * proven, 0 when one may. Proven for scenes of spheres alone, too few for
- * a hierarchy (their bounds tested one by one); any other may. */
+ * proven, 0 when one may. Proven for scenes of bounded shapes alone:
+ * through the hierarchy (bvh_frustum_clear()), or without one for
+ * spheres, tested one by one; any other may. */
 int visibility_frustum_clear(const Scene *scene, const Frustum *f);
 
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,

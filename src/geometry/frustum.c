@@ -61,6 +61,22 @@ int frustum_make(Frustum *f, Vec3 apex, const Vec3 corner[4], real err)
     return f->slack < FRUSTUM_MAX_SLACK ? 0 : -1;
 }
 
+int frustum_misses_box(const Frustum *f, Vec3 lo, Vec3 hi)
+{
+    Vec3 a = vec3_sub(lo, f->apex), b = vec3_sub(hi, f->apex);
+    /* At least the distance of the box's farthest point. */
+    real far = 2 * fmax(vec3_max_abs(a), vec3_max_abs(b));
+
+    for (int i = 0; i < 4; i++) {
+        Vec3 n = f->normal[i];
+        /* The corner farthest along the normal, inwards. */
+        Vec3 c = vec3(n.x < 0 ? a.x : b.x, n.y < 0 ? a.y : b.y, n.z < 0 ? a.z : b.z);
+        if (vec3_dot(n, c) < -f->slack * far)
+            return 1;
+    }
+    return 0;
+}
+
 int frustum_misses_sphere(const Frustum *f, Vec3 centre, real radius)
 {
     Vec3 d = vec3_sub(centre, f->apex);

@@ -176,7 +176,11 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
 
 int visibility_frustum_clear(const Scene *scene, const Frustum *f)
 {
-    if (scene->accel || (scene->kinds & ~(1u << SHAPE_SPHERE)) != 0)
+    if ((scene->kinds & VISIBILITY_UNBOUNDED) != 0)
+        return 0;
+    if (scene->accel)
+        return bvh_frustum_clear(scene->accel, f);
+    if ((scene->kinds & ~(1u << SHAPE_SPHERE)) != 0)
         return 0;
     for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
         const Sphere *s = &scene_spheres(scene)[k];
