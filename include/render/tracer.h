@@ -130,6 +130,9 @@ typedef struct {
     int primary_misses;  /* 1: the primary rays traced are proven to meet
                             nothing; they take the model's miss colour
                             untraced (render.c) */
+    uint64_t primary_skip; /* the spheres the primary rays traced are
+                            proven not to meet, which they do not test
+                            (visibility_nearest_skipping()); 0: none */
     GatherPoints *collect; /* non-NULL: diffuse points gather nothing, but
                             are added here (the cache's pre-pass) */
 } Tracer;

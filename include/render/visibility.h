@@ -37,8 +37,15 @@ int visibility_nearest_among(const Scene *scene, const Ray *ray, real tmax, unsi
 /* Says whether no ray of f can meet an object of the scene: 1 when
  * proven, 0 when one may. Proven for scenes of bounded shapes alone:
  * through the hierarchy (bvh_frustum_clear()), or without one for
- * spheres, tested one by one; any other may. */
-int visibility_frustum_clear(const Scene *scene, const Frustum *f);
+ * spheres, tested one by one; any other may. Stores in *skip the spheres
+ * no ray of f can meet (bit k: sphere k) in a scene of at most 64 spheres
+ * alone without hierarchy, else 0. */
+int visibility_frustum_clear(const Scene *scene, const Frustum *f, uint64_t *skip);
+
+/* visibility_nearest() with tmax infinite in a scene of at most 64
+ * spheres alone without hierarchy, the spheres of skip (bit k: sphere k)
+ * left untested: the same answer for a ray none of them can meet. */
+int visibility_nearest_skipping(const Scene *scene, const Ray *ray, uint64_t skip, Hit *hit);
 
 /* Returns 1 when some object's surface crosses the ray at 0 < t < tmax,
  * else 0: tmax = 1 tests the segment from ray->origin to ray->origin +

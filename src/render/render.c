@@ -275,15 +275,17 @@ static int render_picture_row(const RenderOptions *opts, int y)
 
 /* Says whether no primary ray of the image's pixels [x0, x1) x [y0, y1)
  * can meet an object (camera_frustum(), visibility_frustum_clear()): every
- * sample of theirs lies within its pixel. */
+ * sample of theirs lies within its pixel; else stores in *skip the
+ * spheres none can meet, as that function does. */
 static int render_tile_clear(const Tracer *t, const RenderOptions *opts, int x0, int y0, int x1,
-                             int y1)
+                             int y1, uint64_t *skip)
 {
     Frustum f;
     int top = render_picture_row(opts, y0), bottom = render_picture_row(opts, y1 - 1) + 1;
 
+    *skip = 0;
     return camera_frustum(&t->scene->camera, x0, top, x1, bottom, &f) == 0 &&
-           visibility_frustum_clear(t->scene, &f);
+           visibility_frustum_clear(t->scene, &f, skip);
 }
 
 /* Renders tile k of the image (numbered left to right, then top to
@@ -298,12 +300,20 @@ static void render_tile(const Tracer *t, const RenderOptions *opts, const Sample
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
     NoiseScale scale = noise_scale_of(img);
     Tracer clear;
+    uint64_t skip;
 
     /* A tile whose rays all miss takes the miss colour without tracing
      * them: the same colour, sample for sample. When that colour is the
      * same for every ray, so is every pixel's (made alike from the same
-     * samples): the first pixel's is made, and copied. */
-    if (render_tile_clear(t, opts, x0, y0, x1, y1)) {
+     * samples): the first pixel's is made, and copied. Else its rays
+     * leave out the spheres proven out of their reach. */
+    if (!render_tile_clear(t, opts, x0, y0, x1, y1, &skip)) {
+        if (skip != 0) {
+            clear = *t;
+            clear.primary_skip = skip;
+            t = &clear;
+        }
+    } else {
         clear = *t;
         clear.primary_misses = 1;
         t = &clear;

@@ -469,6 +469,17 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
     }
 }
 
+/* Finds the object the ray meets first (visibility_nearest()); a primary
+ * ray, at depth 0 of a path without a bounce, leaves untested the spheres
+ * t proves out of its reach (render.c). */
+static inline int trace_nearest(const Tracer *t, const Ray *ray, int depth, TracePath path,
+                                Hit *hit)
+{
+    if (t->primary_skip != 0 && depth == 0 && path.bounce == 0)
+        return visibility_nearest_skipping(t->scene, ray, t->primary_skip, hit);
+    return visibility_nearest(t->scene, ray, INFINITY, hit);
+}
+
 static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colour weight,
                                TracePath path)
 {
@@ -478,7 +489,7 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     Shade sh;
     Vec3 n, ns;
 
-    if (!visibility_nearest(scene, ray, INFINITY, &hit))
+    if (!trace_nearest(t, ray, depth, path, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     if (path.met) {
@@ -507,7 +518,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     Colour c;
     double r, tr, own;
 
-    if (!visibility_nearest(scene, ray, INFINITY, &hit))
+    if (!trace_nearest(t, ray, depth, path, &hit))
         return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     if (path.met) {

@@ -118,6 +118,23 @@ visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, unsigned
     return found;
 }
 
+/* Says whether the ray crosses sphere k at 0 < t < *tmax, and then
+ * lowers *tmax to t and sets *best to k. The interval is open at *tmax:
+ * the spheres tested in the file's order, an exact tie keeps the
+ * earlier. */
+static inline int visibility_sphere_nearer(const Scene *scene, size_t k, const Ray *ray,
+                                           real *tmax, size_t *best)
+{
+    const Sphere *s = &scene_spheres(scene)[k];
+    real t;
+
+    if (!sphere_hit(s->centre, s->radius, ray, 0, *tmax, &t))
+        return 0;
+    *tmax = t;
+    *best = k;
+    return 1;
+}
+
 /* visibility_nearest() without the eye's light buffer, over the bounded
  * shapes and the unbounded ones of the kinds in mask. Inline: the course
  * scene's every ray comes here. */
@@ -155,18 +172,10 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
 
     if (scene->accel)
         return visibility_nearest_accel(scene, ray, tmax, mask, hit);
-    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
-        real t;
-        const Sphere *s = &scene_spheres(scene)[k];
-        /* The interval is open at tmax, so an exact tie keeps the earlier
-         * sphere. sphere_hit() is inline: this loop is the course scene's
-         * hottest. */
-        if (sphere_hit(s->centre, s->radius, ray, 0, tmax, &t)) {
-            tmax = t;
-            best = k;
+    /* sphere_hit() is inline: this loop is the course scene's hottest. */
+    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++)
+        if (visibility_sphere_nearer(scene, k, ray, &tmax, &best))
             found = 1;
-        }
-    }
     if (found)
         visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene_spheres(scene)[best].order);
     for (unsigned m = scene->kinds & mask & ~(1u << SHAPE_SPHERE); m != 0; m &= m - 1)
@@ -174,20 +183,49 @@ visibility_nearest_in(const Scene *scene, const Ray *ray, real tmax, unsigned ma
     return found;
 }
 
-int visibility_frustum_clear(const Scene *scene, const Frustum *f)
+/* The most spheres visibility_frustum_clear() names in its skip. */
+enum { VISIBILITY_SKIP_MAX = 64 };
+
+int visibility_frustum_clear(const Scene *scene, const Frustum *f, uint64_t *skip)
 {
+    size_t n = scene_count_of(scene, SHAPE_SPHERE);
+    int clear = 1;
+
+    *skip = 0;
     if ((scene->kinds & VISIBILITY_UNBOUNDED) != 0)
         return 0;
     if (scene->accel)
         return bvh_frustum_clear(scene->accel, f);
     if ((scene->kinds & ~(1u << SHAPE_SPHERE)) != 0)
         return 0;
-    for (size_t k = 0; k < scene_count_of(scene, SHAPE_SPHERE); k++) {
+    for (size_t k = 0; k < n; k++) {
         const Sphere *s = &scene_spheres(scene)[k];
         if (!frustum_misses_sphere(f, s->centre, s->radius))
-            return 0;
+            clear = 0;
+        else if (n <= VISIBILITY_SKIP_MAX)
+            *skip |= UINT64_C(1) << k;
+        else if (!clear)
+            break;
     }
-    return 1;
+    if (clear)
+        *skip = 0;
+    return clear;
+}
+
+int visibility_nearest_skipping(const Scene *scene, const Ray *ray, uint64_t skip, Hit *hit)
+{
+    size_t n = scene_count_of(scene, SHAPE_SPHERE), best = 0;
+    uint64_t keep = n < VISIBILITY_SKIP_MAX ? (UINT64_C(1) << n) - 1 : ~UINT64_C(0);
+    real tmax = INFINITY;
+    int found = 0;
+
+    /* As visibility_nearest_in()'s loop, in the same order. */
+    for (keep &= ~skip; keep != 0; keep &= keep - 1)
+        if (visibility_sphere_nearer(scene, (size_t)__builtin_ctzll(keep), ray, &tmax, &best))
+            found = 1;
+    if (found)
+        visibility_set_hit(hit, tmax, SHAPE_SPHERE, best, scene_spheres(scene)[best].order);
+    return found;
 }
 
 /* Says whether some shape of kind crosses the ray at 0 < t < tmax. */
