@@ -288,6 +288,24 @@ static int render_tile_clear(const Tracer *t, const RenderOptions *opts, int x0,
            visibility_frustum_clear(t->scene, &f, skip);
 }
 
+/* Returns the tracer of the tile [x0, x1) x [y0, y1): t, or *own, t's
+ * copy told what the tile's primary rays are proven to miss
+ * (render_tile_clear()): everything, and they take the miss colour
+ * untraced, or some spheres, which they leave untested. */
+static const Tracer *render_tile_tracer(const Tracer *t, const RenderOptions *opts, int x0,
+                                        int y0, int x1, int y1, Tracer *own)
+{
+    uint64_t skip;
+    int clear = render_tile_clear(t, opts, x0, y0, x1, y1, &skip);
+
+    if (!clear && skip == 0)
+        return t;
+    *own = *t;
+    own->primary_misses = clear;
+    own->primary_skip = skip;
+    return own;
+}
+
 /* Renders tile k of the image (numbered left to right, then top to
  * bottom) with tracer t and the pixels' sample grid g (columns as in
  * RenderRow). */
@@ -299,32 +317,19 @@ static void render_tile(const Tracer *t, const RenderOptions *opts, const Sample
     int x1 = img->width - x0 < RENDER_TILE ? img->width : x0 + RENDER_TILE;
     int y1 = img->height - y0 < RENDER_TILE ? img->height : y0 + RENDER_TILE;
     NoiseScale scale = noise_scale_of(img);
-    Tracer clear;
-    uint64_t skip;
+    Tracer own;
 
-    /* A tile whose rays all miss takes the miss colour without tracing
-     * them: the same colour, sample for sample. When that colour is the
-     * same for every ray, so is every pixel's (made alike from the same
-     * samples): the first pixel's is made, and copied. Else its rays
-     * leave out the spheres proven out of their reach. */
-    if (!render_tile_clear(t, opts, x0, y0, x1, y1, &skip)) {
-        if (skip != 0) {
-            clear = *t;
-            clear.primary_skip = skip;
-            t = &clear;
-        }
-    } else {
-        clear = *t;
-        clear.primary_misses = 1;
-        t = &clear;
-        if (opts->noise.level == 0 && t->model->miss_uniform(t)) {
-            int py = render_picture_row(opts, y0);
-            RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
+    t = render_tile_tracer(t, opts, x0, y0, x1, y1, &own);
+    /* When every ray misses and the miss colour is the same for every
+     * ray, so is every pixel's (made alike from the same samples): the
+     * first pixel's is made, and copied. */
+    if (t->primary_misses && opts->noise.level == 0 && t->model->miss_uniform(t)) {
+        int py = render_picture_row(opts, y0);
+        RenderRow row = {columns, camera_row(&t->scene->camera, py + 0.5)};
 
-            image_fill(img, x0, y0, x1, y1, render_pixel(t, opts, g, &row, x0, py));
-            t->counts->primary += ((unsigned long long)(x1 - x0) * (y1 - y0) - 1) * g->n;
-            return;
-        }
+        image_fill(img, x0, y0, x1, y1, render_pixel(t, opts, g, &row, x0, py));
+        t->counts->primary += ((unsigned long long)(x1 - x0) * (y1 - y0) - 1) * g->n;
+        return;
     }
     for (int y = y0; y < y1; y++) {
         int py = render_picture_row(opts, y);
