@@ -198,14 +198,13 @@ int visibility_frustum_clear(const Scene *scene, const Frustum *f, uint64_t *ski
         return bvh_frustum_clear(scene->accel, f);
     if ((scene->kinds & ~(1u << SHAPE_SPHERE)) != 0)
         return 0;
-    for (size_t k = 0; k < n; k++) {
+    /* Past VISIBILITY_SKIP_MAX spheres, only whether all are missed. */
+    for (size_t k = 0; k < n && (clear || n <= VISIBILITY_SKIP_MAX); k++) {
         const Sphere *s = &scene_spheres(scene)[k];
         if (!frustum_misses_sphere(f, s->centre, s->radius))
             clear = 0;
         else if (n <= VISIBILITY_SKIP_MAX)
             *skip |= UINT64_C(1) << k;
-        else if (!clear)
-            break;
     }
     if (clear)
         *skip = 0;
