@@ -8,7 +8,7 @@
  * (a grid of 2^k pixels, halved each round down to every pixel): each
  * round traces its pixels' centre rays (through mirrors and glass) to the
  * diffuse points where they would gather, keeps in pixel order those no
- * record covers (error below 3/4 of a), computes their records in parallel
+ * record covers (error below 0.9 a), computes their records in parallel
  * and adds them in that order. Under B > 1 bounces, the points their
  * gathering rays meet are covered in turn, generation by generation, in
  * fixed chunks. A record's deepest level holds the light of its rays' hits
