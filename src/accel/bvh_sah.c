@@ -4,6 +4,10 @@
 
 #include <stddef.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 enum {
     BVH_BINS = 16,       /* centroid bins per split (n for n < 16 primitives) */
     BVH_ALL_AXES = 4096  /* at most this many primitives: SAH on every axis */
@@ -50,6 +54,59 @@ static int bvh_bin(const BuildPrim *p, int axis, float lo, float scale, int bins
     return x >= 0 ? (x < (float)bins ? (int)x : bins - 1) : 0;
 }
 
+#if defined(__SSE2__)
+/* p's box's corners as four lanes each, the fourth not of them: its 28
+ * bytes hold both 16-byte rows (lo0 lo1 lo2 hi0, and hi0 hi1 hi2 ref). */
+static inline __m128 bvh_lo4(const BuildPrim *p)
+{
+    return _mm_loadu_ps(p->box.lo);
+}
+
+static inline __m128 bvh_hi4(const BuildPrim *p)
+{
+    return _mm_loadu_ps(p->box.hi);
+}
+
+/* p's centroid in lanes 0-2, each as bvh_centroid() computes it; lane 3
+ * is 0. */
+static inline __m128 bvh_centroid4(const BuildPrim *p)
+{
+    const __m128 half = _mm_set1_ps(0.5f), xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+
+    return _mm_add_ps(_mm_mul_ps(half, _mm_and_ps(bvh_lo4(p), xyz)),
+                      _mm_mul_ps(half, _mm_and_ps(bvh_hi4(p), xyz)));
+}
+#endif
+
+/* Stores in *cb the box of the centroids of prims[start..end). */
+static void bvh_centroid_box(const BuildPrim *prims, size_t start, size_t end, Box *cb)
+{
+#if defined(__SSE2__)
+    /* minps(c, lo) is c < lo ? c : lo, as box_grow_point()'s. */
+    __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
+    float l[4], h[4];
+
+    for (size_t i = start; i < end; i++) {
+        __m128 c = bvh_centroid4(&prims[i]);
+        lo = _mm_min_ps(c, lo);
+        hi = _mm_max_ps(c, hi);
+    }
+    _mm_storeu_ps(l, lo);
+    _mm_storeu_ps(h, hi);
+    for (int a = 0; a < 3; a++) {
+        cb->lo[a] = l[a];
+        cb->hi[a] = h[a];
+    }
+#else
+    box_empty(cb);
+    for (size_t i = start; i < end; i++) {
+        float c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
+                     bvh_centroid(&prims[i], 2)};
+        box_grow_point(cb, c);
+    }
+#endif
+}
+
 /* The primitives of prims[start..end) sorted into the centroid bins of
  * each axis whose bit is set in axes, in one pass: how many in each bin,
  * and the box of their boxes. */
@@ -57,6 +114,52 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
                          const float lo[3], const float scale[3], int bins,
                          size_t count[3][BVH_BINS], Box bin[3][BVH_BINS])
 {
+#if defined(__SSE2__)
+    /* Each bin's box in four lanes (minps and maxps as box_grow()'s
+     * comparisons); the bins of all three axes from one centroid, clamped
+     * as bvh_bin() clamps (maxps gives its second operand for NaN). */
+    __m128 blo[3][BVH_BINS], bhi[3][BVH_BINS];
+    const __m128 at = _mm_setr_ps(lo[0], lo[1], lo[2], 0);
+    const __m128 per = _mm_setr_ps(scale[0], scale[1], scale[2], 0);
+    const __m128 top = _mm_set1_ps((float)(bins - 1)), zero = _mm_setzero_ps();
+
+    for (int a = 0; a < 3; a++) {
+        for (int b = 0; b < bins; b++) {
+            count[a][b] = 0;
+            blo[a][b] = _mm_set1_ps(INFINITY);
+            bhi[a][b] = _mm_set1_ps(-INFINITY);
+        }
+    }
+    for (size_t i = start; i < end; i++) {
+        const BuildPrim *p = &prims[i];
+        __m128 x = _mm_mul_ps(_mm_sub_ps(bvh_centroid4(p), at), per);
+        __m128i k = _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(x, zero), top));
+        __m128 plo = bvh_lo4(p), phi = bvh_hi4(p);
+        int b[3];
+
+        b[0] = _mm_cvtsi128_si32(k);
+        b[1] = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 1));
+        b[2] = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 2));
+        for (int a = 0; a < 3; a++) {
+            if (axes >> a & 1) {
+                count[a][b[a]]++;
+                blo[a][b[a]] = _mm_min_ps(plo, blo[a][b[a]]);
+                bhi[a][b[a]] = _mm_max_ps(phi, bhi[a][b[a]]);
+            }
+        }
+    }
+    for (int a = 0; a < 3; a++) {
+        for (int b = 0; b < bins; b++) {
+            float l[4], h[4];
+            _mm_storeu_ps(l, blo[a][b]);
+            _mm_storeu_ps(h, bhi[a][b]);
+            for (int c = 0; c < 3; c++) {
+                bin[a][b].lo[c] = l[c];
+                bin[a][b].hi[c] = h[c];
+            }
+        }
+    }
+#else
     for (int a = 0; a < 3; a++) {
         for (int b = 0; b < bins; b++) {
             count[a][b] = 0;
@@ -72,6 +175,7 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
             }
         }
     }
+#endif
 }
 
 /* The surface area heuristic's best split of n primitives sorted into the
@@ -122,6 +226,31 @@ static float bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS],
     return best;
 }
 
+/* bvh_split() for two primitives, as it decides without binning: every
+ * axis along which their centroids differ offers the same one split, of
+ * cost 1 + (A0 + A1) / A (the SAH's, areas of their boxes and of the box
+ * of both), so the first such axis takes it, the smaller centroid left,
+ * unless it costs a leaf's 2 or more. extent: cb's, not all zero. */
+static size_t bvh_split_pair(BuildPrim *prims, size_t start, const float extent[3])
+{
+    Box both = prims[start].box;
+    float cost;
+    int a = extent[0] > 0 ? 0 : extent[1] > 0 ? 1 : 2;
+
+    box_grow(&both, &prims[start + 1].box);
+    cost = 1 + (box_half_area(&prims[start].box) * 1.0f +
+                box_half_area(&prims[start + 1].box) * 1.0f) *
+                   (1 / box_half_area(&both));
+    if (!(cost < 2))
+        return start;
+    if (bvh_centroid(&prims[start + 1], a) < bvh_centroid(&prims[start], a)) {
+        BuildPrim tmp = prims[start];
+        prims[start] = prims[start + 1];
+        prims[start + 1] = tmp;
+    }
+    return start + 1;
+}
+
 /* Chooses how to split prims[start..end), of centroids' box cb (count >
  * BVH_LEAF_MAX or SAH says so); returns the index of the first primitive
  * of the right part, or start when it is better left a leaf. */
@@ -150,6 +279,8 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
         bvh_select(prims, start, end, mid, axis);
         return mid;
     }
+    if (n == 2)
+        return bvh_split_pair(prims, start, extent);
     /* Every axis with some extent: the cheapest split wins. Above
      * BVH_ALL_AXES primitives only the longest is binned: near the root,
      * where binning costs the most, it is nearly always the best. */
@@ -208,12 +339,7 @@ void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root)
         size_t split;
         Box cb; /* the box of the primitives' centroids */
 
-        box_empty(&cb);
-        for (size_t i = task.start; i < task.end; i++) {
-            float c[3] = {bvh_centroid(&prims[i], 0), bvh_centroid(&prims[i], 1),
-                         bvh_centroid(&prims[i], 2)};
-            box_grow_point(&cb, c);
-        }
+        bvh_centroid_box(prims, task.start, task.end, &cb);
         node->size = (uint32_t)(task.end - task.start);
         split = task.end - task.start <= 1
                     ? task.start
