@@ -216,6 +216,46 @@ static void light_buffer_keeps_to_its_budget(void)
     free(spheres);
 }
 
+/* A field of more spheres than the choice counts one by one (its small
+ * spheres sampled, a large one near the centre counted whole): the buffer
+ * keeps to each budget, coarser as it shrinks, and answers as the loops. */
+static void light_buffer_sampled_choice_keeps_to_its_budget(void)
+{
+    enum { N = 70000 };
+    Sphere *spheres = malloc(N * sizeof *spheres);
+    Vec3 c = vec3(0.3, 3, -2);
+    size_t budgets[] = {32u << 20, 12u << 20, 6u << 20};
+    int last = INT32_MAX, differ = 0;
+
+    if (!spheres) {
+        CHECK(spheres != NULL);
+        return;
+    }
+    random_spheres(spheres, N, 1);
+    for (int i = 0; i < N; i++)
+        spheres[i].radius *= 0.1;
+    spheres[0].centre = vec3(0.3, 2, -2); /* seen across most of a face */
+    spheres[0].radius = 0.5;
+    for (size_t b = 0; b < sizeof budgets / sizeof budgets[0]; b++) {
+        LightBuffer lb;
+        CHECK_INT(0, light_buffer_build(&lb, c, spheres, N, SIZE_MAX, budgets[b], 2));
+        CHECK(lb.first != NULL && light_buffer_memory(&lb) <= budgets[b]);
+        CHECK(lb.res <= last);
+        last = lb.res;
+        for (int i = 0; i < 300; i++) {
+            const Sphere *sp = &spheres[(int)(rng_uniform() * N)];
+            Vec3 at = rim_point(sp, c, i);
+            Ray shadow = {at, vec3_sub(c, at)};
+            uint32_t cache = UINT32_MAX;
+            differ += loop_occluded(spheres, N, &shadow, 1) !=
+                      light_buffer_occluded(&lb, &shadow, 1, &cache);
+        }
+        light_buffer_free(&lb);
+    }
+    CHECK_INT(0, differ);
+    free(spheres);
+}
+
 /* A scene of spheres alone builds its buffers (the eye's, the point
  * lights'), and renders' queries through them answer as without any
  * structure; a transparent scene keeps the eye's only, a lens none, and an
@@ -290,6 +330,8 @@ const TestCase light_buffer_tests[] = {
     {"light_buffer_answers_as_the_loops", light_buffer_answers_as_the_loops},
     {"light_buffer_reads_ahead_as_the_loops", light_buffer_reads_ahead_as_the_loops},
     {"light_buffer_keeps_to_its_budget", light_buffer_keeps_to_its_budget},
+    {"light_buffer_sampled_choice_keeps_to_its_budget",
+     light_buffer_sampled_choice_keeps_to_its_budget},
     {"scene_buffers_answer_as_without", scene_buffers_answer_as_without},
     {NULL, NULL},
 };

@@ -45,6 +45,10 @@ enum {
     LB_STEPS = 8,       /* a buffer coarser than the resolution that pays
                            best by more than 2^(LB_STEPS / 4) = 4 is not
                            worth building */
+    LB_SAMPLE = 1 << 16, /* spheres, at most, whose cells choose among
+                            the steps (lb_choose()) */
+    LB_SMALL = 2,        /* cells across, at the finest step: a sphere
+                            seen smaller may be sampled */
     LB_AHEAD = 4,       /* a shadow query asks memory for the sphere this
                            many entries on... */
     LB_AHEAD_BYTES = 1 << 20 /* ...when the spheres take more than this */
@@ -334,16 +338,10 @@ static size_t lb_bytes(int res, size_t entries)
     return ((size_t)LB_FACES * res * res + 1) * sizeof(uint32_t) + entries * sizeof(uint32_t);
 }
 
-/* Returns the finest resolution from res down to res / 4, in
- * LB_STEPS steps of a fourth root of 2, whose buffer takes at most
- * max_bytes, or 0 when none does or more than LB_HOLDERS_MAX spheres hold
- * the centre. */
-static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, size_t max_bytes,
-                     int threads)
+/* Stores in r[j] the resolutions from res down to res / 4, in LB_STEPS
+ * steps of a fourth root of 2. */
+static void lb_steps(int res, int r[LB_STEPS + 1])
 {
-    size_t entries[LB_STEPS + 1] = {0}, holders = 0;
-    int r[LB_STEPS + 1];
-
     /* 2^(-k/4), correctly rounded: res 2^(-j/4) with no libm pow(), whose
      * last bit may differ between C libraries. */
     static const double quarter[4] = {1, 0x1.ae89f995ad3adp-1, 0x1.6a09e667f3bcdp-1,
@@ -353,29 +351,75 @@ static int lb_choose(const LightBuffer *lb, int res, size_t count, double m, siz
         r[j] = (int)ldexp(res * quarter[j % 4], -(j / 4));
         r[j] = r[j] > 0 ? r[j] : 1;
     }
+}
+
+/* Returns the first of the steps r whose buffer takes at most max_bytes,
+ * or LB_STEPS + 1 when none does. The cells are counted exactly for
+ * fields of up to LB_SAMPLE spheres; a larger field's spheres seen
+ * smaller than LB_SMALL cells of the finest step are counted one in k, k
+ * times over (the rest, which may span many cells, each once). */
+static int lb_choose(const LightBuffer *lb, const int r[LB_STEPS + 1], size_t count, double m,
+                     size_t max_bytes, int threads)
+{
+    double entries[LB_STEPS + 1] = {0}, holders = 0;
+    size_t stride = (count + LB_SAMPLE - 1) / LB_SAMPLE;
+    double small = LB_SMALL / (double)r[0];
+
     (void)threads;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static) \
     reduction(+ : entries[:LB_STEPS + 1], holders)
 #endif
     for (size_t k = 0; k < count; k++) {
-        LbSight sight = lb_sight(lb, &lb->spheres[k], m);
+        const Sphere *s = &lb->spheres[k];
+        double weight = 1;
+        LbSight sight;
         LbSpan span[LB_FACES];
         int n;
+        if (stride > 1 && s->radius < small * vec3_length(vec3_sub(s->centre, lb->centre))) {
+            if (k % stride != 0)
+                continue;
+            weight = (double)stride;
+        }
+        sight = lb_sight(lb, s, m);
         if (sight.holds) {
-            holders++;
+            holders += weight;
             continue;
         }
         n = lb_spans(&sight, span);
         for (int j = 0; j <= LB_STEPS; j++)
-            entries[j] += lb_cells_at(r[j], span, n);
+            entries[j] += weight * (double)lb_cells_at(r[j], span, n);
     }
-    if (holders > LB_HOLDERS_MAX)
-        return 0;
     for (int j = 0; j <= LB_STEPS; j++)
-        if (lb_bytes(r[j], entries[j] + holders * LB_FACES * r[j] * r[j]) <= max_bytes)
-            return r[j];
-    return 0;
+        if (lb_bytes(r[j], (size_t)(entries[j] + holders * LB_FACES * r[j] * r[j])) <= max_bytes)
+            return j;
+    return LB_STEPS + 1;
+}
+
+/* Sets lb's resolution, the first of steps that fits max_bytes, and
+ * counts its lists into lb->first, their entries in all into *total: the
+ * choice made on a sample (lb_choose()), the count checks it, a step
+ * finer than fits passed over for the next. Returns 0, 1 when no step
+ * fits or the count refuses (nothing held), or -1 when memory runs out. */
+static int lb_size(LightBuffer *lb, const int steps[LB_STEPS + 1], size_t count, double m,
+                   size_t max_bytes, int threads, size_t *total)
+{
+    for (int j = lb_choose(lb, steps, count, m, max_bytes, threads); j <= LB_STEPS; j++) {
+        lb->res = steps[j];
+        lb->first = calloc((size_t)LB_FACES * lb->res * lb->res + 1, sizeof *lb->first);
+        if (!lb->first)
+            return -1;
+        *total = lb_count(lb, count, m, threads);
+        if (*total == SIZE_MAX)
+            break;
+        if (lb_bytes(lb->res, *total) <= max_bytes)
+            return 0;
+        free(lb->first);
+        lb->first = NULL;
+    }
+    light_buffer_free(lb);
+    lb->res = 0;
+    return 1;
 }
 
 int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size_t count,
@@ -383,7 +427,7 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
 {
     size_t cells, total, holders = 0;
     uint32_t holder[LB_HOLDERS_MAX];
-    int res;
+    int steps[LB_STEPS + 1], rc;
     uint32_t *cursor;
     float *near;
     double m;
@@ -399,18 +443,10 @@ int light_buffer_build(LightBuffer *lb, Vec3 centre, const Sphere *spheres, size
      * range (the readers bring tiny scenes near 1: scale.h). */
     if (!(m >= 0x1p-60 && m <= 0x1p100))
         return 1;
-    res = lb_resolution(lb, count, rays, threads);
-    lb->res = lb_choose(lb, res, count, m, max_bytes, threads);
-    if (lb->res == 0)
-        return 1;
-    lb->first = calloc((size_t)LB_FACES * lb->res * lb->res + 1, sizeof *lb->first);
-    if (!lb->first)
-        return -1;
-    total = lb_count(lb, count, m, threads);
-    if (total == SIZE_MAX) {
-        light_buffer_free(lb);
-        return 1;
-    }
+    lb_steps(lb_resolution(lb, count, rays, threads), steps);
+    rc = lb_size(lb, steps, count, m, max_bytes, threads, &total);
+    if (rc != 0)
+        return rc;
     cells = (size_t)LB_FACES * lb->res * lb->res;
     lb->entry_count = total;
     lb->entries = malloc(total * sizeof *lb->entries + 1);
