@@ -193,7 +193,10 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
                 cp = cos(wedge * k + d);
                 sp = sin(wedge * k + d);
             }
-            dir = vec3_from_frame(normal, (real)(st * cp), (real)(st * sp), (real)ct);
+            /* vec3_from_frame()'s sum, its frame's vectors t1 and t2 made once */
+            dir = vec3_add(vec3_add(vec3_scale(t1, (real)(st * cp)),
+                                    vec3_scale(t2, (real)(st * sp))),
+                           vec3_scale(normal, (real)ct));
             r[i] = sample(ctx, dir, &lc[i]);
             if (r[i] < INFINITY)
                 inverse += 1 / r[i];
