@@ -76,7 +76,9 @@ static void gicache_add_sums(Vec3 g[3], Vec3 u, const double sum[3])
 static void gicache_translation(Vec3 t1, Vec3 t2, int m, int n, const Colour *lc,
                                 const double *q, double *sweep, Vec3 g[3])
 {
-    double *across = sweep + m; /* a band's boundary, a wedge's */
+    /* Band j's weights: sweep[j] across its boundary of constant theta
+     * with band j - 1, across[j] across its boundaries of constant phi. */
+    double *across = sweep + m;
 
     for (int j = 0; j < m; j++) {
         double s2 = (double)j / m;
