@@ -222,20 +222,46 @@ static void gicache_any_gives_one_valid_record(void)
 
     gicache_init(&c, 0.4, 1, 0);
     add_records(&c, p, values, 3);
-    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, NULL, &out));
     CHECK(out.r == 10 || out.r == 20);
     out.r = -1;
-    CHECK_INT(0, gicache_any(&c, 0, 1, vec3(10, 10, 10), n, &out));
+    CHECK_INT(0, gicache_any(&c, 0, 1, vec3(10, 10, 10), n, NULL, &out));
     CHECK_NEAR(-1, out.r, 0); /* untouched */
     /* Each record holding only later levels in turn: the other it is
      * (whichever the grid lists first). */
     c.places[0].first = 1;
-    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, NULL, &out));
     CHECK_NEAR(20, out.r, 0);
     c.places[0].first = 0;
     c.places[1].first = 1;
-    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, &out));
+    CHECK_INT(1, gicache_any(&c, 0, 1, x, n, NULL, &out));
     CHECK_NEAR(10, out.r, 0);
+    c.places[1].first = 0;
+    /* A hint valid at x is the record read (the first of the two that is);
+     * none valid there (out of reach, or none yet) gives way to the grid's
+     * first, which is kept in hint[0]. */
+    for (uint32_t i = 0; i < 2; i++) {
+        uint32_t hint[2] = {i, 1 - i}, second[2] = {2, i};
+        CHECK_INT(1, gicache_any(&c, 0, 1, x, n, hint, &out));
+        CHECK_NEAR(values[i], out.r, 0);
+        CHECK_INT((int)i, (int)hint[0]);
+        CHECK_INT(1, gicache_any(&c, 0, 1, x, n, second, &out));
+        CHECK_NEAR(values[i], out.r, 0);
+        CHECK_INT((int)i, (int)second[0]);
+    }
+    {
+        uint32_t hint[2] = {2, 2}, none[2] = {GICACHE_NO_HINT, GICACHE_NO_HINT};
+        Colour first;
+        CHECK_INT(1, gicache_any(&c, 0, 1, x, n, NULL, &first));
+        CHECK_INT(1, gicache_any(&c, 0, 1, x, n, hint, &out));
+        CHECK_NEAR(first.r, out.r, 0);
+        CHECK(hint[0] < 2 && values[hint[0]] == first.r);
+        CHECK_INT(1, gicache_any(&c, 0, 1, x, n, none, &out));
+        CHECK(none[0] < 2 && values[none[0]] == first.r);
+        /* Out of every record's reach: 0, the hints left as they were. */
+        CHECK_INT(0, gicache_any(&c, 0, 1, vec3(10, 10, 10), n, hint, &out));
+        CHECK(hint[0] < 2 && hint[1] == 2);
+    }
     gicache_free(&c);
     gicache_init(&c, 0.3, 1, 0);
     for (int i = 0; i < 200; i++) {
@@ -249,17 +275,25 @@ static void gicache_any_gives_one_valid_record(void)
         CHECK(gicache_add(&c, &q, v) == 0);
     }
     gicache_refile(&c);
-    for (int k = 0; k < 400; k++) {
+    /* Without a hint, and with one carried from lookup to lookup along a
+     * walk of short steps (as a gathering's rays meet points): a record
+     * wherever a lookup finds any, and a valid one. */
+    uint32_t hint[2] = {GICACHE_NO_HINT, GICACHE_NO_HINT};
+    for (int k = 0; k < 800; k++) {
         int any, all;
         h = h * 6364136223846793005ULL + 1442695040888963407ULL;
-        x = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
-        any = gicache_any(&c, 0, 1, x, n, &out);
+        if (k < 400)
+            x = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
+        else
+            x = vec3(fmod(x.x + (double)(h >> 40 & 63) / 400, 10.24),
+                     fmod(x.y + (double)(h >> 20 & 63) / 400, 10.24), 0);
+        any = gicache_any(&c, 0, 1, x, n, k < 400 ? NULL : hint, &out);
         all = gicache_lookup(&c, 0, 1, x, n, &blend);
         /* A record's value is its number: the one found must be valid. */
         agree += any == (all > 0) &&
                  (!any || gicache_weight(gicache_error(&c.places[(size_t)out.r], x, n), 0.3) > 0);
     }
-    CHECK_INT(400, agree);
+    CHECK_INT(800, agree);
     gicache_free(&c);
 }
 

@@ -156,14 +156,21 @@ void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);
  * records used (0: none valid, *out untouched). */
 int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
 
-/* As gicache_lookup(), but into *out the value of the first record the
- * grid lists as valid at x (holding that level), carried there by its
- * gradients, not a blend of them all; returns 1, or 0 when none is valid.
- * Within the cache's accuracy as any one valid record is, without the
- * blend's smooth seams between records: for the light a gathering ray
- * brings, which reaches the picture only averaged over a record's rays
- * (it reads less: it stops at the first). */
-int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out);
+/* No record: a hint of gicache_any() before its first lookup. */
+#define GICACHE_NO_HINT UINT32_MAX
+
+/* As gicache_lookup(), but into *out the value of one record valid at x
+ * (holding that level), carried there by its gradients, not a blend of
+ * them all; returns 1, or 0 when none is valid. Within the cache's
+ * accuracy as any one valid record is, without the blend's smooth seams
+ * between records: for the light a gathering ray brings, which reaches
+ * the picture only averaged over a record's rays. The record: hint[0]'s,
+ * else hint[1]'s, when hint is not NULL and that one is valid at x (a
+ * gathering's rays meet points near those of the rays before them: the
+ * caller's recent records spare it the grid), else the first the grid
+ * lists as valid; whichever it is is left in hint[0]. */
+int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, uint32_t hint[2],
+                Colour *out);
 
 /* Returns the bytes *c holds. */
 size_t gicache_memory(const GiCache *c);

@@ -5,8 +5,8 @@
  * The colour rules are in trace.h; its steps in visibility.h (which object
  * a ray meets, what a shadow ray crosses), shade.h (what a point looks
  * like and the light it receives) and cut.h (the rays that may be left
- * out). A Tracer is only read by them, but for the cut-off and counters it
- * points to (and the sample it is tracing): one per thread.
+ * out). A Tracer is only read by them, but for the cut-off, counters and
+ * cache hints it points to (and the sample it is tracing): one per thread.
  */
 #ifndef RAYTRACE_TRACER_H
 #define RAYTRACE_TRACER_H
@@ -127,6 +127,10 @@ typedef struct {
                             model_tracer() */
     const struct GiCache *gicache; /* where diffuse points look their
                             gathered light up first (gicache.h), or NULL */
+    uint32_t *gicache_hint; /* the two records a gathering ray's hit tries
+                            first (gicache_any()'s hint), set by the cache's
+                            pre-pass afresh for each record's rays; NULL
+                            elsewhere */
     int primary_misses;  /* 1: the primary rays traced are proven to meet
                             nothing; they take the model's miss colour
                             untraced (render.c) */

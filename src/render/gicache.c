@@ -338,8 +338,15 @@ static int64_t gicache_coord(real x, int s)
         q = ldexp((double)x, -s);
     }
 
-    q = floor(q);
-    return q > 4e18 ? (int64_t)4e18 : q < -4e18 ? (int64_t)-4e18 : (int64_t)q;
+    if (q > 4e18)
+        return (int64_t)4e18;
+    if (q < -4e18)
+        return (int64_t)-4e18;
+    /* floor(q), exact within the clamp: a conversion truncates towards
+     * zero, one less below a negative fraction (libm's floor is a call or
+     * some twenty instructions where the processor lacks SSE4.1) */
+    int64_t t = (int64_t)q;
+    return (double)t > q ? t - 1 : t;
 }
 
 /* Returns the slot where grid g's search for cell (s, ix, iy, iz) starts:
@@ -603,15 +610,69 @@ void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)
     c->values[i * (size_t)c->levels + (size_t)level] = *v;
 }
 
-/* gicache_lookup(), or with `first` set gicache_any(): the scan stops at
- * the first record valid at x. */
-static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, int first,
-                        Colour *out)
+/* The records a lookup has blended so far: their weighted sums. */
+typedef struct {
+    double sum[3], total;
+    int used;
+} GiBlend;
+
+/* Returns the weight record i has at x (normal nx) under accuracy a, for
+ * level `level`: 0 when it is not valid there or does not hold the level.
+ * `radius` is the record's in the grid's entry (at least its own): beyond
+ * a times it, no square root is taken and the record is not read. */
+static double gicache_valid(const GiCache *c, uint32_t i, Vec3 point, double radius, int level,
+                            double a, Vec3 x, Vec3 nx)
 {
-    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH), total = 0;
-    double sum[3] = {0, 0, 0};
+    Vec3 d = vec3_sub(x, point);
+    double reach = a * radius;
+
+    /* Out of reach by distance alone (its error is at least |d| / R). */
+    if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6) || c->places[i].first > level)
+        return 0;
+    return gicache_weight(gicache_error(&c->places[i], x, nx), a);
+}
+
+/* Returns record i's level `level` carried to x (normal nx). */
+static Colour gicache_value_at(const GiCache *c, uint32_t i, int level, Vec3 x, Vec3 nx)
+{
+    return gicache_extrapolate(&c->places[i], &c->values[i * (size_t)c->levels + (size_t)level],
+                               x, nx);
+}
+
+/* Reads the list of grid g's entries from `head` for the records valid at
+ * x (normal nx) under accuracy a: blends each into b, or with `first` set
+ * returns the first one (else GICACHE_NONE). */
+static uint32_t gicache_scan_cell(const GiCache *c, const GiGrid *g, uint32_t head, int level,
+                                  double a, Vec3 x, Vec3 nx, int first, GiBlend *b)
+{
+    for (uint32_t e = head; e != GICACHE_NONE; e = g->entries[e].next) {
+        const GiEntry *entry = &g->entries[e];
+        double w = gicache_valid(c, entry->record, entry->point, entry->radius, level, a, x, nx);
+        Colour v;
+
+        if (w <= 0)
+            continue;
+        if (first)
+            return entry->record;
+        v = gicache_value_at(c, entry->record, level, x, nx);
+        b->sum[0] += w * v.r;
+        b->sum[1] += w * v.g;
+        b->sum[2] += w * v.b;
+        b->total += w;
+        b->used++;
+    }
+    return GICACHE_NONE;
+}
+
+/* gicache_lookup(), or with `first` set gicache_any()'s scan: it stops at
+ * the first record valid at x (the scales ascending, each cell's entries
+ * in order) and returns it in *found. */
+static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, int first,
+                        Colour *out, uint32_t *found)
+{
+    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH);
     const GiGrid *g = &c->grids[reach <= c->grids[0].reach ? 0 : 1];
-    int used = 0;
+    GiBlend b = {{0, 0, 0}, 0, 0};
 
     enum { SCALES = sizeof g->scales / sizeof g->scales[0] };
     uint32_t heads[SCALES];
@@ -620,9 +681,8 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
 
     if (c->count == 0 || level >= c->levels)
         return 0;
-    /* Each scale's cell, then its entries, asked for from memory at once
-     * for every scale (they are far apart: the waits overlap); then read,
-     * scale by scale. */
+    /* Each scale's cell asked for from memory at once for every scale
+     * (they are far apart: the waits overlap). */
     for (int k = 0; k < g->scale_count; k++) {
         int s = g->scales[k];
 
@@ -634,6 +694,22 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
         __builtin_prefetch(&g->cells[homes[k]]);
 #endif
     }
+    /* The first valid record: each scale's cell read as it comes (most
+     * lookups end before the last). */
+    if (first) {
+        for (int k = 0; k < g->scale_count; k++) {
+            size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
+            uint32_t i = gicache_scan_cell(c, g, g->cells[slot].head, level, a, x, nx, 1, &b);
+            if (i != GICACHE_NONE) {
+                *out = gicache_value_at(c, i, level, x, nx);
+                *found = i;
+                return 1;
+            }
+        }
+        return 0;
+    }
+    /* Every valid record: every scale's entries asked for at once, then
+     * read scale by scale. */
     for (int k = 0; k < g->scale_count; k++) {
         size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
 
@@ -643,47 +719,38 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
             __builtin_prefetch(&g->entries[heads[k]]);
 #endif
     }
-    for (int k = 0; k < g->scale_count; k++) {
-        for (uint32_t e = heads[k]; e != GICACHE_NONE; e = g->entries[e].next) {
-            const GiEntry *entry = &g->entries[e];
-            uint32_t i = entry->record;
-            Vec3 d = vec3_sub(x, entry->point);
-            double reach = a * entry->radius, w;
-            Colour g;
-
-            /* Out of reach by distance alone (its error is at least
-             * |d| / R): skipped before the square roots, and before the
-             * record is read. */
-            if ((double)vec3_dot(d, d) > reach * reach * (1 + 1e-6) ||
-                c->places[i].first > level)
-                continue;
-            w = gicache_weight(gicache_error(&c->places[i], x, nx), a);
-            if (w <= 0)
-                continue;
-            g = gicache_extrapolate(&c->places[i], &c->values[i * (size_t)c->levels + (size_t)level],
-                                    x, nx);
-            if (first) {
-                *out = g;
-                return 1;
-            }
-            sum[0] += w * g.r;
-            sum[1] += w * g.g;
-            sum[2] += w * g.b;
-            total += w;
-            used++;
-        }
-    }
-    if (used)
-        *out = colour(sum[0] / total, sum[1] / total, sum[2] / total);
-    return used;
+    for (int k = 0; k < g->scale_count; k++)
+        gicache_scan_cell(c, g, heads[k], level, a, x, nx, 0, &b);
+    if (b.used)
+        *out = colour(b.sum[0] / b.total, b.sum[1] / b.total, b.sum[2] / b.total);
+    return b.used;
 }
 
 int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
 {
-    return gicache_scan(c, level, reach, x, nx, 0, out);
+    uint32_t found;
+
+    return gicache_scan(c, level, reach, x, nx, 0, out, &found);
 }
 
-int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, uint32_t hint[2],
+                Colour *out)
 {
-    return gicache_scan(c, level, reach, x, nx, 1, out);
+    uint32_t found;
+    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH);
+
+    for (int k = 0; hint && k < 2 && level < c->levels; k++) {
+        uint32_t i = hint[k];
+        if (i < c->count &&
+            gicache_valid(c, i, c->places[i].point, c->places[i].radius, level, a, x, nx) > 0) {
+            *out = gicache_value_at(c, i, level, x, nx);
+            hint[0] = i;
+            return 1;
+        }
+    }
+    if (!gicache_scan(c, level, reach, x, nx, 1, out, &found))
+        return 0;
+    if (hint)
+        hint[0] = found;
+    return 1;
 }

@@ -71,6 +71,8 @@ typedef struct {
     size_t capacity;
     uint64_t serial;     /* records started so far */
     GatherPoints next;   /* the points the next generation covers */
+    uint32_t covering[2]; /* the record that covered the last point asked
+                            about (gicache_any()'s hint) */
     RayCounts counts;
 } Irr;
 
@@ -82,6 +84,8 @@ typedef struct {
     int bounce;
     uint64_t key;
     unsigned i;
+    unsigned n;        /* wedges: ray i is wedge i % n's */
+    uint32_t *wedges;  /* the record that served each wedge's last ray */
 } IrrRay;
 
 /* GiSample for a record: the colour a ray from the point brings back (none
@@ -100,7 +104,9 @@ static double irr_sample(void *ctx, Vec3 dir, Colour *c)
     ray.dir = dir;
     ray.origin = ray_offset_origin(r->at->point, r->at->error, r->at->n, dir);
     r->t->counts->gather++;
+    r->t->gicache_hint[1] = r->wedges[i % r->n];
     *c = trace_gathered(r->t, &ray, r->bounce, sampler_branch(r->key, i), &met);
+    r->wedges[i % r->n] = r->t->gicache_hint[0];
     /* A surface met from behind: the point is outside what encloses it
      * (on a seam, a hair outside a corner): counted as open. */
     return met.behind ? INFINITY : met.t;
@@ -204,16 +210,21 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
         TraceSample sample = {0, 0, 0, 1, NULL};
         uint32_t occluders[TRACE_OCCLUDERS];
         Tracer t = irr_tracer(irr, &mine, &sample, occluders);
+        uint32_t hint[2], wedges[SCENE_MAX_INDIRECT]; /* n <= the rays <= that */
 
         t.gicache = collect ? NULL : irr->cache;
+        t.gicache_hint = hint;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (long i = 0; i < (long)count; i++) {
             IrrWork *w = &works[i];
-            IrrRay r = {&t, &w->at, bounce, w->key, 0};
+            IrrRay r = {&t, &w->at, bounce, w->key, 0, (unsigned)n, wedges};
             double harmonic;
 
+            hint[0] = hint[1] = GICACHE_NO_HINT; /* each record's rays alike on any thread */
+            for (int k = 0; k < n; k++)
+                wedges[k] = GICACHE_NO_HINT;
             sample.x = (int)(w->key & 0x3fffffff);
             sample.y = bounce;
             t.collect = collect ? &w->hits : NULL;
@@ -235,12 +246,15 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
 }
 
 /* Says whether a record holding the current generation's level covers
- * point p. */
-static int irr_covered(const Irr *irr, const GatherPoint *p)
+ * point p (whichever: the one that covered the last point asked about is
+ * tried first). */
+static int irr_covered(Irr *irr, const GatherPoint *p)
 {
     Colour g;
 
-    return gicache_lookup(irr->cache, irr->generation, IRR_PLACE, p->point, p->ns, &g) > 0;
+    irr->covering[1] = GICACHE_NO_HINT;
+    return gicache_any(irr->cache, irr->generation, IRR_PLACE, p->point, p->ns, irr->covering,
+                       &g);
 }
 
 /* Starts the work of a record at p. */
@@ -498,6 +512,7 @@ int irradiance_build(const Scene *scene, const RenderOptions *opts, GiCache *cac
     irr.scene = scene;
     irr.opts = opts;
     irr.cache = cache;
+    irr.covering[0] = GICACHE_NO_HINT;
     irr.rays = opts->indirect.gi_samples;
     irr.bounces = bounces;
     irr.pixel = (double)vec3_length(cam->u) / cam->width /

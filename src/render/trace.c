@@ -346,6 +346,16 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
     return colour_scale(sum, 1.0 / rays);
 }
 
+/* Looks the light gathered at x (shading normal ns) up in t's cache under
+ * its accuracy times reach: the camera's points (bounce 0) blend every
+ * valid record, a gathering ray's hit takes one (t's hint first). */
+static int trace_look_up(const Tracer *t, int bounce, double reach, Vec3 x, Vec3 ns, Colour *g)
+{
+    if (bounce == 0)
+        return gicache_lookup(t->gicache, 0, reach, x, ns, g);
+    return gicache_any(t->gicache, bounce, reach, x, ns, t->gicache_hint, g);
+}
+
 /* Returns the light a diffuse surface of colour C (sh's) and weight kd
  * reflects of what its gathering rays bring: kd C * mean / 255. */
 static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, int depth,
@@ -363,12 +373,9 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
          * seams otherwise); a gathering ray's hit, in the cache's pre-pass,
          * takes the first valid one (its light is averaged over the rays
          * of the record that cast it). */
-        int (*look)(const GiCache *, int, double, Vec3, Vec3, Colour *) =
-            path.bounce == 0 ? gicache_lookup : gicache_any;
-
         t->counts->lookups++;
-        if (look(t->gicache, path.bounce, 1, sh->sp.point, ns, &g) ||
-            look(t->gicache, path.bounce, GICACHE_FALLBACK_REACH, sh->sp.point, ns, &g))
+        if (trace_look_up(t, path.bounce, 1, sh->sp.point, ns, &g) ||
+            trace_look_up(t, path.bounce, GICACHE_FALLBACK_REACH, sh->sp.point, ns, &g))
             t->counts->served++;
         else
             g = trace_gather(t, sh, n, ns, depth, weight, path);
