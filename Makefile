@@ -401,7 +401,8 @@ trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 	sh tests/bench/trade.sh ./raytrace ./raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 	sh tests/bench/gicache.sh ./raytrace ./raytrace-diff
 
-# The irradiance cache's error against time: docs/gicache.md and its plot.
+# The irradiance cache's error against time: docs/gicache.md and its plot
+# (GICACHE_KEEP_REFS=1: against the last run's references, in build/gicache).
 trade-cache: raytrace raytrace-diff
 	sh tests/bench/gicache.sh ./raytrace ./raytrace-diff
 

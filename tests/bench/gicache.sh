@@ -21,7 +21,10 @@
 # Usage: sh tests/bench/gicache.sh RAYTRACE RAYTRACE-DIFF [OUT.md]
 # With GICACHE_PAGE_ONLY=1, writes the page and plot again from the last
 # run's measurements (build/gicache) without measuring the times (the
-# floors it measures when the last run left none).
+# floors it measures when the last run left none). With
+# GICACHE_KEEP_REFS=1, measures again against the references the last run
+# left there (uniform renders: a change to the cache alone leaves them as
+# they were), rendering only those missing.
 
 RT=$1
 DIFF=$2
@@ -52,8 +55,10 @@ if [ "${GICACHE_PAGE_ONLY:-0}" != 1 ] || [ ! -s "$DIR/rows" ]; then
         b=${run#*:}
         key="$s-b$b"
         echo "gicache: $s, $b bounce(s)" >&2
-        "$RT" -q --size 200x200 -s "$REF" --gi 64 --gi-bounces "$b" --format pfm "scenes/$s.txt" \
-            "$DIR/$key-ref.pfm" || exit 1
+        if [ "${GICACHE_KEEP_REFS:-0}" != 1 ] || [ ! -s "$DIR/$key-ref.pfm" ]; then
+            "$RT" -q --size 200x200 -s "$REF" --gi 64 --gi-bounces "$b" --format pfm \
+                "scenes/$s.txt" "$DIR/$key-ref.pfm" || exit 1
+        fi
         while read -r opts; do
             # shellcheck disable=SC2086
             t=$(time_renders "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
