@@ -46,6 +46,17 @@
  * gathers its own light: the widest a lookup reaches. */
 #define GICACHE_FALLBACK_REACH 2.0
 
+/* The rays a camera's point gathers when no record covers it even there,
+ * of a record's `rays`: a sixteenth, at least 16 (never more than rays).
+ * It stands for one sample's gathering among its pixel's, not a record's:
+ * on scenes/indirect.txt at -s 16 (345 such points of 653,414) 0.92 of
+ * the time for an RMSE of 0.7934 against 0.7931 with every ray
+ * (docs/log.md). */
+static inline int gicache_fallback_rays(int rays)
+{
+    return rays / 16 > 16 ? rays / 16 : rays < 16 ? rays : 16;
+}
+
 /* What one record keeps for one bounce level: the mean colour of its
  * gathering rays (0..255 per channel, as trace.h's) and its gradients,
  * channel by channel, in scene units. */

@@ -6,6 +6,7 @@
 
 #include "accel/bvh.h"
 #include "render/cut.h"
+#include "render/gicache.h"
 #include "render/model.h"
 #include "render/noise.h"
 #include "render/sampler.h"
@@ -411,7 +412,9 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         t.indirect = opts->indirect;
         t.sample = &sample;
         t.ao_grid = render_rays_grid(&g, opts->indirect.ao_samples);
-        t.gi_grid = render_rays_grid(&g, opts->indirect.gi_samples);
+        if (t.indirect.gi_cache) /* only the points no record covers gather */
+            t.indirect.gi_samples = gicache_fallback_rays(t.indirect.gi_samples);
+        t.gi_grid = render_rays_grid(&g, t.indirect.gi_samples);
         t.path_grid = g;
         t.occluders = occluders;
         t.no_shadows = opts->no_shadows;
