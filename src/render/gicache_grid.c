@@ -405,7 +405,7 @@ static Colour gicache_value_at(const GiCache *c, uint32_t i, int level, Vec3 x, 
 
 /* Reads the list of grid g's entries from `head` for the records valid at
  * x (normal nx) under accuracy a: blends each into b, or with `first` set
- * returns the first one (else GICACHE_NONE). */
+ * returns the first one (else GICACHE_NONE; b unused, may be NULL). */
 static uint32_t gicache_scan_cell(const GiCache *c, const GiGrid *g, uint32_t head, int level,
                                   double a, Vec3 x, Vec3 nx, int first, GiBlend *b)
 {
@@ -428,25 +428,19 @@ static uint32_t gicache_scan_cell(const GiCache *c, const GiGrid *g, uint32_t he
     return GICACHE_NONE;
 }
 
-/* gicache_lookup(), or with `first` set gicache_any()'s scan: it stops at
- * the first record valid at x (the scales ascending, each cell's entries
- * in order) and returns it in *found. */
-static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, int first,
-                        Colour *out, uint32_t *found)
+/* Returns the grid a lookup of reach `reach` reads, and in *a the
+ * accuracy it applies: the cache's times the reach (at most the widest). */
+static const GiGrid *gicache_grid_for(const GiCache *c, double reach, double *a)
 {
-    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH);
-    const GiGrid *g = &c->grids[reach <= c->grids[0].reach ? 0 : 1];
-    GiBlend b = {{0, 0, 0}, 0, 0};
+    *a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH);
+    return &c->grids[reach <= c->grids[0].reach ? 0 : 1];
+}
 
-    enum { SCALES = sizeof g->scales / sizeof g->scales[0] };
-    uint32_t heads[SCALES];
-    size_t homes[SCALES];
-    int64_t at[SCALES][3];
-
-    if (c->count == 0 || level >= c->levels)
-        return 0;
-    /* Each scale's cell asked for from memory at once for every scale
-     * (they are far apart: the waits overlap). */
+/* Stores in at[k] and homes[k] each scale k's cell of grid g holding x
+ * and the slot its search starts from, asking memory for them all at once
+ * (they are far apart: the waits overlap). */
+static void gicache_cells_at(const GiGrid *g, Vec3 x, int64_t at[][3], size_t *homes)
+{
     for (int k = 0; k < g->scale_count; k++) {
         int s = g->scales[k];
 
@@ -458,22 +452,23 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
         __builtin_prefetch(&g->cells[homes[k]]);
 #endif
     }
-    /* The first valid record: each scale's cell read as it comes (most
-     * lookups end before the last). */
-    if (first) {
-        for (int k = 0; k < g->scale_count; k++) {
-            size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
-            uint32_t i = gicache_scan_cell(c, g, g->cells[slot].head, level, a, x, nx, 1, &b);
-            if (i != GICACHE_NONE) {
-                *out = gicache_value_at(c, i, level, x, nx);
-                *found = i;
-                return 1;
-            }
-        }
+}
+
+enum { GICACHE_SCALES = sizeof ((GiGrid *)0)->scales / sizeof ((GiGrid *)0)->scales[0] };
+
+int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+{
+    double a;
+    const GiGrid *g = gicache_grid_for(c, reach, &a);
+    GiBlend b = {{0, 0, 0}, 0, 0};
+    uint32_t heads[GICACHE_SCALES];
+    size_t homes[GICACHE_SCALES];
+    int64_t at[GICACHE_SCALES][3];
+
+    if (c->count == 0 || level >= c->levels)
         return 0;
-    }
-    /* Every valid record: every scale's entries asked for at once, then
-     * read scale by scale. */
+    gicache_cells_at(g, x, at, homes);
+    /* Every scale's entries asked for at once, then read scale by scale. */
     for (int k = 0; k < g->scale_count; k++) {
         size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
 
@@ -490,31 +485,44 @@ static int gicache_scan(const GiCache *c, int level, double reach, Vec3 x, Vec3 
     return b.used;
 }
 
-int gicache_lookup(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, Colour *out)
+/* Returns the first record grid g lists as valid at x under accuracy a
+ * (the scales ascending, each cell's entries in order; each scale's cell
+ * read as it comes: most searches end before the last), or GICACHE_NONE. */
+static uint32_t gicache_first(const GiCache *c, const GiGrid *g, int level, double a, Vec3 x,
+                              Vec3 nx)
 {
-    uint32_t found;
+    size_t homes[GICACHE_SCALES];
+    int64_t at[GICACHE_SCALES][3];
 
-    return gicache_scan(c, level, reach, x, nx, 0, out, &found);
+    gicache_cells_at(g, x, at, homes);
+    for (int k = 0; k < g->scale_count; k++) {
+        size_t slot = gicache_probe(g, homes[k], g->scales[k], at[k][0], at[k][1], at[k][2]);
+        uint32_t i = gicache_scan_cell(c, g, g->cells[slot].head, level, a, x, nx, 1, NULL);
+        if (i != GICACHE_NONE)
+            return i;
+    }
+    return GICACHE_NONE;
 }
 
 int gicache_any(const GiCache *c, int level, double reach, Vec3 x, Vec3 nx, uint32_t hint[2],
                 Colour *out)
 {
-    uint32_t found;
-    double a = c->a * (reach < GICACHE_MAX_REACH ? reach : GICACHE_MAX_REACH);
+    double a;
+    const GiGrid *g = gicache_grid_for(c, reach, &a);
+    uint32_t i = GICACHE_NONE;
 
-    for (int k = 0; hint && k < 2 && level < c->levels; k++) {
-        uint32_t i = hint[k];
-        if (i < c->count &&
-            gicache_valid(c, i, c->places[i].point, c->places[i].radius, level, a, x, nx) > 0) {
-            *out = gicache_value_at(c, i, level, x, nx);
-            hint[0] = i;
-            return 1;
-        }
-    }
-    if (!gicache_scan(c, level, reach, x, nx, 1, out, &found))
+    if (c->count == 0 || level >= c->levels)
+        return 0;
+    for (int k = 0; hint && k < 2 && i == GICACHE_NONE; k++)
+        if (hint[k] < c->count && gicache_valid(c, hint[k], c->places[hint[k]].point,
+                                                c->places[hint[k]].radius, level, a, x, nx) > 0)
+            i = hint[k];
+    if (i == GICACHE_NONE)
+        i = gicache_first(c, g, level, a, x, nx);
+    if (i == GICACHE_NONE)
         return 0;
     if (hint)
-        hint[0] = found;
+        hint[0] = i;
+    *out = gicache_value_at(c, i, level, x, nx);
     return 1;
 }
