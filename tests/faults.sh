@@ -5,7 +5,10 @@
 #  1. SIGKILL at 50 moments spread over a render's whole life (reading
 #     200,000 spheres, building their hierarchy, rendering, writing): the
 #     output's folder must hold what it held before (the old output) or
-#     the complete new image, and nothing else: no temporary file.
+#     the complete new image, and nothing else: no temporary file (or,
+#     killed in the microseconds between the link and the rename that name
+#     the image, the complete new image under a temporary name, which the
+#     next render removes).
 #  2. Two renders writing the same output at once, ten times: the output
 #     is one of the two complete images, never a mix, and nothing is left
 #     beside it.
@@ -16,6 +19,12 @@
 #     the correct image (interrupted and short calls are retried), or with
 #     exit 1 and a message naming the file and the cause, the old output as
 #     it was and nothing beside it. Never a crash, a hang or a mix.
+#  4. The same without unnamed files (a named temporary file instead).
+#  5. A failed clean-up is said, naming the file left.
+#  6. A kill made to land where a name is left (between an unnamed file's
+#     link and its rename; while a named temporary file is written): the
+#     next render to that output removes it, and only what dead processes
+#     of this machine left.
 #
 # The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) kills at 10
 # moments, races twice and injects each fault at the first, a middle and
@@ -44,7 +53,7 @@ took=$((($(date +%s%N) - start) / 1000000))
 moments=50 races=10
 full || moments=10 races=2
 mkdir "$T/o"
-survived=0 finished=0
+survived=0 finished=0 committing=0
 i=0
 while [ $i -lt $moments ]; do
     rm -rf "$T/o"
@@ -57,8 +66,20 @@ while [ $i -lt $moments ]; do
     kill -9 $pid 2>/dev/null
     wait $pid 2>/dev/null
     left=$(ls -A "$T/o")
+    # A kill between the unnamed file's link to a temporary name and its
+    # rename leaves the whole new image under that name; the next render to
+    # out.ppm removes it (section 6 makes that moment on purpose).
+    hidden=$(ls -A "$T/o" | grep '^\.out\.ppm\.[0-9a-f]\{8\}-[0-9]*-[0-9]*$')
+    if [ -n "$hidden" ] && [ "$(echo "$hidden" | wc -l)" = 1 ] &&
+        cmp -s "$T/o/$hidden" "$T/whole.ppm"; then
+        "$RT" -q "$T/field.txt" "$T/o/out.ppm" 2>/dev/null
+        left=$(ls -A "$T/o")
+        committing=$((committing + 1))
+    fi
     if [ "$left" != out.ppm ]; then
         fail "SIGKILL after ${delay} s left: $(echo $left)"
+    elif [ -n "$hidden" ]; then
+        pass
     elif cmp -s "$T/o/out.ppm" "$T/whole.ppm"; then
         finished=$((finished + 1))
         pass
@@ -70,7 +91,7 @@ while [ $i -lt $moments ]; do
     fi
     i=$((i + 1))
 done
-echo "faults: SIGKILL at $moments moments of a ${took} ms render: $survived left the old output, $finished the new one, nothing else"
+echo "faults: SIGKILL at $moments moments of a ${took} ms render: $survived left the old output, $finished the new one, $committing the new one under a temporary name the next render removed, nothing else"
 
 # --- 2. two renders writing the same output at once ---
 printf '0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n300\n200 20 20\n5 5 -5 255 255 255\nsphere: 0 0 0 1 20 20 200 0\n' \
@@ -252,6 +273,47 @@ if [ -n "$INJECT" ]; then
         fail "an unnamed file's failed clean-up leaves $left unnamed" "$(cat "$T/err")"
     fi
     [ "$(cat "$T/o/out.png")" = "keep me" ] && pass || fail "a failed rename changed the old output"
+
+    # --- 6. killed where a name is left: between the unnamed file's link
+    # and its rename (the whole new image), and while a named temporary file
+    # is written (without unnamed files): the next render to that output
+    # removes what a dead process of this machine left, and nothing else ---
+    for how in rename:1:kill:unnamed write:1:kill:named; do
+        rm -rf "$T/o"
+        mkdir "$T/o"
+        printf 'keep me\n' >"$T/o/out.png"
+        if [ "${how##*:}" = named ]; then
+            RAYTRACE_NO_TMPFILE=1 RAYTRACE_FAULT="${how%:*}" LD_PRELOAD="$INJECT" \
+                "$RT" -q "$T/f.txt" "$T/o/out.png" 2>/dev/null
+        else
+            RAYTRACE_FAULT="${how%:*}" LD_PRELOAD="$INJECT" "$RT" -q "$T/f.txt" "$T/o/out.png" \
+                2>/dev/null
+        fi
+        left=$(ls -A "$T/o" | grep -v '^out.png$')
+        host=$(echo "$left" | sed -n 's/^\.out\.png\.\([0-9a-f]\{8\}\)-[0-9]*-0$/\1/p')
+        if [ -z "$host" ] || [ "$(cat "$T/o/out.png")" != "keep me" ]; then
+            fail "a kill at ${how%:*} left: $(ls -A "$T/o" | tr '\n' ' ')"
+            continue
+        fi
+        if [ "${how##*:}" = unnamed ]; then
+            cmp -s "$T/o/$left" "$T/good.png" && pass ||
+                fail "a kill before the rename left something else than the new image"
+        fi
+        # Beside it: a name of this machine's live process (this shell), one
+        # of another machine, and a file of the user's: all kept.
+        other=00000000
+        [ "$host" = $other ] && other=11111111
+        : >"$T/o/.out.png.$host-$$-0"
+        : >"$T/o/.out.png.$other-1-0"
+        : >"$T/o/.out.png.mine"
+        "$RT" -q "$T/f.txt" "$T/o/out.png" 2>"$T/err" || fail "the render after a kill" "$(cat "$T/err")"
+        left=$(ls -A "$T/o" | LC_ALL=C sort | tr '\n' ' ')
+        kept=$(printf '%s\n' ".out.png.$host-$$-0" ".out.png.$other-1-0" .out.png.mine out.png |
+            LC_ALL=C sort | tr '\n' ' ')
+        [ "$left" = "$kept" ] && pass ||
+            fail "after a kill at ${how%:*}, the next render left: $left"
+        cmp -s "$T/o/out.png" "$T/good.png" && pass || fail "the render after a kill differs"
+    done
 fi
 
 finish

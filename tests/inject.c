@@ -8,7 +8,9 @@
  * (ENOSPC, EIO, EINTR, ENOMEM, EACCES) or, for write and read, "short": the
  * call moves half its bytes (at least one), or "exit": the call ends the
  * process with exit(1), as the OpenMP runtime's fatal errors do ("libgomp:
- * Out of memory allocating ..."). RAYTRACE_FAULT_COUNT=FILE
+ * Out of memory allocating ..."), or "kill": the call is not made and the
+ * process sends itself SIGKILL, as a kill landing just before it would.
+ * RAYTRACE_FAULT_COUNT=FILE
  * instead appends to FILE, at exit, how many times each CALL was made.
  * RAYTRACE_FAULT2 names a second fault, the same way.
  * RAYTRACE_NO_TMPFILE=1 makes every open() of an unnamed file (O_TMPFILE)
@@ -21,6 +23,7 @@
 #include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,7 +37,7 @@ static const char *const inject_names[CALLS] = {"write",  "read", "fsync",  "ren
                                                 "linkat", "open", "unlink", "malloc"};
 static unsigned long inject_counts[CALLS];
 /* The faults to inject: the call to fail (-1: none), its number, the
- * errno it fails with (0: a short move, -1: exit(1)). */
+ * errno it fails with (0: a short move, -1: exit(1), -2: SIGKILL). */
 static struct {
     int call;
     unsigned long at;
@@ -57,7 +60,7 @@ static void inject_parse(int k, const char *var)
         int value;
     } errnos[] = {{"ENOSPC", ENOSPC}, {"EIO", EIO},       {"EINTR", EINTR},
                   {"ENOMEM", ENOMEM}, {"EACCES", EACCES}, {"short", 0},
-                  {"exit", -1}};
+                  {"exit", -1},       {"kill", -2}};
 
     if (!spec || sscanf(spec, "%15[a-z]:%lu:%15[A-Za-z]", name, &inject_faults[k].at, fault) != 3)
         return;
@@ -95,6 +98,8 @@ static int inject_hit(int k)
             }
             exit(1);
         }
+        if (inject_faults[f].err == -2)
+            raise(SIGKILL);
         inject_errno = inject_faults[f].err;
         return 1;
     }

@@ -12,7 +12,12 @@
  * output with MoveFileEx's replace. A temporary file is removed on
  * failure, and by the command on an interrupt and any exit it did not
  * choose (base/interrupt.h); a SIGKILL or a killed Windows process leaves
- * it; when even its removal fails, the message names it. "-" means
+ * it, and on Linux a SIGKILL in the microseconds between an unnamed file's
+ * link to a temporary name and its rename over an existing output leaves
+ * the complete file under that name. On POSIX systems such names carry the
+ * machine and the process, and opening the same output again removes
+ * those whose process no longer runs. When even its removal fails, the
+ * message names it. "-" means
  * standard output, written in binary mode, and an existing file that is
  * not a regular file (a device such as /dev/null or NUL, a FIFO) is
  * written in place, since it cannot be replaced. outfile_posix.c and

@@ -14,9 +14,11 @@
 
 #include "outfile_sys.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +42,96 @@ static void outfile_split(const char *path, char *dir, const char **base)
         dir[slash - path] = '\0';
         *base = slash + 1;
     }
+}
+
+/* Returns a hash of this machine's name (FNV-1a), which a temporary
+ * name carries so that outfile_sweep() judges only its own machine's. */
+static unsigned long outfile_host(void)
+{
+    char host[256] = "";
+    unsigned long h = 2166136261u;
+
+    if (gethostname(host, sizeof host - 1) != 0)
+        host[0] = '\0';
+    host[sizeof host - 1] = '\0';
+    for (const unsigned char *c = (const unsigned char *)host; *c; c++)
+        h = ((h ^ *c) * 16777619u) & 0xffffffffu;
+    return h;
+}
+
+/* Writes into name (size bytes) the temporary name beside dest, in dir,
+ * that this process's attempt number try takes: ".BASE.HOST-PID-TRY", HOST
+ * outfile_host() in 8 hex digits. Returns 0, or -1 when it does not fit. */
+static int outfile_temp_name(const char *dir, const char *dest, unsigned try, char *name,
+                             size_t size)
+{
+    const char *slash = strrchr(dest, '/');
+
+    return snprintf(name, size, "%s/.%.200s.%08lx-%ld-%u", dir, slash ? slash + 1 : dest,
+                    outfile_host(), (long)getpid(), try) >= (int)size
+               ? -1
+               : 0;
+}
+
+/* Reads the decimal number at *s (at least one digit) into *value and moves
+ * *s past it; returns 0, or -1 when there is none or it overflows. */
+static int outfile_parse_number(const char **s, unsigned long *value)
+{
+    if (**s < '0' || **s > '9')
+        return -1;
+    *value = 0;
+    for (; **s >= '0' && **s <= '9'; (*s)++) {
+        if (*value > (ULONG_MAX - 9) / 10)
+            return -1;
+        *value = *value * 10 + (unsigned long)(**s - '0');
+    }
+    return 0;
+}
+
+/* Says whether name, an entry beside the output named base, is a
+ * temporary name outfile_temp_name() gave on machine host to a process
+ * that no longer runs. */
+static int outfile_stale(const char *name, const char *base, unsigned long host)
+{
+    size_t n = strlen(base);
+    unsigned long pid, try;
+    char hex[9];
+
+    if (name[0] != '.' || strncmp(name + 1, base, n) != 0 || name[n + 1] != '.')
+        return 0;
+    name += n + 2;
+    snprintf(hex, sizeof hex, "%08lx", host);
+    if (strncmp(name, hex, 8) != 0 || name[8] != '-')
+        return 0;
+    name += 9;
+    if (outfile_parse_number(&name, &pid) != 0 || *name++ != '-' ||
+        outfile_parse_number(&name, &try) != 0 || *name || pid == 0 ||
+        pid > (unsigned long)INT_MAX)
+        return 0;
+    /* A process of the same number may be another program now: kept. */
+    return kill((pid_t)pid, 0) != 0 && errno == ESRCH;
+}
+
+/* Removes, from directory dir, the temporary names beside output base that
+ * processes of this machine left when they were killed (outfile_stale()).
+ * Best effort: what cannot be read or removed stays. */
+static void outfile_sweep(const char *dir, const char *base)
+{
+    unsigned long host = outfile_host();
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int saved = errno;
+
+    if (!d)
+        return;
+    while ((e = readdir(d)) != NULL) {
+        char name[OUTFILE_PATH_MAX];
+        if (outfile_stale(e->d_name, base, host) &&
+            snprintf(name, sizeof name, "%s/%s", dir, e->d_name) < (int)sizeof name)
+            unlink(name);
+    }
+    closedir(d);
+    errno = saved;
 }
 
 /* Returns the permissions a new output file gets: those of the file it
@@ -137,6 +229,31 @@ static int outfile_unnamed(const char *dir, mode_t mode)
 #endif
 }
 
+/* Creates a new file under the first free name outfile_temp_name() gives
+ * and writes that name in out->temp (left empty until then); returns its
+ * descriptor, or -1 with errno set. */
+static int outfile_create_temp(OutFile *out)
+{
+    char name[sizeof out->temp];
+
+    for (unsigned try = 0; try < 100; try++) {
+        int fd;
+        if (outfile_temp_name(out->dir, out->dest, try, name, sizeof name) != 0) {
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        fd = open(name, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        if (fd >= 0) {
+            strcpy(out->temp, name);
+            return fd;
+        }
+        if (errno != EEXIST)
+            return -1;
+    }
+    errno = EEXIST;
+    return -1;
+}
+
 int outfile_open(OutFile *out, const char *path, Error *err)
 {
     char dir[OUTFILE_PATH_MAX];
@@ -173,27 +290,26 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     if (!exists || !realpath(path, out->dest))
         strcpy(out->dest, path);
     outfile_split(out->dest, dir, &base);
-    if (snprintf(out->temp, sizeof out->temp, "%s/.%.200s.XXXXXX", dir, base) >=
-        (int)sizeof out->temp) {
+    if (outfile_temp_name(dir, out->dest, UINT_MAX, out->temp, sizeof out->temp) != 0) {
         error_set(err, path, "output path is too long");
         out->temp[0] = '\0';
         return -1;
     }
+    out->temp[0] = '\0';
     strcpy(out->dir, dir);
+    outfile_sweep(dir, base);
     fd = outfile_unnamed(dir, outfile_mode(&st, exists));
     if (fd >= 0 && (out->fp = outfile_stream(fd)) != NULL) {
         out->fd = fd;
         out->unnamed = 1;
-        out->temp[0] = '\0';
         return 0;
     }
     if (fd >= 0)
         close(fd);
     /* No O_TMPFILE here: a named temporary file beside the output. */
-    fd = mkstemp(out->temp);
+    fd = outfile_create_temp(out);
     if (fd < 0) {
         error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(errno));
-        out->temp[0] = '\0';
         return -1;
     }
     if (fchmod(fd, outfile_mode(&st, exists)) != 0 || !(out->fp = outfile_stream(fd))) {
@@ -256,7 +372,9 @@ static void outfile_sync_dir(const char *dir)
 /* Gives out's unnamed file its name: linked straight to the destination
  * when there is none yet, else linked to a temporary name beside it and
  * renamed over it (rename replaces at once; linkat does not). Returns 0, or
- * -1 with errno set and no name left behind. */
+ * -1 with errno set and no name left behind. A SIGKILL between the link and
+ * the rename leaves the complete file under its temporary name, which the
+ * next render to the same output removes (outfile_sweep()). */
 static int outfile_link(OutFile *out)
 {
     char proc[64];
@@ -266,14 +384,10 @@ static int outfile_link(OutFile *out)
         return 0;
     if (errno != EEXIST)
         return -1;
-    for (int tries = 0; tries < 100; tries++) {
+    for (unsigned try = 0; try < 100; try++) {
         char name[sizeof out->temp];
-        const char *slash = strrchr(out->dest, '/');
         int saved;
-        if (snprintf(name, sizeof name, "%s/.%.200s.%06u", out->dir,
-                     slash ? slash + 1 : out->dest,
-                     ((unsigned)getpid() * 7919u + (unsigned)tries * 104729u) % 1000000u) >=
-            (int)sizeof name) {
+        if (outfile_temp_name(out->dir, out->dest, try, name, sizeof name) != 0) {
             errno = ENAMETOOLONG;
             return -1;
         }

@@ -37,8 +37,8 @@
  * Opens the output like outfile_open(), its temporary file watched from
  * before it exists (base/interrupt.h): an exit from within outfile_open()
  * (a failed allocation in the C library's stream, after the named
- * temporary is made) still finds it; until it is made, the name is a
- * template that names no file. Interrupts are held while the file is
+ * temporary is made) still finds it; until it is made, the name is
+ * empty. Interrupts are held while the file is
  * created, so none can strike between its creation and its watch.
  */
 static int main_open_output(OutFile *out, const char *path, Error *err)
