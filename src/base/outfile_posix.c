@@ -1,6 +1,6 @@
 /* outfile_posix.c: all-or-nothing output files on POSIX systems (see
  * outfile.h). */
-/* POSIX.1-2008 with XSI (mkstemp, fchmod, realpath) and, on Linux, its
+/* POSIX.1-2008 with XSI (fchmod, realpath) and, on Linux, its
  * unnamed files (O_TMPFILE, named through /proc) and glibc's fopencookie;
  * RAYTRACE_STRICT_POSIX leaves Linux's out, as a macOS or BSD build has
  * to (CI builds so). */
@@ -59,6 +59,9 @@ static unsigned long outfile_host(void)
     return h;
 }
 
+/* The most bytes of the output's name a temporary name repeats. */
+#define OUTFILE_BASE_KEPT 200
+
 /* Writes into name (size bytes) the temporary name beside dest, in dir,
  * that this process's attempt number try takes: ".BASE.HOST-PID-TRY", HOST
  * outfile_host() in 8 hex digits. Returns 0, or -1 when it does not fit. */
@@ -67,7 +70,8 @@ static int outfile_temp_name(const char *dir, const char *dest, unsigned try, ch
 {
     const char *slash = strrchr(dest, '/');
 
-    return snprintf(name, size, "%s/.%.200s.%08lx-%ld-%u", dir, slash ? slash + 1 : dest,
+    return snprintf(name, size, "%s/.%.*s.%08lx-%ld-%u", dir, OUTFILE_BASE_KEPT,
+                    slash ? slash + 1 : dest,
                     outfile_host(), (long)getpid(), try) >= (int)size
                ? -1
                : 0;
@@ -93,7 +97,7 @@ static int outfile_parse_number(const char **s, unsigned long *value)
  * that no longer runs. */
 static int outfile_stale(const char *name, const char *base, unsigned long host)
 {
-    size_t n = strlen(base);
+    size_t n = strlen(base) < OUTFILE_BASE_KEPT ? strlen(base) : OUTFILE_BASE_KEPT;
     unsigned long pid, try;
     char hex[9];
 
