@@ -14,11 +14,11 @@
  * choose (base/interrupt.h); a SIGKILL or a killed Windows process leaves
  * it, and on Linux a SIGKILL in the microseconds between an unnamed file's
  * link to a temporary name and its rename over an existing output leaves
- * the complete file under that name. On POSIX systems such names carry the
- * machine and the process, and opening the same output again removes
- * those whose process no longer runs. When even its removal fails, the
- * message names it. "-" means
- * standard output, written in binary mode, and an existing file that is
+ * the complete file under that name. Such names carry the machine and the
+ * process (outfile_temp_name()), and opening the same output again
+ * removes those whose process no longer runs. When even its removal
+ * fails, the message names it. "-" means standard output, written in
+ * binary mode, and an existing file that is
  * not a regular file (a device such as /dev/null or NUL, a FIFO) is
  * written in place, since it cannot be replaced. outfile_posix.c and
  * outfile_win32.c hold the two ways, outfile_shared.c what they share.
@@ -26,6 +26,7 @@
 #ifndef RAYTRACE_OUTFILE_H
 #define RAYTRACE_OUTFILE_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "base/error.h"
@@ -61,6 +62,14 @@ int outfile_open(OutFile *out, const char *path, Error *err);
  * and the temporary file removed (or, if that fails too, named in *err's
  * message). */
 int outfile_commit(OutFile *out, Error *err);
+
+/* Writes into name (size bytes) the temporary name that process pid
+ * takes at attempt try beside the output dest: ".BASE.HOST-PID-TRY" in
+ * dest's directory (BASE dest's name, HOST a hash of this machine's name
+ * in 8 hex digits). outfile_open() removes those of processes of this
+ * machine that no longer run. Returns 0, or -1 when it does not fit. */
+int outfile_temp_name(const char *dest, unsigned long pid, unsigned try, char *name,
+                      size_t size);
 
 /* Abandons the file: closes it and removes the temporary file, leaving any
  * existing output as it was. Returns 0, or -1 when the temporary file

@@ -44,73 +44,32 @@ static void outfile_split(const char *path, char *dir, const char **base)
     }
 }
 
-/* Returns a hash of this machine's name (FNV-1a), which a temporary
- * name carries so that outfile_sweep() judges only its own machine's. */
+/* Returns the hash of this machine's name that temporary names carry, so
+ * that a sweep judges only its own machine's. */
 static unsigned long outfile_host(void)
 {
     char host[256] = "";
-    unsigned long h = 2166136261u;
 
     if (gethostname(host, sizeof host - 1) != 0)
         host[0] = '\0';
     host[sizeof host - 1] = '\0';
-    for (const unsigned char *c = (const unsigned char *)host; *c; c++)
-        h = ((h ^ *c) * 16777619u) & 0xffffffffu;
-    return h;
+    return outfile_hash(host);
 }
 
-/* The most bytes of the output's name a temporary name repeats. */
-#define OUTFILE_BASE_KEPT 200
-
-/* Writes into name (size bytes) the temporary name beside dest, in dir,
- * that this process's attempt number try takes: ".BASE.HOST-PID-TRY", HOST
- * outfile_host() in 8 hex digits. Returns 0, or -1 when it does not fit. */
-static int outfile_temp_name(const char *dir, const char *dest, unsigned try, char *name,
-                             size_t size)
+int outfile_temp_name(const char *dest, unsigned long pid, unsigned try, char *name,
+                      size_t size)
 {
-    const char *slash = strrchr(dest, '/');
-
-    return snprintf(name, size, "%s/.%.*s.%08lx-%ld-%u", dir, OUTFILE_BASE_KEPT,
-                    slash ? slash + 1 : dest,
-                    outfile_host(), (long)getpid(), try) >= (int)size
-               ? -1
-               : 0;
+    return outfile_temp_format(dest, outfile_host(), pid, try, name, size);
 }
 
-/* Reads the decimal number at *s (at least one digit) into *value and moves
- * *s past it; returns 0, or -1 when there is none or it overflows. */
-static int outfile_parse_number(const char **s, unsigned long *value)
+/* Says whether entry, beside the output named base, is a temporary name
+ * a process of this machine (whose outfile_host() is host) left when it
+ * was killed: one that no longer runs. */
+static int outfile_stale(const char *entry, const char *base, unsigned long host)
 {
-    if (**s < '0' || **s > '9')
-        return -1;
-    *value = 0;
-    for (; **s >= '0' && **s <= '9'; (*s)++) {
-        if (*value > (ULONG_MAX - 9) / 10)
-            return -1;
-        *value = *value * 10 + (unsigned long)(**s - '0');
-    }
-    return 0;
-}
+    unsigned long pid;
 
-/* Says whether name, an entry beside the output named base, is a
- * temporary name outfile_temp_name() gave on machine host to a process
- * that no longer runs. */
-static int outfile_stale(const char *name, const char *base, unsigned long host)
-{
-    size_t n = strlen(base) < OUTFILE_BASE_KEPT ? strlen(base) : OUTFILE_BASE_KEPT;
-    unsigned long pid, try;
-    char hex[9];
-
-    if (name[0] != '.' || strncmp(name + 1, base, n) != 0 || name[n + 1] != '.')
-        return 0;
-    name += n + 2;
-    snprintf(hex, sizeof hex, "%08lx", host);
-    if (strncmp(name, hex, 8) != 0 || name[8] != '-')
-        return 0;
-    name += 9;
-    if (outfile_parse_number(&name, &pid) != 0 || *name++ != '-' ||
-        outfile_parse_number(&name, &try) != 0 || *name || pid == 0 ||
-        pid > (unsigned long)INT_MAX)
+    if (!outfile_temp_of(entry, base, host, &pid) || pid == 0 || pid > (unsigned long)INT_MAX)
         return 0;
     /* A process of the same number may be another program now: kept. */
     return kill((pid_t)pid, 0) != 0 && errno == ESRCH;
@@ -242,7 +201,7 @@ static int outfile_create_temp(OutFile *out)
 
     for (unsigned try = 0; try < 100; try++) {
         int fd;
-        if (outfile_temp_name(out->dir, out->dest, try, name, sizeof name) != 0) {
+        if (outfile_temp_name(out->dest, (unsigned long)getpid(), try, name, sizeof name) != 0) {
             errno = ENAMETOOLONG;
             return -1;
         }
@@ -294,7 +253,8 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     if (!exists || !realpath(path, out->dest))
         strcpy(out->dest, path);
     outfile_split(out->dest, dir, &base);
-    if (outfile_temp_name(dir, out->dest, UINT_MAX, out->temp, sizeof out->temp) != 0) {
+    if (outfile_temp_name(out->dest, (unsigned long)INT_MAX, UINT_MAX, out->temp,
+                          sizeof out->temp) != 0) {
         error_set(err, path, "output path is too long");
         out->temp[0] = '\0';
         return -1;
@@ -391,7 +351,7 @@ static int outfile_link(OutFile *out)
     for (unsigned try = 0; try < 100; try++) {
         char name[sizeof out->temp];
         int saved;
-        if (outfile_temp_name(out->dir, out->dest, try, name, sizeof name) != 0) {
+        if (outfile_temp_name(out->dest, (unsigned long)getpid(), try, name, sizeof name) != 0) {
             errno = ENAMETOOLONG;
             return -1;
         }

@@ -4,10 +4,67 @@
 #include "outfile_sys.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "base/file.h"
+#include "base/path.h"
+
+/* The most bytes of the output's name a temporary name repeats. */
+#define OUTFILE_BASE_KEPT 200
+
+unsigned long outfile_hash(const char *s)
+{
+    unsigned long h = 2166136261u;
+
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++)
+        h = ((h ^ *c) * 16777619u) & 0xffffffffu;
+    return h;
+}
+
+int outfile_temp_format(const char *dest, unsigned long host, unsigned long pid, unsigned try,
+                        char *name, size_t size)
+{
+    size_t dir = path_dir_length(dest);
+
+    return snprintf(name, size, "%.*s.%.*s.%08lx-%lu-%u", (int)dir, dest, OUTFILE_BASE_KEPT,
+                    dest + dir, host, pid, try) >= (int)size
+               ? -1
+               : 0;
+}
+
+/* Reads the decimal number at *s (at least one digit) into *value and moves
+ * *s past it; returns 0, or -1 when there is none or it overflows. */
+static int outfile_parse_number(const char **s, unsigned long *value)
+{
+    if (**s < '0' || **s > '9')
+        return -1;
+    *value = 0;
+    for (; **s >= '0' && **s <= '9'; (*s)++) {
+        if (*value > (ULONG_MAX - 9) / 10)
+            return -1;
+        *value = *value * 10 + (unsigned long)(**s - '0');
+    }
+    return 0;
+}
+
+int outfile_temp_of(const char *entry, const char *base, unsigned long host, unsigned long *pid)
+{
+    size_t n = strlen(base) < OUTFILE_BASE_KEPT ? strlen(base) : OUTFILE_BASE_KEPT;
+    unsigned long try;
+    char hex[9];
+
+    if (entry[0] != '.' || strncmp(entry + 1, base, n) != 0 || entry[n + 1] != '.')
+        return 0;
+    entry += n + 2;
+    snprintf(hex, sizeof hex, "%08lx", host);
+    if (strncmp(entry, hex, 8) != 0 || entry[8] != '-')
+        return 0;
+    entry += 9;
+    return outfile_parse_number(&entry, pid) == 0 && *entry++ == '-' &&
+           outfile_parse_number(&entry, &try) == 0 && *entry == '\0';
+}
 
 int outfile_remove_temp(OutFile *out, Error *err)
 {

@@ -13,6 +13,20 @@
  * delete it. Returns 0, or -1 when the file stays. */
 int outfile_remove_temp(OutFile *out, Error *err);
 
+/* Returns the FNV-1a hash, 32 bits, of the string s (each system's
+ * outfile_temp_name() hashes the machine's name with it). */
+unsigned long outfile_hash(const char *s);
+
+/* outfile_temp_name() for the machine whose name's outfile_hash() is
+ * host. */
+int outfile_temp_format(const char *dest, unsigned long host, unsigned long pid, unsigned try,
+                        char *name, size_t size);
+
+/* Says whether entry, a name in an output's directory, is a temporary
+ * name outfile_temp_format() gives beside the output named base on the
+ * machine host; then stores its process in *pid. */
+int outfile_temp_of(const char *entry, const char *base, unsigned long host, unsigned long *pid);
+
 /* Says in *err that writing out failed (errno value saved, 0: EIO) and
  * removes its temporary file; returns -1. */
 int outfile_failed(OutFile *out, int saved, Error *err);

@@ -1,7 +1,8 @@
 /* outfile_win32.c: all-or-nothing output files on Windows (see outfile.h):
  * a temporary file beside the output, shared for deletion so that an
  * interrupt can remove it while it is open, flushed to the disk, then
- * moved over the output by MoveFileEx's replace. */
+ * moved over the output by MoveFileEx's replace; the names a killed
+ * process left beside an output are removed when it is opened again. */
 #include "outfile_sys.h"
 
 #include <errno.h>
@@ -48,20 +49,81 @@ static void outfile_dir(const char *path, char *dir)
     dir[n] = '\0';
 }
 
-/* Creates out->temp, a new file in dir named after base; returns its
- * handle, or INVALID_HANDLE_VALUE with GetLastError() saying why. */
-static HANDLE outfile_create_temp(OutFile *out, const char *dir, const char *base)
+/* Returns the hash of this machine's name that temporary names carry, so
+ * that a sweep judges only its own machine's. */
+static unsigned long outfile_host(void)
 {
-    static unsigned counter;
-    const char *sep = path_dir_length(dir) == strlen(dir) ? "" : "\\";
+    char host[MAX_COMPUTERNAME_LENGTH + 1] = "";
+    DWORD size = sizeof host;
 
-    for (int tries = 0; tries < 100; tries++) {
-        unsigned salt = (unsigned)GetCurrentProcessId() * 7919u + (unsigned)GetTickCount() +
-                        ++counter * 104729u;
+    if (!GetComputerNameA(host, &size))
+        host[0] = '\0';
+    return outfile_hash(host);
+}
+
+int outfile_temp_name(const char *dest, unsigned long pid, unsigned try, char *name,
+                      size_t size)
+{
+    return outfile_temp_format(dest, outfile_host(), pid, try, name, size);
+}
+
+/* Says whether process pid no longer runs (the system knows no such
+ * process, or it has ended). */
+static int outfile_gone(unsigned long pid)
+{
+    HANDLE h = OpenProcess(PROCESS_QUERY_LIMITED_INFORMATION, FALSE, (DWORD)pid);
+    DWORD code;
+    int gone;
+
+    if (!h)
+        return GetLastError() == ERROR_INVALID_PARAMETER;
+    gone = GetExitCodeProcess(h, &code) && code != STILL_ACTIVE;
+    CloseHandle(h);
+    return gone;
+}
+
+/* Removes, from folder dir, the temporary names beside output base that
+ * processes of this machine left when they were killed (those that no
+ * longer run). Best effort: what cannot be read or removed stays. */
+static void outfile_sweep(const char *dir, const char *base)
+{
+    unsigned long host = outfile_host(), pid;
+    const char *sep = path_dir_length(dir) == strlen(dir) ? "" : "\\";
+    char pattern[OUTFILE_PATH_MAX];
+    WIN32_FIND_DATAW found;
+    wchar_t *w;
+    HANDLE find;
+
+    if (snprintf(pattern, sizeof pattern, "%s%s.*", dir, sep) >= (int)sizeof pattern ||
+        !(w = wide_from_utf8(pattern)))
+        return;
+    find = FindFirstFileW(w, &found);
+    free(w);
+    if (find == INVALID_HANDLE_VALUE)
+        return;
+    do {
+        char *entry = wide_to_utf8(found.cFileName), name[OUTFILE_PATH_MAX];
+        if (entry && outfile_temp_of(entry, base, host, &pid) && pid != 0 && outfile_gone(pid) &&
+            snprintf(name, sizeof name, "%s%s%s", dir, sep, entry) < (int)sizeof name &&
+            (w = wide_from_utf8(name)) != NULL) {
+            DeleteFileW(w);
+            free(w);
+        }
+        free(entry);
+    } while (FindNextFileW(find, &found));
+    FindClose(find);
+}
+
+/* Creates out->temp, a new file beside out->dest (outfile_temp_name());
+ * returns its handle, or INVALID_HANDLE_VALUE with GetLastError() saying
+ * why. */
+static HANDLE outfile_create_temp(OutFile *out)
+{
+    for (unsigned try = 0; try < 100; try++) {
         wchar_t *w;
         HANDLE h;
-        if (snprintf(out->temp, sizeof out->temp, "%s%s.%.200s.%06u", dir, sep, base,
-                     salt % 1000000u) >= (int)sizeof out->temp) {
+        if (outfile_temp_name(out->dest, GetCurrentProcessId(), try, out->temp,
+                              sizeof out->temp) != 0) {
             SetLastError(ERROR_FILENAME_EXCED_RANGE);
             break;
         }
@@ -133,7 +195,8 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     strcpy(out->dest, path);
     outfile_dir(path, dir);
     strcpy(out->dir, dir);
-    h = outfile_create_temp(out, dir, path + path_dir_length(path));
+    outfile_sweep(dir, path + path_dir_length(path));
+    h = outfile_create_temp(out);
     if (h == INVALID_HANDLE_VALUE) {
         wide_errno(GetLastError());
         error_set(err, path, "cannot create a file in directory '%s': %s", dir, strerror(errno));
