@@ -70,8 +70,7 @@ while [ $i -lt $moments ]; do
     # rename leaves the whole new image under that name; the next render to
     # out.ppm removes it (section 6 makes that moment on purpose).
     hidden=$(ls -A "$T/o" | grep '^\.out\.ppm\.[0-9a-f]\{8\}-[0-9]*-[0-9]*$')
-    if [ -n "$hidden" ] && [ "$(echo "$hidden" | wc -l)" = 1 ] &&
-        cmp -s "$T/o/$hidden" "$T/whole.ppm"; then
+    if [ -n "$hidden" ] && cmp -s "$T/o/$hidden" "$T/whole.ppm"; then
         "$RT" -q "$T/field.txt" "$T/o/out.ppm" 2>/dev/null
         left=$(ls -A "$T/o")
         committing=$((committing + 1))

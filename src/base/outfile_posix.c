@@ -69,7 +69,7 @@ static int outfile_stale(const char *entry, const char *base, unsigned long host
 {
     unsigned long pid;
 
-    if (!outfile_temp_of(entry, base, host, &pid) || pid == 0 || pid > (unsigned long)INT_MAX)
+    if (!outfile_temp_of(entry, base, host, &pid) || pid > (unsigned long)INT_MAX)
         return 0;
     /* A process of the same number may be another program now: kept. */
     return kill((pid_t)pid, 0) != 0 && errno == ESRCH;
@@ -83,7 +83,6 @@ static void outfile_sweep(const char *dir, const char *base)
     unsigned long host = outfile_host();
     DIR *d = opendir(dir);
     struct dirent *e;
-    int saved = errno;
 
     if (!d)
         return;
@@ -94,7 +93,6 @@ static void outfile_sweep(const char *dir, const char *base)
             unlink(name);
     }
     closedir(d);
-    errno = saved;
 }
 
 /* Returns the permissions a new output file gets: those of the file it
@@ -222,7 +220,7 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     char dir[OUTFILE_PATH_MAX];
     const char *base;
     struct stat st;
-    int exists, fd;
+    int exists, fd, too_long;
 
     memset(out, 0, sizeof *out);
     out->fd = -1;
@@ -253,13 +251,14 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     if (!exists || !realpath(path, out->dest))
         strcpy(out->dest, path);
     outfile_split(out->dest, dir, &base);
-    if (outfile_temp_name(out->dest, (unsigned long)INT_MAX, UINT_MAX, out->temp,
-                          sizeof out->temp) != 0) {
+    /* The longest name a try could take must fit; none is made yet. */
+    too_long = outfile_temp_name(out->dest, (unsigned long)INT_MAX, UINT_MAX, out->temp,
+                                 sizeof out->temp) != 0;
+    out->temp[0] = '\0';
+    if (too_long) {
         error_set(err, path, "output path is too long");
-        out->temp[0] = '\0';
         return -1;
     }
-    out->temp[0] = '\0';
     strcpy(out->dir, dir);
     outfile_sweep(dir, base);
     fd = outfile_unnamed(dir, outfile_mode(&st, exists));

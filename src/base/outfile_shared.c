@@ -62,7 +62,7 @@ int outfile_temp_of(const char *entry, const char *base, unsigned long host, uns
     if (strncmp(entry, hex, 8) != 0 || entry[8] != '-')
         return 0;
     entry += 9;
-    return outfile_parse_number(&entry, pid) == 0 && *entry++ == '-' &&
+    return outfile_parse_number(&entry, pid) == 0 && *pid != 0 && *entry++ == '-' &&
            outfile_parse_number(&entry, &try) == 0 && *entry == '\0';
 }
 

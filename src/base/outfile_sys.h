@@ -24,7 +24,7 @@ int outfile_temp_format(const char *dest, unsigned long host, unsigned long pid,
 
 /* Says whether entry, a name in an output's directory, is a temporary
  * name outfile_temp_format() gives beside the output named base on the
- * machine host; then stores its process in *pid. */
+ * machine host; then stores its process in *pid (never 0). */
 int outfile_temp_of(const char *entry, const char *base, unsigned long host, unsigned long *pid);
 
 /* Says in *err that writing out failed (errno value saved, 0: EIO) and

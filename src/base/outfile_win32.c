@@ -103,7 +103,7 @@ static void outfile_sweep(const char *dir, const char *base)
         return;
     do {
         char *entry = wide_to_utf8(found.cFileName), name[OUTFILE_PATH_MAX];
-        if (entry && outfile_temp_of(entry, base, host, &pid) && pid != 0 && outfile_gone(pid) &&
+        if (entry && outfile_temp_of(entry, base, host, &pid) && outfile_gone(pid) &&
             snprintf(name, sizeof name, "%s%s%s", dir, sep, entry) < (int)sizeof name &&
             (w = wide_from_utf8(name)) != NULL) {
             DeleteFileW(w);
