@@ -25,25 +25,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* Splits path into its directory (or "." if none) in dir and its last
- * component in base. */
-static void outfile_split(const char *path, char *dir, const char **base)
-{
-    const char *slash = strrchr(path, '/');
-
-    if (!slash) {
-        strcpy(dir, ".");
-        *base = path;
-    } else if (slash == path) {
-        strcpy(dir, "/");
-        *base = slash + 1;
-    } else {
-        memcpy(dir, path, (size_t)(slash - path));
-        dir[slash - path] = '\0';
-        *base = slash + 1;
-    }
-}
-
 /* Returns the hash of this machine's name that temporary names carry, so
  * that a sweep judges only its own machine's. */
 static unsigned long outfile_host(void)
@@ -220,20 +201,10 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     char dir[OUTFILE_PATH_MAX];
     const char *base;
     struct stat st;
-    int exists, fd, too_long;
+    int exists, fd, too_long, rc = outfile_start(out, path, err);
 
-    memset(out, 0, sizeof *out);
-    out->fd = -1;
-    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
-        error_set(err, path, "output path is too long");
-        return -1;
-    }
-    strcpy(out->path, path);
-    if (strcmp(path, "-") == 0) {
-        out->fp = stdout;
-        out->is_stdout = 1;
-        return 0;
-    }
+    if (rc != 0)
+        return rc < 0 ? -1 : 0;
     exists = stat(path, &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) {
         error_set(err, path, "cannot write the image: it is a directory");
@@ -250,7 +221,7 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     /* Write through a symbolic link rather than replace it. */
     if (!exists || !realpath(path, out->dest))
         strcpy(out->dest, path);
-    outfile_split(out->dest, dir, &base);
+    base = out->dest + outfile_folder(out->dest, dir);
     /* The longest name a try could take must fit; none is made yet. */
     too_long = outfile_temp_name(out->dest, (unsigned long)INT_MAX, UINT_MAX, out->temp,
                                  sizeof out->temp) != 0;
@@ -288,7 +259,6 @@ int outfile_open(OutFile *out, const char *path, Error *err)
 int outfile_check(const char *path, Error *err)
 {
     char dest[OUTFILE_PATH_MAX], dir[OUTFILE_PATH_MAX];
-    const char *base;
     struct stat st;
     int exists, saved;
 
@@ -307,7 +277,7 @@ int outfile_check(const char *path, Error *err)
         return 0; /* a device or a FIFO, written in place */
     if (!exists || !realpath(path, dest))
         strcpy(dest, path);
-    outfile_split(dest, dir, &base);
+    outfile_folder(dest, dir);
     if (stat(dir, &st) != 0)
         saved = errno;
     else if (!S_ISDIR(st.st_mode))

@@ -34,6 +34,37 @@ int outfile_temp_format(const char *dest, unsigned long host, unsigned long pid,
                : 0;
 }
 
+int outfile_start(OutFile *out, const char *path, Error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->fd = -1;
+    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
+        error_set(err, path, "output path is too long");
+        return -1;
+    }
+    strcpy(out->path, path);
+    if (strcmp(path, "-") != 0)
+        return 0;
+    out->fp = stdout;
+    out->is_stdout = 1;
+    return 1;
+}
+
+size_t outfile_folder(const char *path, char *dir)
+{
+    size_t name = path_dir_length(path), n = name;
+
+    if (n == 0) {
+        strcpy(dir, ".");
+        return 0;
+    }
+    if (n > path_root_length(path) && path_is_separator(path[n - 1]))
+        n--;
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+    return name;
+}
+
 /* Reads the decimal number at *s (at least one digit) into *value and moves
  * *s past it; returns 0, or -1 when there is none or it overflows. */
 static int outfile_parse_number(const char **s, unsigned long *value)

@@ -27,6 +27,17 @@ int outfile_temp_format(const char *dest, unsigned long host, unsigned long pid,
  * machine host; then stores its process in *pid (never 0). */
 int outfile_temp_of(const char *entry, const char *base, unsigned long host, unsigned long *pid);
 
+/* Starts *out for path, as both systems' outfile_open() do: cleared, the
+ * name kept, standard output for "-". Returns 1 for "-", 0 to go on, -1
+ * (with err) when path is too long. */
+int outfile_start(OutFile *out, const char *path, Error *err);
+
+/* Copies into dir (OUTFILE_PATH_MAX bytes) the folder path lies in, as
+ * messages name it: path's folder part without its last separator (a
+ * root keeps its own), or "." when path has none; returns where path's
+ * own name starts (path_dir_length()). path is shorter than dir. */
+size_t outfile_folder(const char *path, char *dir);
+
 /* Says in *err that writing out failed (errno value saved, 0: EIO) and
  * removes its temporary file; returns -1. */
 int outfile_failed(OutFile *out, int saved, Error *err);

@@ -36,19 +36,6 @@ static OutfileKind outfile_kind(const wchar_t *path)
     return type == FILE_TYPE_DISK ? OUTFILE_DISK : OUTFILE_DEVICE;
 }
 
-/* Copies path's folder into dir ("." when it has none). */
-static void outfile_dir(const char *path, char *dir)
-{
-    size_t n = path_dir_length(path);
-
-    if (n == 0) {
-        strcpy(dir, ".");
-        return;
-    }
-    memcpy(dir, path, n);
-    dir[n] = '\0';
-}
-
 /* Returns the hash of this machine's name that temporary names carry, so
  * that a sweep judges only its own machine's. */
 static unsigned long outfile_host(void)
@@ -162,21 +149,15 @@ static int outfile_in_place(OutFile *out, const char *path, Error *err)
 int outfile_open(OutFile *out, const char *path, Error *err)
 {
     char dir[OUTFILE_PATH_MAX];
+    size_t base;
     wchar_t *w;
     OutfileKind kind;
     HANDLE h;
-    int fd;
+    int fd, rc = outfile_start(out, path, err);
 
-    memset(out, 0, sizeof *out);
-    out->fd = -1;
-    if (strlen(path) >= OUTFILE_PATH_MAX - 32) {
-        error_set(err, path, "output path is too long");
+    if (rc < 0)
         return -1;
-    }
-    strcpy(out->path, path);
-    if (strcmp(path, "-") == 0) {
-        out->fp = stdout;
-        out->is_stdout = 1;
+    if (rc > 0) {
         _setmode(_fileno(stdout), _O_BINARY);
         return 0;
     }
@@ -193,9 +174,9 @@ int outfile_open(OutFile *out, const char *path, Error *err)
     if (kind == OUTFILE_DEVICE)
         return outfile_in_place(out, path, err);
     strcpy(out->dest, path);
-    outfile_dir(path, dir);
+    base = outfile_folder(path, dir);
     strcpy(out->dir, dir);
-    outfile_sweep(dir, path + path_dir_length(path));
+    outfile_sweep(dir, path + base);
     h = outfile_create_temp(out);
     if (h == INVALID_HANDLE_VALUE) {
         wide_errno(GetLastError());
@@ -242,7 +223,7 @@ int outfile_check(const char *path, Error *err)
     default:
         free(w);
     }
-    outfile_dir(path, dir);
+    outfile_folder(path, dir);
     w = wide_from_utf8(dir);
     attrs = w ? GetFileAttributesW(w) : INVALID_FILE_ATTRIBUTES;
     free(w);
