@@ -394,53 +394,90 @@ static void bvh_queries_equal_the_loops(void)
     CHECK_INT(0, differ);
 }
 
-/* A scene without transparency has its spheres moved into the hierarchy's
- * order when it is built: each keeps its place among the objects, and the
- * queries answer as the loops over the spheres in the file's order do, to
- * the bit, exact ties included (the hit compared by its place among the
- * objects: its index changed). */
-static void bvh_renumbered_spheres_answer_as_in_file_order(void)
+/* Adds n random spheres of scale s to an empty scene with one light, a
+ * tenth of them twice (exact ties). */
+static void random_spheres_of(Scene *sc, int n, double s)
 {
-    Scene sc, file;
-    uint64_t seed = rng_state;
-    int differ = 0, hits = 0, moved = 0;
-    unsigned char *seen;
+    Light light = light_point(vec3(0, 10 * s, 0), colour(255, 255, 255));
+    Material m = material_plain(colour(100, 100, 100), 0);
 
-    random_scene_of(&sc, 3000, 1, 0);
-    rng_state = seed;
-    random_scene_of(&file, 3000, 1, 0); /* the same scene again */
-    CHECK(!sc.has_transparency);
-    CHECK_INT(0, scene_build_accel(&sc, 2));
-    CHECK(sc.accel != NULL);
-    seen = calloc(scene_count_of(&file, SHAPE_SPHERE), 1);
-    for (size_t i = 0; i < scene_count_of(&sc, SHAPE_SPHERE) && seen; i++) {
-        const Sphere *s = &scene_spheres(&sc)[i];
+    scene_init(sc);
+    CHECK_INT(0, scene_add_light(sc, &light));
+    for (int i = 0; i < n; i++) {
+        Vec3 c = vec3_scale(rng_unit_vector(), s * rng_uniform());
+        double r = s * 0.05 * rng_log_scale(-1, 0);
+        CHECK_INT(0, scene_add_sphere(sc, c, r, &m));
+        if (i % 10 == 0)
+            CHECK_INT(0, scene_add_sphere(sc, c, r, &m));
+    }
+}
+
+/* Checks that sc, whose hierarchy moved its spheres, holds file's spheres
+ * (the same scene, unbuilt) each once, with their places among the
+ * objects, and that its queries answer as the loops over file's do. */
+static void renumbered_answers_as_file(Scene *sc, Scene *file)
+{
+    int differ = 0, hits = 0, moved = 0;
+    unsigned char *seen = calloc(scene_count_of(file, SHAPE_SPHERE), 1);
+
+    for (size_t i = 0; i < scene_count_of(sc, SHAPE_SPHERE) && seen; i++) {
+        const Sphere *s = &scene_spheres(sc)[i];
         size_t k = 0; /* the file's sphere of the same place among the objects */
-        while (k < scene_count_of(&file, SHAPE_SPHERE) && scene_spheres(&file)[k].order != s->order)
+        while (k < scene_count_of(file, SHAPE_SPHERE) && scene_spheres(file)[k].order != s->order)
             k++;
-        moved += s->order != scene_spheres(&file)[i].order;
-        if (k == scene_count_of(&file, SHAPE_SPHERE) || seen[k]++ ||
-            memcmp(&s->centre, &scene_spheres(&file)[k].centre, sizeof s->centre) != 0 ||
-            s->radius != scene_spheres(&file)[k].radius)
+        moved += s->order != scene_spheres(file)[i].order;
+        if (k == scene_count_of(file, SHAPE_SPHERE) || seen[k]++ ||
+            memcmp(&s->centre, &scene_spheres(file)[k].centre, sizeof s->centre) != 0 ||
+            s->radius != scene_spheres(file)[k].radius)
             differ++;
     }
     free(seen);
     CHECK(moved > 1000);
-    for (int i = 0; i < 4000 && sc.accel; i++) {
+    for (int i = 0; i < 4000 && sc->accel; i++) {
         Vec3 o = vec3_scale(rng_unit_vector(), i % 2 ? 3 : 0.5);
         Ray ray = {o, vec3_sub(vec3_scale(rng_unit_vector(), rng_uniform()), o)};
         Ray seg = {o, vec3_scale(ray.dir, rng_range(0.2, 2))};
         Hit a, b;
-        int fa = visibility_nearest(&file, &ray, INFINITY, &a);
-        int fb = visibility_nearest(&sc, &ray, INFINITY, &b);
+        int fa = visibility_nearest(file, &ray, INFINITY, &a);
+        int fb = visibility_nearest(sc, &ray, INFINITY, &b);
         differ += fa != fb || (fa && (a.t != b.t || a.kind != b.kind || a.order != b.order)) ||
-                  visibility_occluded(&file, &seg, 1) != visibility_occluded(&sc, &seg, 1);
+                  visibility_occluded(file, &seg, 1) != visibility_occluded(sc, &seg, 1);
         hits += fa;
     }
     CHECK(hits > 2000);
     CHECK_INT(0, differ);
-    scene_free(&sc);
-    scene_free(&file);
+}
+
+/* A scene without transparency has its spheres moved into the hierarchy's
+ * order when it is built: each keeps its place among the objects, and the
+ * queries answer as the loops over the spheres in the file's order do, to
+ * the bit, exact ties included (the hit compared by its place among the
+ * objects: its index changed). Spheres alone, the hierarchy then gives
+ * its references back (slot k holds sphere k); beside triangles, it keeps
+ * them. */
+static void bvh_renumbered_spheres_answer_as_in_file_order(void)
+{
+    for (int alone = 0; alone < 2; alone++) {
+        Scene sc, file;
+        uint64_t seed = rng_state;
+
+        if (alone)
+            random_spheres_of(&sc, 3000, 1);
+        else
+            random_scene_of(&sc, 3000, 1, 0);
+        rng_state = seed;
+        if (alone) /* the same scene again */
+            random_spheres_of(&file, 3000, 1);
+        else
+            random_scene_of(&file, 3000, 1, 0);
+        CHECK(!sc.has_transparency);
+        CHECK_INT(0, scene_build_accel(&sc, 2));
+        CHECK(sc.accel != NULL);
+        CHECK(sc.accel && (sc.accel->prims == NULL) == alone);
+        renumbered_answers_as_file(&sc, &file);
+        scene_free(&sc);
+        scene_free(&file);
+    }
 }
 
 /* The box tests run in floats in a frame of the scene's size: scenes at

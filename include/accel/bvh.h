@@ -141,7 +141,9 @@ typedef struct Bvh {
     BvhShapes shapes;    /* what it was built over */
     BvhNode *nodes;      /* the root first */
     size_t node_count;
-    uint32_t *prims;     /* primitive references, grouped by leaf */
+    uint32_t *prims;     /* primitive references, grouped by leaf; NULL
+                            when every primitive is the sphere of its
+                            slot (bvh_renumber_spheres()): bvh_prim_ref() */
     size_t prim_count;
     int depth;           /* deepest node, the root at 0 */
     double centre[3];    /* the frame: a node's box coordinate is that of */
@@ -151,6 +153,12 @@ typedef struct Bvh {
                             (bvh_query.h): bvh_build() sets it when the
                             processor has them; 0 runs the other */
 } Bvh;
+
+/* Returns the reference of the primitive at slot k of bvh's leaves. */
+static inline uint32_t bvh_prim_ref(const Bvh *bvh, size_t k)
+{
+    return bvh->prims ? bvh->prims[k] : bvh_ref(BVH_SPHERE, k);
+}
 
 /* Builds the hierarchy of shapes' bounded shapes into *bvh in
  * O(n log n), with up to threads threads (in OpenMP builds; the hierarchy
@@ -165,8 +173,9 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
  * changed), into the order the hierarchy's leaves hold them in, and
  * renumbers its references to match: queries then read neighbouring
  * spheres from neighbouring memory, and answer as before (each sphere
- * keeps its order, which settles ties). Returns 0, or -1 (nothing moved)
- * when memory runs out. */
+ * keeps its order, which settles ties). A hierarchy of spheres alone then
+ * gives its references back (each slot's sphere is the one of that
+ * index). Returns 0, or -1 (nothing moved) when memory runs out. */
 int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres);
 
 /* Releases what *bvh owns. */

@@ -221,6 +221,10 @@ int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
     free(from);
     free(done);
     bvh->shapes.spheres = spheres;
+    if (n == bvh->prim_count) { /* slot k holds sphere k */
+        free(bvh->prims);
+        bvh->prims = NULL;
+    }
     return 0;
 }
 
@@ -255,7 +259,8 @@ size_t bvh_build_scratch(size_t n)
 
 size_t bvh_memory(const Bvh *bvh)
 {
-    return bvh->node_count * sizeof *bvh->nodes + bvh->prim_count * sizeof *bvh->prims;
+    return bvh->node_count * sizeof *bvh->nodes +
+           (bvh->prims ? bvh->prim_count * sizeof *bvh->prims : 0);
 }
 
 void bvh_free(Bvh *bvh)

@@ -314,12 +314,12 @@ static float bvh_cull(const BvhRay *r, float limit)
 #endif
 }
 
-/* Tests the primitive bvh->prims[k] for a crossing at tmin < t < tmax;
+/* Tests the primitive at slot k for a crossing at tmin < t < tmax;
  * returns 1 with *t. */
 static inline int bvh_prim_hit(const Bvh *bvh, uint32_t k, const Ray *ray,
                                real tmin, real tmax, real *t)
 {
-    uint32_t ref = bvh->prims[k];
+    uint32_t ref = bvh_prim_ref(bvh, k);
     unsigned kind = bvh_kind(ref);
 
     if (kind == BVH_SPHERE) {
@@ -429,7 +429,7 @@ int BVH_QUERY(bvh_nearest)(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hi
                 break;
             }
             for (uint32_t k = first; k < first + count; k++) {
-                uint32_t ref = bvh->prims[k];
+                uint32_t ref = bvh_prim_ref(bvh, k);
                 real t;
                 if (!bvh_prim_hit(bvh, k, ray, 0, bound, &t))
                     continue;
@@ -520,7 +520,7 @@ int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count)) {
         for (uint32_t k = first; k < first + count; k++) {
-            uint32_t ref = bvh->prims[k];
+            uint32_t ref = bvh_prim_ref(bvh, k);
             size_t i = bvh_index(ref);
             int c, rc;
             switch (bvh_kind(ref)) {

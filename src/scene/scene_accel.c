@@ -45,12 +45,13 @@ size_t scene_bounded_count(const Scene *scene)
 
 enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
 
-/* Returns the bytes each of `buffers` light buffers may take: a share of
+/* Returns the bytes one of `buffers` light buffers may take: a share of
  * what the hierarchy's build held and gave back (so that they do not raise
- * the peak), or SCENE_BUFFER_FLOOR if more, within the memory limit. */
-static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
+ * the peak) and `more`, or SCENE_BUFFER_FLOOR if more, within the memory
+ * limit. */
+static size_t scene_buffer_budget(const Scene *scene, size_t buffers, size_t more)
 {
-    size_t share = bvh_build_scratch(scene_bounded_count(scene)) / buffers;
+    size_t share = bvh_build_scratch(scene_bounded_count(scene)) / buffers + more;
     size_t left = scene_memory_left(scene);
 
     share = share > SCENE_BUFFER_FLOOR ? share : SCENE_BUFFER_FLOOR;
@@ -66,7 +67,7 @@ static size_t scene_buffer_budget(const Scene *scene, size_t buffers)
  * the same. */
 static void scene_build_buffers(Scene *scene, int threads)
 {
-    size_t buffers = 0;
+    size_t buffers = 0, lights = 0, given = 0;
     size_t pixels = (size_t)scene->camera.width * (size_t)scene->camera.height;
 
     /* A buffer's build reads every sphere five times; the rays it saves
@@ -75,11 +76,17 @@ static void scene_build_buffers(Scene *scene, int threads)
      * (docs/log.md). */
     if (scene->kinds != 1u << SHAPE_SPHERE || pixels / 2 < scene_count_of(scene, SHAPE_SPHERE))
         return;
-    buffers += scene->camera.aperture == 0;
     for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)
-        buffers += !scene->lights[i].distant;
+        lights += !scene->lights[i].distant;
+    buffers = lights + (scene->camera.aperture == 0);
     if (buffers == 0)
         return;
+    /* The references the hierarchy gave back (spheres alone) go to the
+     * lights' buffers: a shadow query walks its list up to the lit point,
+     * a primary one stops at its first hit (10^6 spheres: 33 entries a
+     * shadow query, 14 a primary one; docs/log.md). */
+    if (lights > 0 && !scene->accel->prims)
+        given = scene->accel->prim_count * sizeof(uint32_t) / lights;
     /* Each budget is taken when its buffer is built: the memory left
      * shrinks with every buffer. */
     if (scene->camera.aperture == 0) {
@@ -87,7 +94,7 @@ static void scene_build_buffers(Scene *scene, int threads)
         if (scene->eye_buffer &&
             light_buffer_build(scene->eye_buffer, scene->camera.eye, scene_spheres(scene),
                                scene_count_of(scene, SHAPE_SPHERE), pixels,
-                               scene_buffer_budget(scene, buffers), threads) != 0) {
+                               scene_buffer_budget(scene, buffers, 0), threads) != 0) {
             free(scene->eye_buffer);
             scene->eye_buffer = NULL;
         }
@@ -99,7 +106,8 @@ static void scene_build_buffers(Scene *scene, int threads)
         if (!scene->lights[i].distant)
             (void)light_buffer_build(&scene->light_buffers[i], scene->lights[i].position,
                                      scene_spheres(scene), scene_count_of(scene, SHAPE_SPHERE),
-                                     pixels, scene_buffer_budget(scene, buffers), threads);
+                                     pixels, scene_buffer_budget(scene, buffers, given),
+                                     threads);
 }
 
 int scene_build_accel(Scene *scene, int threads)
