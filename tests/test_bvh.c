@@ -418,20 +418,29 @@ static void random_spheres_of(Scene *sc, int n, double s)
 static void renumbered_answers_as_file(Scene *sc, Scene *file)
 {
     int differ = 0, hits = 0, moved = 0;
-    unsigned char *seen = calloc(scene_count_of(file, SHAPE_SPHERE), 1);
+    size_t n = scene_count_of(file, SHAPE_SPHERE), places = 0;
+    unsigned char *seen = calloc(n, 1);
+    size_t *at; /* at[p]: the file's sphere whose place among the objects is p */
 
-    for (size_t i = 0; i < scene_count_of(sc, SHAPE_SPHERE) && seen; i++) {
+    for (size_t k = 0; k < n; k++)
+        places = scene_spheres(file)[k].order >= places ? scene_spheres(file)[k].order + 1 : places;
+    at = malloc(places * sizeof *at);
+    for (size_t p = 0; at && p < places; p++)
+        at[p] = n;
+    for (size_t k = 0; at && k < n; k++)
+        at[scene_spheres(file)[k].order] = k;
+    for (size_t i = 0; i < scene_count_of(sc, SHAPE_SPHERE) && seen && at; i++) {
         const Sphere *s = &scene_spheres(sc)[i];
-        size_t k = 0; /* the file's sphere of the same place among the objects */
-        while (k < scene_count_of(file, SHAPE_SPHERE) && scene_spheres(file)[k].order != s->order)
-            k++;
+        size_t k = s->order < places ? at[s->order] : n;
         moved += s->order != scene_spheres(file)[i].order;
-        if (k == scene_count_of(file, SHAPE_SPHERE) || seen[k]++ ||
+        if (k == n || seen[k]++ ||
             memcmp(&s->centre, &scene_spheres(file)[k].centre, sizeof s->centre) != 0 ||
             s->radius != scene_spheres(file)[k].radius)
             differ++;
     }
+    CHECK(seen && at);
     free(seen);
+    free(at);
     CHECK(moved > 1000);
     for (int i = 0; i < 4000 && sc->accel; i++) {
         Vec3 o = vec3_scale(rng_unit_vector(), i % 2 ? 3 : 0.5);
@@ -457,19 +466,22 @@ static void renumbered_answers_as_file(Scene *sc, Scene *file)
  * them. */
 static void bvh_renumbered_spheres_answer_as_in_file_order(void)
 {
-    for (int alone = 0; alone < 2; alone++) {
+    /* Beside triangles; alone; alone and enough for both threads to move
+     * them (bvh_move_spheres()). */
+    for (int run = 0; run < 3; run++) {
         Scene sc, file;
         uint64_t seed = rng_state;
+        int alone = run > 0, n = run == 2 ? 40000 : 3000;
 
         if (alone)
-            random_spheres_of(&sc, 3000, 1);
+            random_spheres_of(&sc, n, 1);
         else
-            random_scene_of(&sc, 3000, 1, 0);
+            random_scene_of(&sc, n, 1, 0);
         rng_state = seed;
         if (alone) /* the same scene again */
-            random_spheres_of(&file, 3000, 1);
+            random_spheres_of(&file, n, 1);
         else
-            random_scene_of(&file, 3000, 1, 0);
+            random_scene_of(&file, n, 1, 0);
         CHECK(!sc.has_transparency);
         CHECK_INT(0, scene_build_accel(&sc, 2));
         CHECK(sc.accel != NULL);

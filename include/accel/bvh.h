@@ -175,8 +175,9 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
  * spheres from neighbouring memory, and answer as before (each sphere
  * keeps its order, which settles ties). A hierarchy of spheres alone then
  * gives its references back (each slot's sphere is the one of that
- * index). Returns 0, or -1 (nothing moved) when memory runs out. */
-int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres);
+ * index). Up to threads threads move them (in OpenMP builds). Returns
+ * 0, or -1 (nothing moved) when memory runs out. */
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres, int threads);
 
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);

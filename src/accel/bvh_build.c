@@ -188,38 +188,86 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     return 0;
 }
 
-int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
-{
-    size_t n = bvh->shapes.sphere_count, next = 0;
-    uint32_t *from = malloc(n * sizeof *from); /* from[j]: the sphere to move to j */
-    unsigned char *done = calloc(n / 8 + 1, 1);
+enum { BVH_MOVE_STRIDE = 64 }; /* every 64th slot starts a run of moves */
 
-    if (!from || !done) {
-        free(from);
-        free(done);
+/* Moves spheres[from[k]] to spheres[k] for every k of n (from a
+ * permutation), in place; moved[] (n bytes, zeroed) marks the slots done.
+ * Runs start at every BVH_MOVE_STRIDE-th slot, whose spheres are saved
+ * first, and follow from[] up to the next such slot, so that they run on
+ * every thread apart; then the cycles no run reached, one by one. Returns
+ * -1 (nothing moved) when memory runs out. */
+static int bvh_move_spheres(Sphere *spheres, const uint32_t *from, size_t n,
+                            unsigned char *moved, int threads)
+{
+    size_t marks = (n + BVH_MOVE_STRIDE - 1) / BVH_MOVE_STRIDE;
+    Sphere *saved = malloc(marks * sizeof *saved);
+
+    (void)threads;
+    if (!saved)
         return -1;
-    }
-    for (size_t k = 0; k < bvh->prim_count; k++)
-        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE) {
-            from[next] = (uint32_t)bvh_index(bvh->prims[k]);
-            bvh->prims[k] = bvh_ref(BVH_SPHERE, next++);
+    for (size_t i = 0; i < marks; i++)
+        saved[i] = spheres[i * BVH_MOVE_STRIDE];
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 64) if (n >= 2 * BVH_TASK_MIN)
+#endif
+    for (size_t i = 0; i < marks; i++) {
+        /* Each slot is the source of one slot alone: a run writes only the
+         * slots it reaches, each after reading the next. */
+        size_t k = i * BVH_MOVE_STRIDE;
+        for (;;) {
+            size_t src = from[k];
+            moved[k] = 1;
+            if (src % BVH_MOVE_STRIDE == 0) {
+                spheres[k] = saved[src / BVH_MOVE_STRIDE];
+                break;
+            }
+            spheres[k] = spheres[src];
+            k = src;
         }
-    /* Each cycle of the permutation, moved round in place. */
+    }
+    free(saved);
+    /* The cycles without a marked slot, round in place. */
     for (size_t j = 0; j < n; j++) {
         Sphere first = spheres[j];
         size_t k = j;
-        if (done[j / 8] >> j % 8 & 1)
+        if (moved[j])
             continue;
         while (from[k] != j) {
             spheres[k] = spheres[from[k]];
-            done[k / 8] |= (unsigned char)(1u << k % 8);
+            moved[k] = 1;
             k = from[k];
         }
         spheres[k] = first;
-        done[k / 8] |= (unsigned char)(1u << k % 8);
+        moved[k] = 1;
     }
+    return 0;
+}
+
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres, int threads)
+{
+    size_t n = bvh->shapes.sphere_count, next = 0;
+    uint32_t *from = malloc(n * sizeof *from); /* from[j]: the sphere to move to j */
+    unsigned char *moved = calloc(n + 1, 1);
+
+    if (!from || !moved) {
+        free(from);
+        free(moved);
+        return -1;
+    }
+    for (size_t k = 0; k < bvh->prim_count; k++)
+        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE)
+            from[next++] = (uint32_t)bvh_index(bvh->prims[k]);
+    if (bvh_move_spheres(spheres, from, n, moved, threads) != 0) {
+        free(from);
+        free(moved);
+        return -1;
+    }
+    next = 0;
+    for (size_t k = 0; k < bvh->prim_count; k++)
+        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE)
+            bvh->prims[k] = bvh_ref(BVH_SPHERE, next++);
     free(from);
-    free(done);
+    free(moved);
     bvh->shapes.spheres = spheres;
     if (n == bvh->prim_count) { /* slot k holds sphere k */
         free(bvh->prims);
@@ -240,8 +288,9 @@ size_t bvh_build_memory(size_t n)
      * (a leaf: a subtree of the tree made one) give L - 1 = (W - 1) F + M - S,
      * M >= 2 S and M <= L, so F + S = (L - 1 - M + W S) / (W - 1) <=
      * (L - 1 + (W - 2) S) / (W - 1) <= W L / (2 (W - 1)). After: the nodes,
-     * the references and, to renumber the spheres, 4 bytes and a bit a
-     * primitive, less than the binary tree's two nodes. */
+     * the references and, to renumber the spheres, 5 bytes a primitive
+     * and a sphere every BVH_MOVE_STRIDE (under 6 bytes a primitive), less
+     * than the binary tree's two nodes. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode);
     size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 

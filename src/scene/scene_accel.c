@@ -133,7 +133,7 @@ int scene_build_accel(Scene *scene, int threads)
      * transparencies in that order (visibility.c). Without the memory to
      * move them, they stay: the answers are the same. */
     if (!scene->has_transparency)
-        (void)bvh_renumber_spheres(bvh, scene_spheres(scene));
+        (void)bvh_renumber_spheres(bvh, scene_spheres(scene), threads);
     scene->accel = bvh;
     scene_build_buffers(scene, threads);
     return 0;

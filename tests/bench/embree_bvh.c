@@ -132,10 +132,11 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 
 /* Embree keeps its own order: the spheres stay where they are (bvh.h
  * allows it: the answers are the same). */
-int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres)
+int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres, int threads)
 {
     (void)bvh;
     (void)spheres;
+    (void)threads;
     return -1;
 }
 
