@@ -258,12 +258,42 @@ static inline int lb_before(const float *near, uint32_t a, uint32_t b)
     return near[a] < near[b] || (near[a] == near[b] && a < b);
 }
 
+/* Returns sphere k's place in lb_before()'s order as one number: its
+ * near[] value's bits made to order as the floats do (0 and -0 alike),
+ * then k. */
+static inline uint64_t lb_key(const float *near, uint32_t k)
+{
+    float f = near[k] == 0 ? 0.0f : near[k];
+    uint32_t bits;
+
+    memcpy(&bits, &f, sizeof bits);
+    bits = bits >> 31 ? ~bits : bits | 0x80000000u;
+    return (uint64_t)bits << 32 | k;
+}
+
+enum { LB_SORT_LOCAL = 256 }; /* longer lists are sorted in place */
+
 /* Sorts the n spheres of list by lb_before() (Shell's sort, Ciura's gaps:
- * lists are short, but a cell of a dense field may hold thousands). */
+ * lists are short, but a cell of a dense field may hold thousands). A
+ * short list is sorted on its keys (lb_key()), each sphere's read once:
+ * near[] is read at random. */
 static void lb_sort(uint32_t *list, size_t n, const float *near)
 {
     static const size_t gaps[] = {701, 301, 132, 57, 23, 10, 4, 1};
 
+    if (n <= LB_SORT_LOCAL) {
+        uint64_t key[LB_SORT_LOCAL];
+        for (size_t i = 0; i < n; i++) {
+            uint64_t x = lb_key(near, list[i]);
+            size_t j = i;
+            for (; j > 0 && x < key[j - 1]; j--)
+                key[j] = key[j - 1];
+            key[j] = x;
+        }
+        for (size_t i = 0; i < n; i++)
+            list[i] = (uint32_t)key[i];
+        return;
+    }
     for (size_t g = 0; g < sizeof gaps / sizeof gaps[0]; g++)
         for (size_t i = gaps[g]; i < n; i++) {
             uint32_t x = list[i];
