@@ -44,16 +44,6 @@ static void bvh_select(BuildPrim *prims, size_t lo, size_t hi, size_t k, int axi
     }
 }
 
-/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo
- * (scale may be infinite, for centroids a few subnormals apart: the
- * product is then NaN or infinite, and each has its bin). */
-static int bvh_bin(const BuildPrim *p, int axis, float lo, float scale, int bins)
-{
-    float x = (bvh_centroid(p, axis) - lo) * scale;
-
-    return x >= 0 ? (x < (float)bins ? (int)x : bins - 1) : 0;
-}
-
 #if defined(__SSE2__)
 /* p's box's corners as four lanes each, the fourth not of them: its 28
  * bytes hold both 16-byte rows (lo0 lo1 lo2 hi0, and hi0 hi1 hi2 ref). */
@@ -75,6 +65,18 @@ static inline __m128 bvh_centroid4(const BuildPrim *p)
 
     return _mm_add_ps(_mm_mul_ps(half, _mm_and_ps(bvh_lo4(p), xyz)),
                       _mm_mul_ps(half, _mm_and_ps(bvh_hi4(p), xyz)));
+}
+#endif
+
+#if !defined(__SSE2__)
+/* Returns the bin of p's centroid on axis, for bins of 1 / scale from lo
+ * (scale may be infinite, for centroids a few subnormals apart: the
+ * product is then NaN or infinite, and each has its bin). */
+static int bvh_bin(const BuildPrim *p, int axis, float lo, float scale, int bins)
+{
+    float x = (bvh_centroid(p, axis) - lo) * scale;
+
+    return x >= 0 ? (x < (float)bins ? (int)x : bins - 1) : 0;
 }
 #endif
 
@@ -107,27 +109,108 @@ static void bvh_centroid_box(const BuildPrim *prims, size_t start, size_t end, B
 #endif
 }
 
+/* Moves the primitives of prims[start..end) whose bin on axis
+ * (bvh_bin(), for bins of 1 / scale from lo) is below split in front of
+ * the others; returns where the others begin. Without a branch on the
+ * data: every primitive is swapped with the first of the others (Lomuto's
+ * scheme), which leaves it where it is when it is itself one of them. A
+ * bin below split, for split in [1, bins), is x = (centroid - lo) scale
+ * not at least split (NaN and negative x are bin 0). */
+static size_t bvh_partition(BuildPrim *prims, size_t start, size_t end, int axis, float lo,
+                            float scale, int split)
+{
+    const float at = (float)split;
+    size_t i = start;
+
+    for (size_t j = start; j < end; j++) {
+        size_t left = !((bvh_centroid(&prims[j], axis) - lo) * scale >= at);
+        BuildPrim tmp = prims[j];
+        prims[j] = prims[i];
+        prims[i] = tmp;
+        i += left;
+    }
+    return i;
+}
+
+/* A bin's box: its corners in lanes 0-2 of 16 aligned bytes each (lane 3
+ * is not the box's), as the vector path loads them. */
+typedef struct {
+    _Alignas(16) float lo[4];
+    _Alignas(16) float hi[4];
+} BinBox;
+
+/* A box being grown from bins (bvh_sah_axis()), its smallest and largest
+ * corners compared as box_grow() compares them, and its half area
+ * computed as box_half_area() computes it. */
+#if defined(__SSE2__)
+typedef struct {
+    __m128 lo, hi;
+} BinAcc;
+
+static inline BinAcc bin_acc_empty(void)
+{
+    return (BinAcc){_mm_set1_ps(INFINITY), _mm_set1_ps(-INFINITY)};
+}
+
+static inline BinAcc bin_acc_grow(BinAcc acc, const BinBox *b)
+{
+    acc.lo = _mm_min_ps(_mm_load_ps(b->lo), acc.lo);
+    acc.hi = _mm_max_ps(_mm_load_ps(b->hi), acc.hi);
+    return acc;
+}
+
+static inline float bin_acc_area(BinAcc acc)
+{
+    __m128 d = _mm_sub_ps(acc.hi, acc.lo);                          /* dx dy dz */
+    __m128 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1))); /* dx dy, dy dz, dz dx */
+    float xy = _mm_cvtss_f32(p), yz = _mm_cvtss_f32(_mm_shuffle_ps(p, p, 1));
+
+    return _mm_cvtss_f32(d) < 0 ? 0 : xy + yz + _mm_cvtss_f32(_mm_movehl_ps(p, p));
+}
+#else
+typedef Box BinAcc;
+
+static inline BinAcc bin_acc_empty(void)
+{
+    Box b;
+    box_empty(&b);
+    return b;
+}
+
+static inline BinAcc bin_acc_grow(BinAcc acc, const BinBox *b)
+{
+    Box c = {{b->lo[0], b->lo[1], b->lo[2]}, {b->hi[0], b->hi[1], b->hi[2]}};
+    box_grow(&acc, &c);
+    return acc;
+}
+
+static inline float bin_acc_area(BinAcc acc)
+{
+    return box_half_area(&acc);
+}
+#endif
+
 /* The primitives of prims[start..end) sorted into the centroid bins of
  * each axis whose bit is set in axes, in one pass: how many in each bin,
  * and the box of their boxes. */
 static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsigned axes,
                          const float lo[3], const float scale[3], int bins,
-                         size_t count[3][BVH_BINS], Box bin[3][BVH_BINS])
+                         uint32_t count[3][BVH_BINS], BinBox bin[3][BVH_BINS])
 {
 #if defined(__SSE2__)
     /* Each bin's box in four lanes (minps and maxps as box_grow()'s
      * comparisons); the bins of all three axes from one centroid, clamped
      * as bvh_bin() clamps (maxps gives its second operand for NaN). */
-    __m128 blo[3][BVH_BINS], bhi[3][BVH_BINS];
     const __m128 at = _mm_setr_ps(lo[0], lo[1], lo[2], 0);
     const __m128 per = _mm_setr_ps(scale[0], scale[1], scale[2], 0);
     const __m128 top = _mm_set1_ps((float)(bins - 1)), zero = _mm_setzero_ps();
+    const __m128 empty_lo = _mm_set1_ps(INFINITY), empty_hi = _mm_set1_ps(-INFINITY);
 
     for (int a = 0; a < 3; a++) {
         for (int b = 0; b < bins; b++) {
             count[a][b] = 0;
-            blo[a][b] = _mm_set1_ps(INFINITY);
-            bhi[a][b] = _mm_set1_ps(-INFINITY);
+            _mm_store_ps(bin[a][b].lo, empty_lo);
+            _mm_store_ps(bin[a][b].hi, empty_hi);
         }
     }
     for (size_t i = start; i < end; i++) {
@@ -142,20 +225,10 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
         b[2] = _mm_cvtsi128_si32(_mm_shuffle_epi32(k, 2));
         for (int a = 0; a < 3; a++) {
             if (axes >> a & 1) {
+                BinBox *q = &bin[a][b[a]];
                 count[a][b[a]]++;
-                blo[a][b[a]] = _mm_min_ps(plo, blo[a][b[a]]);
-                bhi[a][b[a]] = _mm_max_ps(phi, bhi[a][b[a]]);
-            }
-        }
-    }
-    for (int a = 0; a < 3; a++) {
-        for (int b = 0; b < bins; b++) {
-            float l[4], h[4];
-            _mm_storeu_ps(l, blo[a][b]);
-            _mm_storeu_ps(h, bhi[a][b]);
-            for (int c = 0; c < 3; c++) {
-                bin[a][b].lo[c] = l[c];
-                bin[a][b].hi[c] = h[c];
+                _mm_store_ps(q->lo, _mm_min_ps(plo, _mm_load_ps(q->lo)));
+                _mm_store_ps(q->hi, _mm_max_ps(phi, _mm_load_ps(q->hi)));
             }
         }
     }
@@ -163,15 +236,22 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
     for (int a = 0; a < 3; a++) {
         for (int b = 0; b < bins; b++) {
             count[a][b] = 0;
-            box_empty(&bin[a][b]);
+            for (int c = 0; c < 4; c++) {
+                bin[a][b].lo[c] = INFINITY;
+                bin[a][b].hi[c] = -INFINITY;
+            }
         }
     }
     for (size_t i = start; i < end; i++) {
         for (int a = 0; a < 3; a++) {
             if (axes >> a & 1) {
-                int b = bvh_bin(&prims[i], a, lo[a], scale[a], bins);
-                count[a][b]++;
-                box_grow(&bin[a][b], &prims[i].box);
+                const Box *q = &prims[i].box;
+                BinBox *to = &bin[a][bvh_bin(&prims[i], a, lo[a], scale[a], bins)];
+                count[a][to - bin[a]]++;
+                for (int c = 0; c < 3; c++) {
+                    to->lo[c] = q->lo[c] < to->lo[c] ? q->lo[c] : to->lo[c];
+                    to->hi[c] = q->hi[c] > to->hi[c] ? q->hi[c] : to->hi[c];
+                }
             }
         }
     }
@@ -182,12 +262,13 @@ static void bvh_bin_axes(const BuildPrim *prims, size_t start, size_t end, unsig
  * centroid bins of one axis (count and bin, bvh_bin_axes()): the cost
  * (traversal 1, intersection 1 a primitive, areas relative to the box of
  * them all), and the first bin of the right part (-1 when no split leaves
- * both parts non-empty). */
-static float bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS], int bins,
+ * both parts non-empty). Counts are converted through a signed type, to
+ * the same floats in one instruction. */
+static float bvh_sah_axis(const uint32_t count[BVH_BINS], const BinBox bin[BVH_BINS], int bins,
                          size_t n, int *split)
 {
-    size_t left_n[BVH_BINS];
-    Box acc;
+    int32_t left_n[BVH_BINS];
+    BinAcc acc = bin_acc_empty();
     float left_area[BVH_BINS], best = INFINITY, per_area;
 
     *split = -1;
@@ -195,28 +276,27 @@ static float bvh_sah_axis(const size_t count[BVH_BINS], const Box bin[BVH_BINS],
      * neighbour's area, and a split at it costs exactly what the split at
      * the next full bin costs, which the sweep below meets first and keeps
      * on a tie; so it is passed over. */
-    box_empty(&acc);
     for (int b = 0, total = 0; b < bins; b++) {
         if (count[b] == 0) {
             left_area[b] = b > 0 ? left_area[b - 1] : 0;
         } else {
-            box_grow(&acc, &bin[b]);
-            left_area[b] = box_half_area(&acc);
+            acc = bin_acc_grow(acc, &bin[b]);
+            left_area[b] = bin_acc_area(acc);
         }
         total += (int)count[b];
-        left_n[b] = (size_t)total;
+        left_n[b] = total;
     }
-    per_area = 1 / box_half_area(&acc); /* acc holds every bin */
-    box_empty(&acc);
+    per_area = 1 / bin_acc_area(acc); /* acc holds every bin */
+    acc = bin_acc_empty();
     for (int b = bins - 1; b > 0; b--) {
         float cost;
         if (count[b] == 0)
             continue;
-        box_grow(&acc, &bin[b]);
-        if (left_n[b - 1] == 0 || left_n[b - 1] == n)
+        acc = bin_acc_grow(acc, &bin[b]);
+        if (left_n[b - 1] == 0 || (size_t)left_n[b - 1] == n)
             continue;
         cost = 1 + (left_area[b - 1] * (float)left_n[b - 1] +
-                    box_half_area(&acc) * (float)(n - left_n[b - 1])) *
+                    bin_acc_area(acc) * (float)(int64_t)(n - (size_t)left_n[b - 1])) *
                        per_area;
         if (cost < best) {
             best = cost;
@@ -256,11 +336,12 @@ static size_t bvh_split_pair(BuildPrim *prims, size_t start, const float extent[
  * of the right part, or start when it is better left a leaf. */
 static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *cb, int depth)
 {
-    size_t n = end - start, mid, count[3][BVH_BINS];
+    size_t n = end - start, mid;
+    uint32_t count[3][BVH_BINS];
     float extent[3], scale[3], best = INFINITY;
     int best_split = -1, axis;
     unsigned axes = 0;
-    Box bin[3][BVH_BINS];
+    BinBox bin[3][BVH_BINS];
     int bins = n < BVH_BINS ? (int)n : BVH_BINS;
 
     for (int a = 0; a < 3; a++) {
@@ -302,20 +383,7 @@ static size_t bvh_split(BuildPrim *prims, size_t start, size_t end, const Box *c
     }
     if (best_split < 0 || (best >= (float)n && n <= BVH_LEAF_MAX))
         return n <= BVH_LEAF_MAX ? start : start + n / 2;
-    /* Partition by bin. */
-    {
-        size_t i = start, j = end;
-        while (i < j) {
-            if (bvh_bin(&prims[i], axis, cb->lo[axis], scale[axis], bins) < best_split) {
-                i++;
-            } else {
-                BuildPrim tmp = prims[i];
-                prims[i] = prims[--j];
-                prims[j] = tmp;
-            }
-        }
-        mid = i;
-    }
+    mid = bvh_partition(prims, start, end, axis, cb->lo[axis], scale[axis], best_split);
     if (mid == start || mid == end) { /* cannot happen, but never loop */
         mid = start + n / 2;
         bvh_select(prims, start, end, mid, axis);
