@@ -188,18 +188,50 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     return 0;
 }
 
-enum { BVH_MOVE_STRIDE = 64 }; /* every 64th slot starts a run of moves */
+enum {
+    BVH_MOVE_STRIDE = 64, /* every 64th slot starts a run of moves */
+    BVH_MOVE_LANES = 8    /* runs a thread follows at once */
+};
+
+/* Follows the runs from marked slots first to first + count - 1 (count at
+ * most BVH_MOVE_LANES) of bvh_move_spheres() together, a step of each in
+ * turn, so that their reads from memory overlap (each run's next read
+ * waits for its last). */
+static void bvh_move_runs(Sphere *spheres, const uint32_t *from, unsigned char *moved,
+                          const Sphere *saved, size_t first, size_t count)
+{
+    size_t k[BVH_MOVE_LANES];
+    size_t live = count;
+
+    for (size_t l = 0; l < count; l++)
+        k[l] = (first + l) * BVH_MOVE_STRIDE;
+    while (live > 0) {
+        for (size_t l = 0; l < live;) {
+            size_t src = from[k[l]];
+            moved[k[l]] = 1;
+            if (src % BVH_MOVE_STRIDE == 0) {
+                spheres[k[l]] = saved[src / BVH_MOVE_STRIDE];
+                k[l] = k[--live]; /* this run ends: the last takes its lane */
+            } else {
+                spheres[k[l]] = spheres[src];
+                k[l++] = src;
+            }
+        }
+    }
+}
 
 /* Moves spheres[from[k]] to spheres[k] for every k of n (from a
  * permutation), in place; moved[] (n bytes, zeroed) marks the slots done.
  * Runs start at every BVH_MOVE_STRIDE-th slot, whose spheres are saved
  * first, and follow from[] up to the next such slot, so that they run on
- * every thread apart; then the cycles no run reached, one by one. Returns
- * -1 (nothing moved) when memory runs out. */
+ * every thread apart, several on each at once (bvh_move_runs()); then the
+ * cycles no run reached, one by one. Returns -1 (nothing moved) when
+ * memory runs out. */
 static int bvh_move_spheres(Sphere *spheres, const uint32_t *from, size_t n,
                             unsigned char *moved, int threads)
 {
     size_t marks = (n + BVH_MOVE_STRIDE - 1) / BVH_MOVE_STRIDE;
+    size_t groups = (marks + BVH_MOVE_LANES - 1) / BVH_MOVE_LANES;
     Sphere *saved = malloc(marks * sizeof *saved);
 
     (void)threads;
@@ -207,23 +239,15 @@ static int bvh_move_spheres(Sphere *spheres, const uint32_t *from, size_t n,
         return -1;
     for (size_t i = 0; i < marks; i++)
         saved[i] = spheres[i * BVH_MOVE_STRIDE];
+    /* Each slot is the source of one slot alone: a run writes only the
+     * slots it reaches, each after reading the next. */
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 64) if (n >= 2 * BVH_TASK_MIN)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 8) if (n >= 2 * BVH_TASK_MIN)
 #endif
-    for (size_t i = 0; i < marks; i++) {
-        /* Each slot is the source of one slot alone: a run writes only the
-         * slots it reaches, each after reading the next. */
-        size_t k = i * BVH_MOVE_STRIDE;
-        for (;;) {
-            size_t src = from[k];
-            moved[k] = 1;
-            if (src % BVH_MOVE_STRIDE == 0) {
-                spheres[k] = saved[src / BVH_MOVE_STRIDE];
-                break;
-            }
-            spheres[k] = spheres[src];
-            k = src;
-        }
+    for (size_t g = 0; g < groups; g++) {
+        size_t first = g * BVH_MOVE_LANES;
+        bvh_move_runs(spheres, from, moved, saved, first,
+                      marks - first < BVH_MOVE_LANES ? marks - first : BVH_MOVE_LANES);
     }
     free(saved);
     /* The cycles without a marked slot, round in place. */
