@@ -14,10 +14,10 @@
 #include "render/render.h"
 #include "scene/scene.h"
 
-/* Seconds each step of a render took (cache: the irradiance cache's
- * pre-pass, 0 without one). */
+/* Seconds each step of a render took (accel: the hierarchy; buffers: the
+ * light buffers; cache: the irradiance cache's pre-pass, 0 without one). */
 typedef struct {
-    double read, accel, cache, render, write;
+    double read, accel, buffers, cache, render, write;
 } SummaryTimes;
 
 /* Returns how ropts samples pixels: "4 samples per pixel", or under

@@ -26,4 +26,12 @@ size_t scene_bounded_count(const Scene *scene);
  * then left without one, and still renders). */
 int scene_build_accel(Scene *scene, int threads);
 
+/* scene_build_accel() in its two steps: the hierarchy (and the spheres
+ * moved into its order), returning as scene_build_accel() does; then the
+ * light buffers, which need the hierarchy (without it, or built already,
+ * nothing is done) and never fail (a buffer that cannot be built is left
+ * out: the rays walk the hierarchy). */
+int scene_build_hierarchy(Scene *scene, int threads);
+void scene_build_buffers(Scene *scene, int threads);
+
 #endif

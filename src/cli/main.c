@@ -235,10 +235,10 @@ fail:
  * mip-maps its texture filters read (scene_filter.h), failing when they
  * would pass the limit; then builds the scene's bounding
  * volume hierarchy (unless opts say not to), failing when it would pass
- * the limit and warning when memory runs out for it. Returns 0, or -1 with
- * *err set. */
+ * the limit and warning when memory runs out for it, and its light
+ * buffers, in *buffers_time seconds. Returns 0, or -1 with *err set. */
 static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t extra,
-                        Scene *scene, Error *err)
+                        Scene *scene, double *buffers_time, Error *err)
 {
     size_t need = writer_memory(wopts, scene->camera.width, scene->camera.height) + extra;
     char a[NUMBER_FORMAT_MAX], b[NUMBER_FORMAT_MAX], c[NUMBER_FORMAT_MAX];
@@ -266,7 +266,7 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t 
             error_set(err, opts->scene_path, "out of memory for the textures' mip-maps");
         return -1;
     }
-    rc = opts->no_accel ? 0 : scene_build_accel(scene, opts->threads);
+    rc = opts->no_accel ? 0 : scene_build_hierarchy(scene, opts->threads);
     if (rc == SCENE_OVER_LIMIT) {
         error_set(err, opts->scene_path,
                   "the bounding volume hierarchy of %zu objects needs up to %s, more than "
@@ -278,6 +278,10 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t 
     if (rc != 0)
         fprintf(stderr, "raytrace: warning: not enough memory for the bounding volume "
                         "hierarchy: every ray will test every object\n");
+    *buffers_time = process_seconds();
+    if (!opts->no_accel)
+        scene_build_buffers(scene, opts->threads);
+    *buffers_time = process_seconds() - *buffers_time;
     return 0;
 }
 
@@ -511,7 +515,8 @@ static int main_render(const Options *opts)
     Tile tile;
     char record[TILE_RECORD_MAX];
     int rows;
-    double start = process_seconds(), read_time, accel_time, render_time, write_time;
+    double start = process_seconds(), write_start;
+    SummaryTimes times = {0, 0, 0, 0, 0, 0};
     SceneSource source;
     Scene scene;
     Image img;
@@ -521,7 +526,7 @@ static int main_render(const Options *opts)
     gicache_init(&cache, 0, 1, 0);
     if (main_load(opts, &scene, &source) != 0)
         return 1;
-    read_time = process_seconds() - start;
+    times.read = process_seconds() - start;
     adjust_render(opts, &scene, &ropts);
     if (strcmp(opts->output_path, "-") == 0 && file_is_terminal(stdout)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
@@ -533,9 +538,9 @@ static int main_render(const Options *opts)
          main_maps_target(opts, &scene, &source, &ropts, &err) != 0;
     source_free(&source); /* the render needs only the scene */
     if (rc != 0 || main_prepare(opts, &wopts, main_noise_memory(opts, &ropts, &scene), &scene,
-                                &err) != 0)
+                                &times.buffers, &err) != 0)
         goto fail_scene;
-    accel_time = process_seconds() - start - read_time;
+    times.accel = process_seconds() - start - times.read - times.buffers;
     rows = scene.camera.height;
     /* Gathered light has no bound the cut-off could use. */
     if (ropts.indirect.gi_samples > 0)
@@ -562,17 +567,16 @@ static int main_render(const Options *opts)
     if (ropts.indirect.gi_cache &&
         main_gi_cache(opts, &scene, &ropts, &cache, &gi_stats, &counts, &err) != 0)
         goto fail_image_only;
-    threads = main_trace(opts, &ropts, &scene, &img, &counts, &render_time);
-    write_time = process_seconds();
+    threads = main_trace(opts, &ropts, &scene, &img, &counts, &times.render);
+    write_start = process_seconds();
     if (main_write(opts->output_path, &img, &wopts, &err) != 0 ||
         (opts->spp_map && ropts.spp && main_spp_map(opts, &ropts, img.width, img.height, &err) != 0) ||
         (opts->gi_cache_map && ropts.gicache &&
          main_gi_cache_map(opts, &scene, &cache, &gi_stats, &img, &err) != 0))
         goto fail_image;
-    write_time = process_seconds() - write_time;
+    times.write = process_seconds() - write_start;
+    times.cache = ropts.gicache ? gi_stats.seconds : 0;
     if (opts->verbose) {
-        SummaryTimes times = {read_time, accel_time, ropts.gicache ? gi_stats.seconds : 0,
-                              render_time, write_time};
         summary_verbose(&scene, &img, &ropts, opts->spp_map, &times, threads, &counts);
         if (ropts.gicache)
             summary_gi_cache(&cache, &gi_stats, &counts, opts->gi_cache_map);

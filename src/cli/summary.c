@@ -18,11 +18,16 @@ static void summary_buffer(const char *what, const LightBuffer *lb)
             lb->res, lb->res, lb->entry_count, number_bytes(b, light_buffer_memory(lb)));
 }
 
-/* Prints, for -v, the light buffers the scene was given. */
-static void summary_buffers(const Scene *scene)
+/* Prints, for -v, the light buffers the scene was given, built in seconds. */
+static void summary_buffers(const Scene *scene, double seconds)
 {
     char what[32];
+    int any = scene->eye_buffer != NULL;
 
+    for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
+        any |= scene->light_buffers[i].first != NULL;
+    if (any)
+        fprintf(stderr, "raytrace: light buffers built in %.3f s\n", seconds);
     if (scene->eye_buffer)
         summary_buffer("the eye", scene->eye_buffer);
     for (size_t i = 0; scene->light_buffers && i < scene->light_count; i++)
@@ -133,7 +138,7 @@ void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *
                         "%.3f s%s\n",
                 scene->accel->node_count, scene->accel->depth, times->accel,
                 scene->accel->avx2 ? ", box tests in AVX2 and FMA" : "");
-    summary_buffers(scene);
+    summary_buffers(scene, times->buffers);
     summary_statistics(img, ropts, model_of(scene), threads, counts, times);
     if (ropts->spp)
         summary_noise(ropts, (size_t)img->width * (size_t)img->height, spp_map);

@@ -65,10 +65,13 @@ static size_t scene_buffer_budget(const Scene *scene, size_t buffers, size_t mor
  * has at least two pixels a sphere. Where a buffer would
  * not fit its budget or pay, the rays walk the hierarchy: the answers are
  * the same. */
-static void scene_build_buffers(Scene *scene, int threads)
+void scene_build_buffers(Scene *scene, int threads)
 {
     size_t buffers = 0, lights = 0, given = 0;
     size_t pixels = (size_t)scene->camera.width * (size_t)scene->camera.height;
+
+    if (!scene->accel || scene->eye_buffer || scene->light_buffers)
+        return;
 
     /* A buffer's build reads every sphere five times; the rays it saves
      * come from the pixels: on fields of 10^5 spheres it loses 9% of the
@@ -110,7 +113,7 @@ static void scene_build_buffers(Scene *scene, int threads)
                                      threads);
 }
 
-int scene_build_accel(Scene *scene, int threads)
+int scene_build_hierarchy(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene_bounded_count(scene);
@@ -135,6 +138,14 @@ int scene_build_accel(Scene *scene, int threads)
     if (!scene->has_transparency)
         (void)bvh_renumber_spheres(bvh, scene_spheres(scene), threads);
     scene->accel = bvh;
-    scene_build_buffers(scene, threads);
     return 0;
+}
+
+int scene_build_accel(Scene *scene, int threads)
+{
+    int rc = scene_build_hierarchy(scene, threads);
+
+    if (rc == 0)
+        scene_build_buffers(scene, threads);
+    return rc;
 }

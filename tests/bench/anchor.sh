@@ -171,19 +171,20 @@ fi
     echo "### Time and memory against the sphere count"
     echo
     echo "The benchmark's field (tests/bench/scenegen.c) at 480 × 270, $ALL threads,"
-    echo "one run each: reading, building and rendering (from -v), peak memory and"
-    echo "the memory it takes a sphere ((peak − the 10-sphere run's) / n)."
+    echo "one run each: reading, building the hierarchy, building the light"
+    echo "buffers (— when the field has none) and rendering (from -v), peak memory"
+    echo "and the memory it takes a sphere ((peak − the 10-sphere run's) / n)."
     if [ -n "$have_anchor" ]; then
         echo "Beside them, the anchor's on the same file (its own parse, build and"
         echo "render times, and its peak memory; its times exclude starting"
         echo "Embree's device)."
         echo
-        echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere | anchor's read | anchor's build | anchor's render | anchor's peak |"
-        echo "|---------|------|-------|--------|-----------------|-------------|----------------|---------------|----------------|-----------------|---------------|"
+        echo "| spheres | read | build | light buffers | render | render / log2 n | peak memory | bytes a sphere | anchor's read | anchor's build | anchor's render | anchor's peak |"
+        echo "|---------|------|-------|---------------|--------|-----------------|-------------|----------------|---------------|----------------|-----------------|---------------|"
     else
         echo
-        echo "| spheres | read | build | render | render / log2 n | peak memory | bytes a sphere |"
-        echo "|---------|------|-------|--------|-----------------|-------------|----------------|"
+        echo "| spheres | read | build | light buffers | render | render / log2 n | peak memory | bytes a sphere |"
+        echo "|---------|------|-------|---------------|--------|-----------------|-------------|----------------|"
     fi
 } >>"$section"
 : >"$DIR/fit"
@@ -196,7 +197,8 @@ while [ "$n" -le "$SCALE_MAX" ]; do
     "$RT" -v -j "$ALL" "$DIR/field.txt" "$DIR/field.ppm" 2>"$DIR/log" >/dev/null ||
         { cat "$DIR/log" >&2; exit 1; }
     read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s.*/\1/p' "$DIR/log")
-    build_s=$(sed -n 's/.*built in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+    build_s=$(sed -n 's/^raytrace: bounding volume hierarchy: .* built in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+    buffers_s=$(sed -n 's/^raytrace: light buffers built in \([0-9.]*\) s$/\1 s/p' "$DIR/log")
     render_s=$(sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log")
     peak=$(sed -n 's/^raytrace: peak memory: \([0-9.]*\) MB$/\1/p' "$DIR/log")
     [ -n "$base" ] || base=$peak
@@ -204,8 +206,9 @@ while [ "$n" -le "$SCALE_MAX" ]; do
     per=—
     [ "$n" -lt 10000 ] || per=$(printf '%.0f' "$(echo "($peak - $base) * 1000000 / $n" | bc -l)")
     lg=$(echo "l($n) / l(2)" | bc -l)
-    row=$(printf '| %s | %s s | %s s | %s s | %.4f s | %s MB | %s |' "$n" "$read_s" \
-        "${build_s:-0}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" "$peak" "$per")
+    row=$(printf '| %s | %s s | %s s | %s | %s s | %.4f s | %s MB | %s |' "$n" "$read_s" \
+        "${build_s:-0}" "${buffers_s:-—}" "$render_s" "$(echo "$render_s / $lg" | bc -l)" \
+        "$peak" "$per")
     echo "raytrace-build $n ${build_s:-0}" >>"$DIR/plot-time"
     echo "raytrace-render $n $render_s" >>"$DIR/plot-time"
     echo "raytrace-peak $n $peak" >>"$DIR/plot-memory"

@@ -153,7 +153,9 @@ if [ "${BENCH_SCALING:-1}" = 1 ]; then
         [ -s "$f" ] || "$GEN" spheres "$n" | sed '6s/^1920$/480/' >"$f"
         render_time "$f"
         read_s=$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log")
-        build=$(sed -n 's/.*built in \([0-9.]*\) s.*/\1/p' "$DIR/log")
+        # The hierarchy and the light buffers together.
+        build=$(awk '/built in/ { for (i = NF; i > 1; i--) if ($i == "built") b += $(i + 2) }
+            END { printf "%.3f", b }' "$DIR/log")
         printf '| spheres | %s | 480 x 270 | %s s | %s s | %s s |\n' "$n" "${read_s:-0}" \
             "${build:-0}" "$render" >>"$DIR/scale"
         echo "bench: scaling, $n spheres" >&2

@@ -70,7 +70,7 @@ for n in 1 2 4 8; do
         k=$((k + 1))
     done
     "$RT" -v --tile 1/$n "$DIR/s1m.txt" "$DIR/m-1.ppm" 2>"$DIR/log"
-    setup=$(awk '/read the scene in/ { r = $6 } /built in/ { for (i = NF; i > 1; i--) if ($i == "built") b = $(i + 2) }
+    setup=$(awk '/read the scene in/ { r = $6 } /built in/ { for (i = NF; i > 1; i--) if ($i == "built") b += $(i + 2) }
         END { printf "%.0f ms", (r + b) * 1000 }' "$DIR/log")
     echo "| $n | $sum ms | $(echo "scale=2; $sum / $whole" | bc) | $setup |"
 done
