@@ -117,7 +117,8 @@ static LbSight lb_sight(const LightBuffer *lb, const Sphere *s, double m)
     sb = sb < 1 ? sb : 1;
     cb = sqrt(1 - sb * sb);
     for (int i = 0; i < 3; i++) {
-        double st = sqrt(fmax(0, 1 - w[i] * w[i]));
+        double s2 = 1 - w[i] * w[i]; /* fmax(0, s2) without a library call */
+        double st = sqrt(s2 > 0 ? s2 : 0);
         sight.lo[i] = (-w[i] >= cb ? -1 : w[i] * cb - st * sb) - LB_PAD;
         sight.hi[i] = (w[i] >= cb ? 1 : w[i] * cb + st * sb) + LB_PAD;
     }
