@@ -161,8 +161,9 @@ static inline BinAcc bin_acc_grow(BinAcc acc, const BinBox *b)
 
 static inline float bin_acc_area(BinAcc acc)
 {
-    __m128 d = _mm_sub_ps(acc.hi, acc.lo);                          /* dx dy dz */
-    __m128 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1))); /* dx dy, dy dz, dz dx */
+    /* d: dx dy dz; p: dx dy, dy dz, dz dx. */
+    __m128 d = _mm_sub_ps(acc.hi, acc.lo);
+    __m128 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1)));
     float xy = _mm_cvtss_f32(p), yz = _mm_cvtss_f32(_mm_shuffle_ps(p, p, 1));
 
     return _mm_cvtss_f32(d) < 0 ? 0 : xy + yz + _mm_cvtss_f32(_mm_movehl_ps(p, p));
