@@ -109,9 +109,9 @@ static void bvh_centroid_box(const BuildPrim *prims, size_t start, size_t end, B
 #endif
 }
 
-/* Moves the primitives of prims[start..end) whose bin on axis
- * (bvh_bin(), for bins of 1 / scale from lo) is below split in front of
- * the others; returns where the others begin. Without a branch on the
+/* Moves the primitives of prims[start..end) whose bin on axis (as
+ * bvh_bin_axes() bins them, bins of 1 / scale from lo) is below split in
+ * front of the others; returns where the others begin. Without a branch on the
  * data: every primitive is swapped with the first of the others (Lomuto's
  * scheme), which leaves it where it is when it is itself one of them. A
  * bin below split, for split in [1, bins), is x = (centroid - lo) scale
