@@ -100,9 +100,56 @@ static void number_format_reads_back_exactly(void)
     CHECK_INT(0, bad);
 }
 
+/* number_scan_plain() reads random texts of every plain form (signs, a
+ * point anywhere or nowhere, leading zeros, 1 to 24 digits, so across its
+ * 15 significant and 22 fractional digits' bounds) to the same bits as
+ * number_parse(), and stops where the number does; it gives up (0) on
+ * other forms, which number_parse() reads by strtod() or refuses. */
+static void number_scan_plain_reads_as_number_parse(void)
+{
+    static const char *const others[] = {"1e5", "2.5E-3", "1234567890123456", ".", "-", "+.",
+                                         "x1", "inf", "0.00000000000000000000001", ""};
+    int bad = 0, scanned = 0;
+
+    for (int i = 0; i < 200000; i++) {
+        char text[40];
+        int n = 0, digits = 1 + (int)(rng_uniform() * 24), point = (int)(rng_uniform() * 28);
+        double a = 0, b = 0;
+        size_t len;
+        if (rng_uniform() < 0.4)
+            text[n++] = rng_uniform() < 0.5 ? '-' : '+';
+        for (int d = 0; d < digits; d++) {
+            if (d == point)
+                text[n++] = '.';
+            text[n++] = (char)('0' + (rng_uniform() < 0.3 ? 0 : (int)(rng_uniform() * 10)));
+        }
+        if (point == digits)
+            text[n++] = '.';
+        text[n] = ' '; /* where it must stop */
+        len = number_scan_plain(text, text + n + 1, &a);
+        if (len == 0)
+            continue;
+        scanned++;
+        if (len != (size_t)n || number_parse(text, (size_t)n, &b) != NUMBER_OK ||
+            !number_same(a, b)) {
+            if (bad++ < 5)
+                test_fail(__FILE__, __LINE__, "\"%.*s\": scanned %zu bytes as %a, parsed %a", n,
+                          text, len, a, b);
+        }
+    }
+    CHECK_INT(0, bad);
+    CHECK(scanned > 100000); /* most of the texts are plain enough */
+    for (size_t k = 0; k < sizeof others / sizeof *others; k++) {
+        double v = 0;
+        const char *t = others[k];
+        CHECK_INT(0, (long long)number_scan_plain(t, t + strlen(t), &v));
+    }
+}
+
 const TestCase number_tests[] = {
     {"number_hard_cases_read_correctly_rounded", number_hard_cases_read_correctly_rounded},
     {"number_format_writes_the_shortest_text", number_format_writes_the_shortest_text},
     {"number_format_reads_back_exactly", number_format_reads_back_exactly},
+    {"number_scan_plain_reads_as_number_parse", number_scan_plain_reads_as_number_parse},
     {NULL, NULL},
 };

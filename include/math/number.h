@@ -34,6 +34,14 @@ int number_word_is(const char *s, size_t len, const char *word);
  * and zero or a normal double; otherwise says what is wrong. */
 NumberStatus number_parse(const char *s, size_t len, double *out);
 
+/* Reads from s (up to end) a number of the plainest form, [+-] digits
+ * ['.' digits*] or [+-] '.' digits, of at most 15 significant digits and
+ * 22 after the point, which ends at end or at a byte that cannot continue
+ * it (nor an exponent's 'e'): stores in *out exactly what number_parse()
+ * gives for it and returns its length; returns 0 for any other form
+ * (number_parse() then reads it, or says what is wrong). */
+size_t number_scan_plain(const char *s, const char *end, double *out);
+
 enum { NUMBER_FORMAT_MAX = 32 }; /* room number_format() needs */
 
 /* Writes into buf (NUMBER_FORMAT_MAX bytes) the shortest decimal, in

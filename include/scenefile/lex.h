@@ -63,6 +63,9 @@ typedef enum {
     FIELD_FRACTION     /* 0..1: reflection, transparency */
 } FieldKind;
 
+/* Says whether v is a value a number of kind may take. */
+int lex_field_fits(FieldKind kind, double v);
+
 /* The numbers of one record kind. */
 typedef struct {
     const char *what;         /* "the camera position" */

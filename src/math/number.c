@@ -41,6 +41,45 @@ static int number_digit(char c)
     return c >= '0' && c <= '9';
 }
 
+/* The powers of ten a double holds exactly (Clinger's fast path). */
+static const double number_powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+size_t number_scan_plain(const char *s, const char *end, double *out)
+{
+    const char *p = s;
+    int negative = 0, significant = 0, point = 0, digits = 0, fraction = 0;
+    uint64_t m = 0;
+    double v;
+
+    if (FLT_EVAL_METHOD != 0)
+        return 0;
+    if (p < end && (*p == '+' || *p == '-'))
+        negative = *p++ == '-';
+    for (; p < end; p++) {
+        if (*p == '.' && !point) {
+            point = 1;
+            continue;
+        }
+        if (!number_digit(*p))
+            break;
+        digits++;
+        fraction += point;
+        if (m == 0 && *p == '0')
+            continue;
+        if (++significant > 15)
+            return 0;
+        m = m * 10 + (uint64_t)(*p - '0');
+    }
+    if (digits == 0 || fraction > 22 || (p < end && (*p == 'e' || *p == 'E')))
+        return 0;
+    /* As number_parse()'s fast path: m / 10^fraction, one rounding. */
+    v = m == 0 ? 0 : (double)m / number_powers[fraction];
+    *out = negative ? -v : v;
+    return (size_t)(p - s);
+}
+
 /*
  * number -> [+-] (digits ['.' digits*] | '.' digits) [('e'|'E') [+-] digits]
  * Converts the len bytes at s to *out, correctly rounded, when they spell a
@@ -58,9 +97,7 @@ static int number_digit(char c)
  */
 NumberStatus number_parse(const char *s, size_t len, double *out)
 {
-    static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const double *powers = number_powers;
     size_t i = 0, digits = 0;
     int negative = 0, nonzero = 0, significant = 0, fast = FLT_EVAL_METHOD == 0;
     long fraction = 0, exponent = 0, e;

@@ -14,7 +14,7 @@ static const FieldKind course_sphere_kinds[] = {
 
 const RecordSpec course_light_spec = {"the light", "x y z r g b", 6, 0, 0, course_light_names,
                                        course_light_kinds};
-static const RecordSpec course_sphere_spec = {"the sphere",
+const RecordSpec course_sphere_spec = {"the sphere",
                                         "cx cy cz radius r g b reflection"
                                         " [transparency index]",
                                         8, 2, 0, course_sphere_names, course_sphere_kinds};

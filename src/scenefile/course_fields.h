@@ -35,6 +35,10 @@ typedef struct {
 /* light -> x y z r g b: the header's light and a light: record's numbers. */
 extern const RecordSpec course_light_spec;
 
+/* sphere -> cx cy cz radius r g b reflection [transparency index]: a
+ * sphere: record's numbers. */
+extern const RecordSpec course_sphere_spec;
+
 /* Records that rec's element could not be stored, scene_add_*() having
  * returned rc; returns -1. */
 int course_fail_memory(CourseParser *P, const Record *rec, const Scene *scene, long rc);

@@ -155,6 +155,31 @@ int lex_next_record(Lexer *L, Record *rec)
     return rc;
 }
 
+/* What each kind of number must be, as lex_number()'s messages say it
+ * (a coordinate may be anything finite). */
+static const char *const lex_field_rule[] = {
+    [FIELD_COORD] = "must be finite",
+    [FIELD_COLOUR] = "must be in [0, 255]",
+    [FIELD_POSITIVE] = "must be greater than 0",
+    [FIELD_NONNEGATIVE] = "must be at least 0",
+    [FIELD_FRACTION] = "must be in [0, 1]"};
+
+int lex_field_fits(FieldKind kind, double v)
+{
+    switch (kind) {
+    case FIELD_COLOUR:
+        return v >= 0 && v <= 255;
+    case FIELD_POSITIVE:
+        return v > 0;
+    case FIELD_NONNEGATIVE:
+        return v >= 0;
+    case FIELD_FRACTION:
+        return v >= 0 && v <= 1;
+    default:
+        return 1;
+    }
+}
+
 int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int index,
                double *out)
 {
@@ -193,37 +218,10 @@ int lex_number(Lexer *L, const Record *rec, int k, const RecordSpec *spec, int i
         error_set(L->err, L->name, "out of memory");
         return -1;
     }
-    switch (spec->kinds[index]) {
-    case FIELD_COORD:
-        break;
-    case FIELD_COLOUR:
-        if (!(v >= 0 && v <= 255)) {
-            lex_fail(L, &rec->line, t->column, "%s's %s must be in [0, 255], found %s", what,
-                     name, lex_quote(q, sizeof q, t));
-            return -1;
-        }
-        break;
-    case FIELD_POSITIVE:
-        if (!(v > 0)) {
-            lex_fail(L, &rec->line, t->column, "%s's %s must be greater than 0, found %s", what,
-                     name, lex_quote(q, sizeof q, t));
-            return -1;
-        }
-        break;
-    case FIELD_NONNEGATIVE:
-        if (!(v >= 0)) {
-            lex_fail(L, &rec->line, t->column, "%s's %s must be at least 0, found %s", what,
-                     name, lex_quote(q, sizeof q, t));
-            return -1;
-        }
-        break;
-    case FIELD_FRACTION:
-        if (!(v >= 0 && v <= 1)) {
-            lex_fail(L, &rec->line, t->column, "%s's %s must be in [0, 1], found %s", what,
-                     name, lex_quote(q, sizeof q, t));
-            return -1;
-        }
-        break;
+    if (!lex_field_fits(spec->kinds[index], v)) {
+        lex_fail(L, &rec->line, t->column, "%s's %s %s, found %s", what, name,
+                 lex_field_rule[spec->kinds[index]], lex_quote(q, sizeof q, t));
+        return -1;
     }
     *out = v;
     return 0;
