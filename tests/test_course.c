@@ -268,24 +268,41 @@ static int parse_on(int threads, const char *text, size_t len, size_t memory_lim
     return load_scene_text("big.txt", text, len, SCENE_COURSE, memory_limit, 0, scene, NULL, err);
 }
 
-/* A large scene of spheres is read alike on one thread and on two: the same
- * spheres, room and flags, or the same fault at the same place (the first
- * in the file), also when the memory limit stops it or when a record other
- * than a sphere of a plain material sends the reading back to one thread. */
+/* Parses text with a light: record after it, into odd (room for len + 64
+ * bytes): a record other than a sphere, so the serial reading, line by
+ * line through the lexer. */
+static int parse_serially(const char *text, size_t len, char *odd, Scene *scene, Error *err)
+{
+    static const char light[] = "light: 1 2 3 4 5 6\n";
+
+    memcpy(odd, text, len);
+    memcpy(odd + len, light, sizeof light - 1);
+    return parse_on(2, odd, len + sizeof light - 1, 0, scene, err);
+}
+
+/* A large scene of spheres is read alike on one thread and on two, and as
+ * the serial reading reads it: the same spheres, room and flags, or the
+ * same fault at the same place (the first in the file), also when the
+ * memory limit stops it or when a record other than a sphere of a plain
+ * material sends the reading back to the serial one. */
 static void parse_reads_alike_on_every_thread(void)
 {
     static char text[BIG_ROOM], odd[BIG_ROOM + 64];
     size_t len = big_course(text, 40000);
     int before = threads_count();
-    Scene one, two;
+    Scene one, two, serial;
     Error e1, e2;
 
     CHECK(len > 1 << 20 && len < BIG_ROOM - 1);
     CHECK_INT(0, parse_on(1, text, len, 0, &one, &e1));
     CHECK_INT(0, parse_on(2, text, len, 0, &two, &e2));
+    CHECK_INT(0, parse_serially(text, len, odd, &serial, &e1));
     CHECK_INT(40000, (long long)scene_count_of(&one, SHAPE_SPHERE));
+    CHECK_INT(2, (long long)serial.light_count);
     CHECK(!one.has_transparency);
     CHECK(same_spheres(&one, &two));
+    CHECK(same_spheres(&serial, &one));
+    scene_free(&serial);
     /* The memory limit: the serial reading's room just fits, or not. */
     {
         size_t need = scene_memory(&one);

@@ -1,5 +1,5 @@
-/* course_bulk.c: large fields of sphere: records read on every thread
- * (see course_bulk.h). */
+/* course_bulk.c: large fields of sphere: records read on every thread,
+ * a line in one pass where it can be (see course_bulk.h). */
 #include "course_bulk.h"
 
 #include <string.h>
@@ -8,7 +8,7 @@
 #include "math/number.h"
 
 enum {
-    COURSE_PARALLEL_MIN = 1 << 20, /* fewer bytes of records are read on one thread */
+    COURSE_PARALLEL_MIN = 1 << 20, /* fewer bytes of records: the serial reading */
     COURSE_PARTS_MAX = 64
 };
 
@@ -171,7 +171,7 @@ int course_spheres_parallel(CourseParser *P, Scene *scene)
     int lines = 0, others = 0;
     CourseParts pp = {P, parts, n};
 
-    if (n < 2 || len < COURSE_PARALLEL_MIN)
+    if (n < 1 || len < COURSE_PARALLEL_MIN)
         return 0;
     lex_split(P->lex.next, len, n, cut);
 #ifdef _OPENMP
