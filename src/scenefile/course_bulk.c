@@ -171,7 +171,7 @@ int course_spheres_parallel(CourseParser *P, Scene *scene)
     int lines = 0, others = 0;
     CourseParts pp = {P, parts, n};
 
-    if (n < 1 || len < COURSE_PARALLEL_MIN)
+    if (len < COURSE_PARALLEL_MIN)
         return 0;
     lex_split(P->lex.next, len, n, cut);
 #ifdef _OPENMP
