@@ -109,27 +109,77 @@ static void bvh_centroid_box(const BuildPrim *prims, size_t start, size_t end, B
 #endif
 }
 
-/* Moves the primitives of prims[start..end) whose bin on axis (as
- * bvh_bin_axes() bins them, bins of 1 / scale from lo) is below split in
- * front of the others; returns where the others begin. Without a branch on the
- * data: every primitive is swapped with the first of the others (Lomuto's
- * scheme), which leaves it where it is when it is itself one of them. A
- * bin below split, for split in [1, bins), is x = (centroid - lo) scale
- * not at least split (NaN and negative x are bin 0). */
-static size_t bvh_partition(BuildPrim *prims, size_t start, size_t end, int axis, float lo,
-                            float scale, int split)
+/* Says whether p goes left of a split at bin `at` on axis, bins of
+ * 1 / scale from lo (as bvh_bin_axes() bins it): x = (centroid - lo) scale
+ * is not at least at (NaN and negative x are bin 0). */
+static inline int bvh_goes_left(const BuildPrim *p, int axis, float lo, float scale, float at)
 {
-    const float at = (float)split;
+    return !((bvh_centroid(p, axis) - lo) * scale >= at);
+}
+
+/* Lomuto's partition of prims[start..end) (bvh_partition()): every
+ * primitive is swapped with the first of the others, which leaves it
+ * where it is when it is itself one of them; no branch on the data.
+ * Returns where the others begin. */
+static size_t bvh_partition_lomuto(BuildPrim *prims, size_t start, size_t end, int axis,
+                                   float lo, float scale, float at)
+{
     size_t i = start;
 
     for (size_t j = start; j < end; j++) {
-        size_t left = !((bvh_centroid(&prims[j], axis) - lo) * scale >= at);
+        size_t left = (size_t)bvh_goes_left(&prims[j], axis, lo, scale, at);
         BuildPrim tmp = prims[j];
         prims[j] = prims[i];
         prims[i] = tmp;
         i += left;
     }
     return i;
+}
+
+enum { BVH_BLOCK = 64 }; /* primitives a side of bvh_partition() classifies at once */
+
+/* Moves the primitives of prims[start..end) that go left of a split at
+ * bin `split` (bvh_goes_left()) in front of the others; returns where the
+ * others begin. Blocks from both ends (Edelkamp and Weiss's BlockQuicksort
+ * partition): each side notes, without a branch on the data, where its
+ * block holds primitives of the other side, then those are swapped in
+ * pairs, so only misplaced primitives move; Lomuto's scheme finishes the
+ * middle. */
+static size_t bvh_partition(BuildPrim *prims, size_t start, size_t end, int axis, float lo,
+                            float scale, int split)
+{
+    const float at = (float)split;
+    unsigned char wrong_l[BVH_BLOCK], wrong_r[BVH_BLOCK];
+    size_t l = start, r = end; /* [start, l) go left, [r, end) right */
+    int nl = 0, nr = 0, fl = 0, fr = 0;
+
+    while (r - l >= 2 * BVH_BLOCK) {
+        if (nl == 0) {
+            fl = 0;
+            for (int k = 0; k < BVH_BLOCK; k++) {
+                wrong_l[nl] = (unsigned char)k;
+                nl += !bvh_goes_left(&prims[l + (size_t)k], axis, lo, scale, at);
+            }
+        }
+        if (nr == 0) {
+            fr = 0;
+            for (int k = 0; k < BVH_BLOCK; k++) {
+                wrong_r[nr] = (unsigned char)k;
+                nr += bvh_goes_left(&prims[r - 1 - (size_t)k], axis, lo, scale, at);
+            }
+        }
+        for (int n = nl < nr ? nl : nr; n > 0; n--, nl--, nr--) {
+            BuildPrim *a = &prims[l + wrong_l[fl++]], *b = &prims[r - 1 - wrong_r[fr++]];
+            BuildPrim tmp = *a;
+            *a = *b;
+            *b = tmp;
+        }
+        if (nl == 0)
+            l += BVH_BLOCK;
+        if (nr == 0)
+            r -= BVH_BLOCK;
+    }
+    return bvh_partition_lomuto(prims, l, r, axis, lo, scale, at);
 }
 
 /* A bin's box: its corners in lanes 0-2 of 16 aligned bytes each (lane 3
