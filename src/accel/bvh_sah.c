@@ -323,36 +323,30 @@ static float bvh_sah_axis(const uint32_t count[BVH_BINS], const BinBox bin[BVH_B
     float left_area[BVH_BINS], best = INFINITY, per_area;
 
     *split = -1;
-    /* An empty bin changes neither box nor count: it takes its left
-     * neighbour's area, and a split at it costs exactly what the split at
-     * the next full bin costs, which the sweep below meets first and keeps
-     * on a tie; so it is passed over. */
+    /* An empty bin changes neither box nor count (its box is empty: growing
+     * by it leaves the box as it was), so a split at it costs exactly what
+     * the split at the next full bin costs, which the sweep below meets
+     * first and keeps on a tie: no bin is passed over, and no branch asks
+     * which are empty. */
     for (int b = 0, total = 0; b < bins; b++) {
-        if (count[b] == 0) {
-            left_area[b] = b > 0 ? left_area[b - 1] : 0;
-        } else {
-            acc = bin_acc_grow(acc, &bin[b]);
-            left_area[b] = bin_acc_area(acc);
-        }
+        acc = bin_acc_grow(acc, &bin[b]);
+        left_area[b] = bin_acc_area(acc);
         total += (int)count[b];
         left_n[b] = total;
     }
     per_area = 1 / bin_acc_area(acc); /* acc holds every bin */
     acc = bin_acc_empty();
     for (int b = bins - 1; b > 0; b--) {
+        int32_t l = left_n[b - 1];
         float cost;
-        if (count[b] == 0)
-            continue;
         acc = bin_acc_grow(acc, &bin[b]);
-        if (left_n[b - 1] == 0 || (size_t)left_n[b - 1] == n)
-            continue;
-        cost = 1 + (left_area[b - 1] * (float)left_n[b - 1] +
-                    bin_acc_area(acc) * (float)(int64_t)(n - (size_t)left_n[b - 1])) *
+        cost = 1 + (left_area[b - 1] * (float)l +
+                    bin_acc_area(acc) * (float)(int64_t)(n - (size_t)l)) *
                        per_area;
-        if (cost < best) {
-            best = cost;
-            *split = b;
-        }
+        if (l == 0 || (size_t)l == n) /* a part left empty: no split */
+            cost = INFINITY;
+        *split = cost < best ? b : *split;
+        best = cost < best ? cost : best;
     }
     return best;
 }
