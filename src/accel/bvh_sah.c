@@ -478,36 +478,3 @@ void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root)
     }
 }
 
-/* Moves the binary tree's nodes to the front of nodes in depth-first order
- * (each left child still right after its parent), closing the gaps the
- * fixed offsets leave; returns how many there are. In place: the walk meets
- * the nodes in increasing order, so a node only moves down, onto a slot
- * already moved or never used. */
-size_t bvh_compact(BuildNode *nodes)
-{
-    struct {
-        size_t node;   /* where it is */
-        size_t parent; /* where its parent went, or SIZE_MAX for a left child
-                          or the root */
-    } stack[2 * (BVH_DEPTH_MAX + 1)];
-    int top = 0;
-    size_t count = 0;
-
-    stack[top].node = 0;
-    stack[top++].parent = SIZE_MAX;
-    while (top > 0) {
-        size_t old = stack[--top].node, parent = stack[top].parent, at = count++;
-
-        nodes[at] = nodes[old];
-        if (parent != SIZE_MAX)
-            nodes[parent].index = (uint32_t)at;
-        if (nodes[at].count == 0) {
-            stack[top].node = nodes[at].index;
-            stack[top++].parent = at;
-            stack[top].node = old + 1;
-            stack[top++].parent = SIZE_MAX;
-        }
-    }
-    return count;
-}
-

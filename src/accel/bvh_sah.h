@@ -24,9 +24,4 @@ typedef struct {
  * subtrees of BVH_TASK_MIN primitives or more become tasks. */
 void bvh_build_subtree(BuildPrim *prims, BuildNode *nodes, BuildTask root);
 
-/* Moves the binary tree's nodes to the front of nodes in depth-first
- * order, closing the gaps the fixed offsets leave; returns how many there
- * are. */
-size_t bvh_compact(BuildNode *nodes);
-
 #endif
