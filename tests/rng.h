@@ -7,6 +7,7 @@
 #define RAYTRACE_TEST_RNG_H
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "math/vec3.h"
@@ -47,6 +48,28 @@ static inline Vec3 rng_direction_at_cosine(Vec3 n, double c)
 {
     Vec3 t = vec3_normalize(vec3_cross(n, rng_unit_vector()));
     return vec3_normalize(vec3_add(vec3_scale(n, c), vec3_scale(t, sqrt(1 - c * c))));
+}
+
+/* Writes into buf a decimal spelling of 1 to max_digits digits (each 0 at
+ * least zero_share of the time), a sign first sign_share of the time, and
+ * the point before any digit, after the last, or nowhere; returns its
+ * length (no NUL: at most max_digits + 2 bytes). */
+static inline size_t rng_decimal(char *buf, int max_digits, double sign_share, double zero_share)
+{
+    size_t n = 0;
+    int digits = 1 + (int)(rng_uniform() * max_digits);
+    int point = (int)(rng_uniform() * (digits + 2)); /* digits + 1: none */
+
+    if (rng_uniform() < sign_share)
+        buf[n++] = rng_uniform() < 0.5 ? '-' : '+';
+    for (int k = 0; k < digits; k++) {
+        if (k == point)
+            buf[n++] = '.';
+        buf[n++] = (char)('0' + (rng_uniform() < zero_share ? 0 : (int)(rng_uniform() * 10)));
+    }
+    if (point == digits)
+        buf[n++] = '.';
+    return n;
 }
 
 #endif

@@ -148,19 +148,9 @@ static void parse_numbers_round_as_strtod(void)
 
     for (int i = 0; i < 200000; i++) {
         char buf[64];
-        size_t n = 0;
-        int digits = 1 + (int)(rng_uniform() * 20), point = (int)(rng_uniform() * (digits + 2));
+        size_t n = rng_decimal(buf, 20, 0.3, 0.2);
         double a, b;
 
-        if (rng_uniform() < 0.3)
-            buf[n++] = rng_uniform() < 0.5 ? '-' : '+';
-        for (int k = 0; k < digits; k++) {
-            if (k == point)
-                buf[n++] = '.';
-            buf[n++] = (char)('0' + (rng_uniform() < 0.2 ? 0 : (int)(rng_uniform() * 10)));
-        }
-        if (point == digits && rng_uniform() < 0.5)
-            buf[n++] = '.';
         if (rng_uniform() < 0.4)
             n += (size_t)sprintf(buf + n, "e%d", (int)(rng_uniform() * 60) - 30);
         buf[n] = '\0';

@@ -113,18 +113,9 @@ static void number_scan_plain_reads_as_number_parse(void)
 
     for (int i = 0; i < 200000; i++) {
         char text[40];
-        int n = 0, digits = 1 + (int)(rng_uniform() * 24), point = (int)(rng_uniform() * 28);
+        int n = (int)rng_decimal(text, 24, 0.4, 0.3);
         double a = 0, b = 0;
         size_t len;
-        if (rng_uniform() < 0.4)
-            text[n++] = rng_uniform() < 0.5 ? '-' : '+';
-        for (int d = 0; d < digits; d++) {
-            if (d == point)
-                text[n++] = '.';
-            text[n++] = (char)('0' + (rng_uniform() < 0.3 ? 0 : (int)(rng_uniform() * 10)));
-        }
-        if (point == digits)
-            text[n++] = '.';
         text[n] = ' '; /* where it must stop */
         len = number_scan_plain(text, text + n + 1, &a);
         if (len == 0)
