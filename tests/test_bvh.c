@@ -188,29 +188,50 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
 }
 
+/* Returns how many nodes are reached from node id, counting one reached
+ * twice twice. */
+static size_t reached_nodes(const Bvh *bvh, size_t id)
+{
+    size_t count = 1;
+
+    for (int k = 0; k < BVH_WIDTH; k++)
+        if (bvh->nodes[id].box[0][k] <= bvh->nodes[id].box[3][k] &&
+            bvh_link_count(bvh->nodes[id].link[k]) == 0)
+            count += reached_nodes(bvh, bvh_link_index(bvh->nodes[id].link[k]));
+    return count;
+}
+
 static void bvh_holds_every_primitive_once_in_nested_boxes(void)
 {
-    Scene sc;
-    Bvh bvh;
-    unsigned char *seen;
-    int bad = 0;
-    size_t n;
+    /* From one primitive (a root of leaves alone) to many. */
+    static const int sizes[] = {1, 2, 9, 70, 3000};
 
-    random_scene(&sc, 3000, 10);
-    n = scene_bounded_count(&sc);
-    CHECK_INT(0, build_over(&bvh, &sc, 1));
-    seen = calloc(n, 1);
-    check_subtree(&bvh, &sc, 0, 0, seen, &bad);
-    CHECK_INT(0, bad);
-    for (size_t i = 0; i < n; i++)
-        bad += seen[i] != 1;
-    CHECK_INT(0, bad);
-    /* As bvh_build_memory() counts: W n / (2 (W - 1)), W = BVH_WIDTH. */
-    CHECK(bvh.node_count <= n / 2 * BVH_WIDTH / (BVH_WIDTH - 1) + 2);
-    CHECK(bvh.depth < 20);
-    free(seen);
-    bvh_free(&bvh);
-    scene_free(&sc);
+    for (size_t z = 0; z < sizeof sizes / sizeof *sizes; z++) {
+        Scene sc;
+        Bvh bvh;
+        unsigned char *seen;
+        int bad = 0;
+        size_t n;
+
+        random_scene(&sc, sizes[z], 10);
+        n = scene_bounded_count(&sc);
+        CHECK_INT(0, build_over(&bvh, &sc, 1));
+        seen = calloc(n, 1);
+        check_subtree(&bvh, &sc, 0, 0, seen, &bad);
+        CHECK_INT(0, bad);
+        for (size_t i = 0; i < n; i++)
+            bad += seen[i] != 1;
+        CHECK_INT(0, bad);
+        /* The nodes the plan counted are those written, each reached once
+         * (links only go forwards). */
+        CHECK_INT((long long)bvh.node_count, (long long)reached_nodes(&bvh, 0));
+        /* As bvh_build_memory() counts: W n / (2 (W - 1)), W = BVH_WIDTH. */
+        CHECK(bvh.node_count <= n / 2 * BVH_WIDTH / (BVH_WIDTH - 1) + 2);
+        CHECK(bvh.depth < 20);
+        free(seen);
+        bvh_free(&bvh);
+        scene_free(&sc);
+    }
 }
 
 static void bvh_stays_shallow_on_degenerate_scenes(void)

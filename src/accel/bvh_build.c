@@ -123,6 +123,7 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     BuildPrim *prims;
     BuildNode *nodes;
     real pad = bvh_padding(shapes, reach, threads);
+    size_t planned = 0;
 
     memset(bvh, 0, sizeof *bvh);
     bvh->shapes = *shapes;
@@ -154,7 +155,8 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     bvh_build_subtree(prims, nodes, (BuildTask){0, n, 0, 0});
     (void)threads;
     /* Plan the wide nodes on the primitives' boxes (in the leaves' order),
-     * then keep their references alone: the binary tree and the nodes
+     * counting them as it goes (no walk of the tree on one thread), then
+     * keep their references alone: the binary tree and the nodes
      * made from it are held together next. The slots the fixed offsets
      * left unused stay where they are (2.5% of them at 10^6 spheres,
      * never written, so never resident): they were moved out at the cost
@@ -163,10 +165,10 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 #pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #pragma omp single
 #endif
-    bvh_plan(nodes, prims);
+    planned = bvh_plan(nodes, prims);
     bvh->prims = bvh_refs_in_place(prims, n);
     bvh->prim_count = n;
-    bvh->node_count = bvh_collapsed_count(nodes, 0);
+    bvh->node_count = planned;
     bvh->nodes = aligned_new(_Alignof(BvhNode), bvh->node_count * sizeof *bvh->nodes);
     if (!bvh->nodes) {
         free(nodes);

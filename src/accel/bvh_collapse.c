@@ -30,14 +30,18 @@ static int bvh_planned_leaf(const BuildNode *b)
     return !(b->count & BVH_PLAN_NODE);
 }
 
-/* What planning a binary subtree finds: its box, its binary leaves, and
- * the least cost of its subtree made into children of a wide node. */
+/* What planning a binary subtree finds: its box, its binary leaves, the
+ * least cost of its subtree made into children of a wide node, and the
+ * wide nodes those children hold. */
 typedef struct {
     Box box;
     size_t leaves;            /* binary leaves */
     float cut[BVH_WIDTH];     /* cut[i - 1]: as exactly i children, leaves
                                  or nodes (INFINITY when leaves < i) */
     float alone;              /* as leaves alone, however many */
+    size_t made[BVH_WIDTH];   /* made[i - 1]: the wide nodes in the
+                                 subtrees of those i children, as planned */
+    size_t node;              /* the wide nodes it makes as a node */
 } BvhPlanCost;
 
 /* Plans binary node id's subtree: stores each interior node's plan in its
@@ -61,6 +65,8 @@ static void bvh_plan_subtree(BuildNode *nodes, uint32_t id, const BuildPrim *pri
         out->cut[0] = out->alone = box_half_area(&out->box) * BVH_PRIM_COST * (float)b->count;
         for (int i = 1; i < BVH_WIDTH; i++)
             out->cut[i] = INFINITY;
+        memset(out->made, 0, sizeof out->made);
+        out->node = 1; /* its one leaf */
         return;
     }
     if (b->size >= BVH_TASK_MIN) {
@@ -100,30 +106,38 @@ static void bvh_plan_subtree(BuildNode *nodes, uint32_t id, const BuildPrim *pri
                 best = k;
             }
         }
-        if (best > 0)
+        out->made[i - 1] = 0;
+        if (best > 0) {
             word |= (uint32_t)(best - 1) << 3 * (i - 2);
+            out->made[i - 1] = l.made[best - 1] + r.made[i - best - 1];
+        }
     }
     /* A node of fewer children than BVH_WIDTH holds leaves alone, so that
      * the nodes are as few as bvh_build_memory() counts. */
     if (out->leaves < BVH_WIDTH) {
         node = area * BVH_NODE_COST + l.alone + r.alone;
         word |= BVH_PLAN_SMALL;
+        out->node = 1;
     } else {
         node = area * BVH_NODE_COST + out->cut[BVH_WIDTH - 1];
+        out->node = 1 + out->made[BVH_WIDTH - 1];
     }
     out->cut[0] = node;
+    out->made[0] = out->node;
     if (small && leaf <= node) {
         out->cut[0] = leaf;
+        out->made[0] = 0;
         word |= BVH_PLAN_LEAF;
     }
     b->count = word;
 }
 
-void bvh_plan(BuildNode *nodes, const BuildPrim *prims)
+size_t bvh_plan(BuildNode *nodes, const BuildPrim *prims)
 {
     BvhPlanCost root;
 
     bvh_plan_subtree(nodes, 0, prims, &root);
+    return root.node;
 }
 
 /* A wide node's child, as planned: binary node id's subtree, as a leaf or

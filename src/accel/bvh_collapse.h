@@ -13,8 +13,9 @@
  * which subtrees become a wide node's children, leaves or nodes, for the
  * least cost by the surface area heuristic; the plan replaces each
  * interior node's count (0). Each node has BVH_WIDTH children, or fewer
- * and all leaves. */
-void bvh_plan(BuildNode *nodes, const BuildPrim *prims);
+ * and all leaves. Returns how many wide nodes the plan makes: what
+ * bvh_collapsed_count() counts from the root. */
+size_t bvh_plan(BuildNode *nodes, const BuildPrim *prims);
 
 /* Returns how many wide nodes collapsing planned binary node id's subtree
  * makes. */
