@@ -88,7 +88,8 @@ static int build_over(Bvh *bvh, const Scene *sc, int threads)
     BvhShapes shapes = {scene_spheres(sc),   scene_count_of(sc, SHAPE_SPHERE),
                         scene_triangles(sc), scene_count_of(sc, SHAPE_TRIANGLE),
                         scene_cubes(sc),     scene_count_of(sc, SHAPE_CUBE),
-                        scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE)};
+                        scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE),
+                        NULL};
 
     return bvh_build(bvh, &shapes, 0, threads);
 }

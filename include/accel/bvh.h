@@ -135,6 +135,8 @@ typedef struct {
     size_t cube_count;
     const Square *squares;
     size_t square_count;
+    Sphere *movable; /* NULL, or spheres itself, which bvh_build() may then
+                        reorder (see there) */
 } BvhShapes;
 
 typedef struct Bvh {
@@ -143,7 +145,7 @@ typedef struct Bvh {
     size_t node_count;
     uint32_t *prims;     /* primitive references, grouped by leaf; NULL
                             when every primitive is the sphere of its
-                            slot (bvh_renumber_spheres()): bvh_prim_ref() */
+                            slot (shapes.movable): bvh_prim_ref() */
     size_t prim_count;
     int depth;           /* deepest node, the root at 0 */
     double centre[3];    /* the frame: a node's box coordinate is that of */
@@ -165,24 +167,21 @@ static inline uint32_t bvh_prim_ref(const Bvh *bvh, size_t k)
  * is the same whatever their number). reach is the largest magnitude of
  * any coordinate, other than the shapes' own, that rays start from or
  * aim at (camera, screen, lights, unbounded shapes): the boxes' padding
- * grows with it. Returns 0, or -1 (nothing allocated) when memory runs out
- * or there are BVH_MAX_OF_KIND shapes of a kind, or BVH_MAX_LINK / 2 in all. */
-int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
-
-/* Moves spheres, the array *bvh was built over (its owner's, to be
- * changed), into the order the hierarchy's leaves hold them in, and
- * renumbers its references to match: queries then read neighbouring
- * spheres from neighbouring memory, and answer as before (each sphere
- * keeps its order, which settles ties). A hierarchy of spheres alone then
+ * grows with it. With shapes->movable, the spheres (their owner's, to be
+ * changed) are moved into the order the leaves hold them in, and the
+ * references renumbered to match: queries then read neighbouring spheres
+ * from neighbouring memory, and answer as they would have (each sphere
+ * keeps its order, which settles ties); a hierarchy of spheres alone then
  * gives its references back (each slot's sphere is the one of that
- * index). Up to threads threads move them (in OpenMP builds). Returns
- * 0, or -1 (nothing moved) when memory runs out. */
-int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres, int threads);
+ * index). Without the memory to move them, they stay. Returns 0, or -1
+ * (nothing allocated) when memory runs out or there are BVH_MAX_OF_KIND
+ * shapes of a kind, or BVH_MAX_LINK / 2 in all. */
+int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads);
 
 /* Releases what *bvh owns. */
 void bvh_free(Bvh *bvh);
 
-/* Returns the most bytes bvh_build(), then bvh_renumber_spheres(), allocate
+/* Returns the most bytes bvh_build(), moving the spheres too, allocates
  * at once for n primitives. */
 size_t bvh_build_memory(size_t n);
 

@@ -228,13 +228,14 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
     Box box[BVH_WIDTH];
     uint32_t first[BVH_WIDTH]; /* a leaf's first primitive */
 
-    /* The leaves' primitives are read where the file put them, at random:
-     * memory is asked for all of them before the first is read. */
+    /* The leaves' primitives are read where the file put them (at random,
+     * unless the spheres were moved into the leaves' order): memory is
+     * asked for all of them before the first is read. */
     for (int k = 0; k < m; k++)
         if (members[k].leaf) {
             first[k] = bvh_first_prim(nodes, members[k].id);
             for (uint32_t i = first[k]; i < first[k] + nodes[members[k].id].size; i++)
-                bvh_prim_prefetch(&bvh->shapes, bvh->prims[i]);
+                bvh_prim_prefetch(&bvh->shapes, bvh_prim_ref(bvh, i));
         }
     memset(w, 0, sizeof *w); /* padding too: nodes compare with memcmp() */
     for (int k = 0; k < BVH_WIDTH; k++) {
@@ -246,7 +247,7 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
         if (members[k].leaf) {
             for (uint32_t i = first[k]; i < first[k] + c->size; i++) {
                 BuildPrim p;
-                bvh_prim_box(bvh, bvh->prims[i], pad, &p);
+                bvh_prim_box(bvh, bvh_prim_ref(bvh, i), pad, &p);
                 box_grow(&box[k], &p.box);
             }
             w->link[k] = bvh_link(first[k], c->size);

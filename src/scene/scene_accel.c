@@ -120,23 +120,23 @@ int scene_build_hierarchy(Scene *scene, int threads)
     BvhShapes shapes = {scene_spheres(scene),   scene_count_of(scene, SHAPE_SPHERE),
                         scene_triangles(scene), scene_count_of(scene, SHAPE_TRIANGLE),
                         scene_cubes(scene),     scene_count_of(scene, SHAPE_CUBE),
-                        scene_squares(scene),   scene_count_of(scene, SHAPE_SQUARE)};
+                        scene_squares(scene),   scene_count_of(scene, SHAPE_SQUARE),
+                        NULL};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
     if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
         return SCENE_OVER_LIMIT;
+    /* Spheres in the leaves' order are read from neighbouring memory. A
+     * transparent scene's keep the file's: shadow rays multiply their
+     * transparencies in that order (visibility.c). */
+    if (!scene->has_transparency)
+        shapes.movable = scene_spheres(scene);
     bvh = malloc(sizeof *bvh);
     if (!bvh || bvh_build(bvh, &shapes, scene_reach(scene), threads) != 0) {
         free(bvh);
         return -1;
     }
-    /* Spheres in the leaves' order are read from neighbouring memory. A
-     * transparent scene's keep the file's: shadow rays multiply their
-     * transparencies in that order (visibility.c). Without the memory to
-     * move them, they stay: the answers are the same. */
-    if (!scene->has_transparency)
-        (void)bvh_renumber_spheres(bvh, scene_spheres(scene), threads);
     scene->accel = bvh;
     return 0;
 }

@@ -102,6 +102,8 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     RTCGeometry g;
 
     (void)reach; /* the boxes' padding below allows for any */
+    /* Embree keeps its own order: shapes->movable's spheres stay where
+     * they are (bvh.h allows it: the answers are the same). */
     memset(bvh, 0, sizeof *bvh);
     bvh->shapes = *shapes;
     if (shapes->triangle_count > 0) {
@@ -128,16 +130,6 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     rtcCommitScene(eb_scene);
     bvh->prim_count = shapes->sphere_count;
     return 0;
-}
-
-/* Embree keeps its own order: the spheres stay where they are (bvh.h
- * allows it: the answers are the same). */
-int bvh_renumber_spheres(Bvh *bvh, Sphere *spheres, int threads)
-{
-    (void)bvh;
-    (void)spheres;
-    (void)threads;
-    return -1;
 }
 
 void bvh_free(Bvh *bvh)
