@@ -72,7 +72,9 @@ typedef struct {
                         node); leaf: the first of its primitives */
     uint32_t count;  /* primitives in a leaf; 0 for an interior node, until
                         bvh_plan() stores its plan there */
-    uint32_t size;   /* primitives in its subtree */
+    uint32_t size;   /* primitives in its subtree (after bvh_plan(), for
+                        a node of BVH_TASK_MIN or more, the wide nodes it
+                        makes) */
 } BuildNode;
 
 /* Returns coordinate axis of the centre of p's box, its centroid. */

@@ -21,6 +21,9 @@
                                         alone (it has fewer than BVH_WIDTH
                                         binary leaves) */
 #define BVH_PLAN_ONE_LEAF (1u << 23) /* as leaves alone, it is one */
+#define BVH_PLAN_COUNTED (1u << 24)  /* a node of BVH_TASK_MIN primitives or
+                                        more: its size now holds the wide
+                                        nodes it makes as a node */
 #define BVH_PLAN_NODE (1u << 31)     /* an interior node's plan, not a
                                         leaf's count */
 
@@ -129,6 +132,12 @@ static void bvh_plan_subtree(BuildNode *nodes, uint32_t id, const BuildPrim *pri
         out->made[0] = 0;
         word |= BVH_PLAN_LEAF;
     }
+    /* The collapse hands such a node to a task at the place its count
+     * leaves (its size is read no more). */
+    if (b->size >= BVH_TASK_MIN) {
+        word |= BVH_PLAN_COUNTED;
+        b->size = (uint32_t)out->node;
+    }
     b->count = word;
 }
 
@@ -197,18 +206,6 @@ static uint32_t bvh_first_prim(const BuildNode *nodes, uint32_t id)
     return nodes[id].index;
 }
 
-size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
-{
-    BvhMember members[BVH_WIDTH];
-    int m = bvh_members(nodes, id, members);
-    size_t count = 1;
-
-    for (int k = 0; k < m; k++)
-        if (!members[k].leaf)
-            count += bvh_collapsed_count(nodes, members[k].id);
-    return count;
-}
-
 /* Writes the node made from binary node id into bvh->nodes[self] and its
  * subtree's after it, in depth-first order (a child's subtree right after
  * the previous child's); stores the box of its children's boxes in *bounds
@@ -216,8 +213,8 @@ size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id)
  * returns how many nodes it wrote. A leaf's box is that of its primitives'
  * padded boxes in the frame (bvh_prim_box() with pad), as the build had
  * them. In an OpenMP parallel region, children of BVH_TASK_MIN primitives
- * or more are made by tasks, their places counted first: the nodes are
- * the same. */
+ * or more are made by tasks, at the places the plan's counts leave them:
+ * the nodes are the same. */
 size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth, real pad,
                     Bvh *bvh, Box *bounds, int *deepest)
 {
@@ -251,9 +248,9 @@ size_t bvh_collapse(const BuildNode *nodes, uint32_t id, size_t self, int depth,
                 box_grow(&box[k], &p.box);
             }
             w->link[k] = bvh_link(first[k], c->size);
-        } else if (c->size >= BVH_TASK_MIN) {
+        } else if (c->count & BVH_PLAN_COUNTED) {
             size_t at = next;
-            next += bvh_collapsed_count(nodes, members[k].id);
+            next += c->size;
             w->link[k] = bvh_link((uint32_t)at, 0);
 #ifdef _OPENMP
 #pragma omp task firstprivate(k, at) shared(box, deep)

@@ -13,13 +13,9 @@
  * which subtrees become a wide node's children, leaves or nodes, for the
  * least cost by the surface area heuristic; the plan replaces each
  * interior node's count (0). Each node has BVH_WIDTH children, or fewer
- * and all leaves. Returns how many wide nodes the plan makes: what
- * bvh_collapsed_count() counts from the root. */
+ * and all leaves. Returns how many wide nodes the plan makes; a node of
+ * BVH_TASK_MIN primitives or more keeps its own count in its size. */
 size_t bvh_plan(BuildNode *nodes, const BuildPrim *prims);
-
-/* Returns how many wide nodes collapsing planned binary node id's subtree
- * makes. */
-size_t bvh_collapsed_count(const BuildNode *nodes, uint32_t id);
 
 /* Writes the wide node made from planned binary node id, and its
  * subtree's, into bvh->nodes from self on; stores their bounds in *bounds and the depth of
