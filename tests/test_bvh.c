@@ -132,7 +132,7 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
         if (bvh_link_count(n->link[k]) > BVH_LEAF_MAX)
             (*bad)++;
         for (uint32_t i = bvh_link_index(n->link[k]); bvh_link_count(n->link[k]) > 0 && i < bvh_link_index(n->link[k]) + bvh_link_count(n->link[k]); i++) {
-            uint32_t ref = bvh->prims[i];
+            uint32_t ref = bvh_prim_ref(bvh, i);
             size_t base[4] = {0, scene_count_of(sc, SHAPE_SPHERE),
                               scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE),
                               scene_count_of(sc, SHAPE_SPHERE) +
@@ -576,6 +576,18 @@ static void bvh_renumbered_spheres_answer_as_in_file_order(void)
         CHECK_INT(0, scene_build_accel(&sc, 2));
         CHECK(sc.accel != NULL);
         CHECK(sc.accel && (sc.accel->prims == NULL) == alone);
+        if (sc.accel) { /* the leaves' boxes hold the spheres where they went */
+            size_t count = scene_bounded_count(&sc);
+            unsigned char *seen = calloc(count, 1);
+            int bad = !seen;
+            if (seen)
+                check_subtree(sc.accel, &sc, 0, 0, seen, &bad);
+            for (size_t i = 0; seen && i < count; i++)
+                bad += seen[i] != 1;
+            CHECK_INT(0, bad);
+            CHECK_INT((long long)sc.accel->node_count, (long long)reached_nodes(sc.accel, 0));
+            free(seen);
+        }
         renumbered_answers_as_file(&sc, &file);
         scene_free(&sc);
         scene_free(&file);

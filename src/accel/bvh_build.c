@@ -321,9 +321,9 @@ size_t bvh_build_memory(size_t n)
      * (a leaf: a subtree of the tree made one) give L - 1 = (W - 1) F + M - S,
      * M >= 2 S and M <= L, so F + S = (L - 1 - M + W S) / (W - 1) <=
      * (L - 1 + (W - 2) S) / (W - 1) <= W L / (2 (W - 1)). Before the
-     * nodes, moving the spheres takes the tree, the references and 9 bytes
-     * a primitive besides (whence to move each, a mark, and a sphere every
-     * BVH_MOVE_STRIDE), less than the nodes would. */
+     * nodes, moving the spheres takes the tree, the references and under
+     * 6 bytes a primitive besides (whence to move each, a mark, and a
+     * sphere every BVH_MOVE_STRIDE), less than the nodes would. */
     size_t build = sizeof(BuildPrim) + 2 * sizeof(BuildNode);
     size_t collapse = 2 * sizeof(BuildNode) + sizeof(uint32_t);
 
