@@ -405,6 +405,9 @@ static void bvh_is_the_same_built_by_one_thread_or_two(void)
     CHECK_INT(0, build_over(&two, &sc, 2));
     CHECK(one.node_count > 1000);
     CHECK_INT((long long)one.node_count, (long long)two.node_count);
+    /* The tasks' subtrees sit where the plan's counts put them: none
+     * overlaps another, none leaves a gap. */
+    CHECK_INT((long long)two.node_count, (long long)reached_nodes(&two, 0));
     CHECK(memcmp(one.nodes, two.nodes, one.node_count * sizeof *one.nodes) == 0);
     CHECK(memcmp(one.prims, two.prims, one.prim_count * sizeof *one.prims) == 0);
     bvh_free(&one);
