@@ -11,9 +11,10 @@ now() { date +%s%N; }
 # median: the median of the numbers on standard input, one a line.
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-# time_renders NAME OPTIONS...: runs "$RT" -q OPTIONS "$DIR/NAME.ppm" $RUNS
-# times (RT, DIR and RUNS the caller's); prints the median wall time in
-# seconds, or fails with the first render that fails.
+# time_renders NAME OPTIONS...: runs "$RT" -v OPTIONS "$DIR/NAME.ppm" $RUNS
+# times (RT, DIR and RUNS the caller's), the last run's report kept in
+# $DIR/NAME.log; prints the median wall time in seconds, or fails with the
+# first render that fails.
 time_renders() {
     name=$1
     shift
@@ -21,7 +22,7 @@ time_renders() {
     i=0
     while [ $i -lt "$RUNS" ]; do
         start=$(now)
-        "$RT" -q "$@" "$DIR/$name.ppm" || return 1
+        "$RT" -v "$@" "$DIR/$name.ppm" 2>"$DIR/$name.log" || { cat "$DIR/$name.log" >&2; return 1; }
         end=$(now)
         echo $(((end - start) / 1000000)) >>"$DIR/times"
         i=$((i + 1))

@@ -62,8 +62,10 @@ if [ "${GICACHE_PAGE_ONLY:-0}" != 1 ] || [ ! -s "$DIR/rows" ]; then
         while read -r opts; do
             # shellcheck disable=SC2086
             t=$(time_renders "$key-x" --size 200x200 --gi-bounces "$b" $opts "scenes/$s.txt") || exit 1
+            rays=$(sed -n 's/^raytrace: rays: .* \([0-9]*\) in all$/\1/p' "$DIR/$key-x.log")
             set -- $(errors "$key-ref" "$key-x")
-            printf '| %s | %s | `%s` | %.2f s | %s | %s |\n' "$s" "$b" "$opts" "$t" "$1" "$2" >>"$DIR/rows"
+            printf '| %s | %s | `%s` | %.2f s | %s | %s | %s |\n' "$s" "$b" "$opts" "$t" "$1" "$2" \
+                "${rays:-—}" >>"$DIR/rows"
         done <<LIST
 -s 8 --gi 16
 -s 16 --gi 16
@@ -99,29 +101,33 @@ awk -F'|' '
     FNR == NR { floor[trim($1) " | " trim($2)] = trim($3) + 0; next }
     {
         scene = trim($2); b = trim($3); opts = trim($4); t = trim($5) + 0; e = trim($6) + 0
+        r = trim($8) + 0
         kind = opts ~ /--gi-cache/ ? "cache" : opts ~ /--noise/ ? "noise" : "uniform"
         print scene "-b" b "-" kind, t, e > plot
         key = scene " | " b
         if (!(key in seen)) { seen[key] = 1; order[++keys] = key }
-        if (kind == "uniform") { n[key]++; ut[key, n[key]] = t; ue[key, n[key]] = e }
-        if (opts ~ /--gi-cache-error 0.3$/) { ct[key] = t; ce[key] = e }
+        if (kind == "uniform") { n[key]++; ut[key, n[key]] = t; ue[key, n[key]] = e; ur[key, n[key]] = r }
+        if (opts ~ /--gi-cache-error 0.3$/) { ct[key] = t; ce[key] = e; cr[key] = r }
     }
     END {
         for (k = 1; k <= keys; k++) {
-            key = order[k]; m = n[key]; c = ce[key]; at = 0
+            key = order[k]; m = n[key]; c = ce[key]; at = 0; rat = 0
             f0 = floor[key]
             own = c > f0 ? sprintf("%.3f", sqrt(c * c - f0 * f0)) : "none (below the floor)"
             for (i = 1; i < m; i++)
                 if (ue[key, i] >= c && ue[key, i + 1] <= c) {
                     f = (log(c) - log(ue[key, i])) / (log(ue[key, i + 1]) - log(ue[key, i]))
                     at = exp(log(ut[key, i]) + f * (log(ut[key, i + 1]) - log(ut[key, i])))
+                    if (ur[key, i] > 0 && ur[key, i + 1] > 0)
+                        rat = exp(log(ur[key, i]) + f * (log(ur[key, i + 1]) - log(ur[key, i])))
                 }
+            rays = rat > 0 && cr[key] > 0 ? sprintf("%.1f M | %.1f M | %.2f", cr[key] / 1e6, rat / 1e6, cr[key] / rat) : "— | — | —"
             if (at > 0)
-                printf "| %s | %.3f | %.3f | %s | %.2f s | %.2f s | %.2f |\n", key, c, f0, own, ct[key], at, ct[key] / at
+                printf "| %s | %.3f | %.3f | %s | %.2f s | %.2f s | %.2f | %s |\n", key, c, f0, own, ct[key], at, ct[key] / at, rays
             else if (c < ue[key, m])
-                printf "| %s | %.3f | %.3f | %s | %.2f s | over %.2f s (-s 64: RMSE %.3f) | under %.2f |\n", key, c, f0, own, ct[key], ut[key, m], ue[key, m], ct[key] / ut[key, m]
+                printf "| %s | %.3f | %.3f | %s | %.2f s | over %.2f s (-s 64: RMSE %.3f) | under %.2f | %s |\n", key, c, f0, own, ct[key], ut[key, m], ue[key, m], ct[key] / ut[key, m], rays
             else
-                printf "| %s | %.3f | %.3f | %s | %.2f s | under %.2f s (-s 8: RMSE %.3f) | over %.2f |\n", key, c, f0, own, ct[key], ut[key, 1], ue[key, 1], ct[key] / ut[key, 1]
+                printf "| %s | %.3f | %.3f | %s | %.2f s | under %.2f s (-s 8: RMSE %.3f) | over %.2f | %s |\n", key, c, f0, own, ct[key], ut[key, 1], ue[key, 1], ct[key] / ut[key, 1], rays
         }
     }' plot="$DIR/plot" "$DIR/floors" "$DIR/rows" >"$DIR/ratios"
 awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)" \
@@ -144,10 +150,15 @@ awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)"
     echo "-s 16 with its indirect light near exact (uniform, --gi $FLOOR_RAYS at every"
     echo "sample), what the camera's 16 samples (against the reference's $REF) and"
     echo "the 8-bit rounding leave whatever the cache does; the cache's own error:"
-    echo "the square root of its RMSE squared less the floor's."
+    echo "the square root of its RMSE squared less the floor's. Rays: every ray the"
+    echo "whole command casts (-v's count: primary, shadow and gathering rays,"
+    echo "the cache's pre-pass included), the same on every run and machine;"
+    echo "uniform's at the cache's RMSE read off its curve as its time is. Where"
+    echo "a ray costs the cache what it costs uniform sampling, the time ratio is"
+    echo "the rays ratio: the cache's rays are then what the ratio can gain on."
     echo
-    echo "| scene | bounces | cache's RMSE | -s 16's floor | cache's own error | cache's time | uniform's time at that RMSE | ratio |"
-    echo "|-------|---------|--------------|---------------|-------------------|--------------|-----------------------------|-------|"
+    echo "| scene | bounces | cache's RMSE | -s 16's floor | cache's own error | cache's time | uniform's time at that RMSE | ratio | cache's rays | uniform's rays at that RMSE | rays ratio |"
+    echo "|-------|---------|--------------|---------------|-------------------|--------------|-----------------------------|-------|--------------|-----------------------------|------------|"
     cat "$DIR/ratios"
     echo
     echo "The floor is most of the error at -s 16: where it is near 1 level no"
@@ -158,8 +169,8 @@ awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)"
     echo
     echo "![error against time](gicache.svg)"
     echo
-    echo "| scene | bounces | options | time | RMSE | worst 1% |"
-    echo "|-------|---------|---------|------|------|----------|"
+    echo "| scene | bounces | options | time | RMSE | worst 1% | rays |"
+    echo "|-------|---------|---------|------|------|----------|------|"
     cat "$DIR/rows"
 } >"$OUT"
 echo "gicache: wrote $OUT" >&2
