@@ -160,6 +160,40 @@ if [ -n "$have_anchor" ]; then
         sed 's/^/- /' "$DIR/who" >>"$section"
         echo >>"$section"
     fi
+    # What bounds the 1,000-sphere field: the same race at each depth
+    # (both programs' --max-depth), so that what each kind of ray costs the
+    # two is seen apart.
+    {
+        echo "### The 1,000-sphere field by depth"
+        echo
+        echo "spheres_1k again with both programs' \`--max-depth\` at 0 (primary rays"
+        echo "and their shadow rays alone), 1 (the first mirror rays too) and 10 (the"
+        echo "race's), run for run alternately, $RUNS runs each, medians of the whole"
+        echo "command; the rays each depth casts (the anchor's count). Depth 0 is"
+        echo "what the field costs before any mirror ray."
+        echo
+        echo "| depth | rays | anchor | raytrace | time ratio |"
+        echo "|-------|------|--------|----------|------------|"
+    } >>"$section"
+    for d in 0 1 10; do
+        : >"$DIR/t-a"
+        : >"$DIR/t-r"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            timed "$DIR/t-a" "$DIR/embree_rt" "$DIR/spheres_1k.txt" "$DIR/a.ppm" --threads "$ALL" \
+                --max-depth "$d"
+            cp "$DIR/err" "$DIR/err-a"
+            timed "$DIR/t-r" "$RT" -q -j "$ALL" --max-depth "$d" "$DIR/spheres_1k.txt" "$DIR/r.ppm"
+            i=$((i + 1))
+        done
+        rays=$(sed -n 's/.*| rays \([0-9]*\) (primary \([0-9]*\), shadow \([0-9]*\), reflection \([0-9]*\)).*/\1 (\2 primary, \3 shadow, \4 reflection)/p' "$DIR/err-a")
+        a=$(cut -d' ' -f1 "$DIR/t-a" | median)
+        r=$(cut -d' ' -f1 "$DIR/t-r" | median)
+        printf '| %s | %s | %s s | %s s | %.2f |\n' "$d" "${rays:-?}" "$(seconds "$a")" \
+            "$(seconds "$r")" "$(echo "$r / $a" | bc -l)" >>"$section"
+        echo "anchor: spheres_1k at depth $d: anchor $a ms, raytrace $r ms" >&2
+    done
+    echo >>"$section"
 else
     echo "No anchor was found or built in this run (BENCH_ANCHOR, libembree-dev): no race." >>"$section"
     echo >>"$section"
