@@ -26,30 +26,27 @@ SUITE=layers
 . "$(dirname "$0")/lib.sh"
 
 
-# rank FOLDER: its place in LAYERS from 0, or nothing when it is not one.
-rank() { echo "$LAYERS" | tr ' ' '\n' | awk -v f="$1" '$0 == f { print NR - 1 }'; }
-
 # check ROOT: prints each breach of rules 1 and 2 in the tree at ROOT;
 # prints nothing when it holds.
 check() {
     module_edges "$1" >"$T/edges"
     for d in "$1"/src/* "$1"/include/*; do
-        [ -d "$d" ] && [ -z "$(rank "${d##*/}")" ] && echo "folder ${d#"$1"/} is not a layer of tests/layers.sh"
+        [ -d "$d" ] || continue
+        case " $LAYERS " in *" ${d##*/} "*) ;; *) echo "folder ${d#"$1"/} is not a layer of tests/layers.sh" ;; esac
     done
-    while read -r from to; do
-        rf=$(rank "${from%/*}") rt=$(rank "${to%/*}")
-        [ -n "$rf" ] && [ -n "$rt" ] && [ "$rt" -gt "$rf" ] &&
-            echo "$from includes $to: ${to%/*} is above ${from%/*}"
-    done <"$T/edges"
+    awk -v layers="$LAYERS" 'BEGIN { n = split(layers, l, " "); for (i = 1; i <= n; i++) rank[l[i]] = i }
+        { f = $1; t = $2; sub(/\/.*/, "", f); sub(/\/.*/, "", t)
+          if ((f in rank) && (t in rank) && rank[t] > rank[f]) print $1 " includes " $2 ": " t " is above " f }' "$T/edges"
     tsort "$T/edges" >/dev/null 2>"$T/tsort" || sed 's/^tsort: //' "$T/tsort"
 }
 
 # call_circles OBJECT...: prints the circles of calls between the object
 # files (A calls B when A uses a symbol B defines); nothing when none.
 call_circles() {
-    for o; do nm -g --defined-only "$o" | awk -v f="$o" 'NF == 3 { print $3, f }'; done |
-        sort >"$T/defined"
-    for o; do nm -u "$o" | awk -v f="$o" '{ print $NF, f }'; done | sort >"$T/used"
+    # nm -A: each line "FILE:[VALUE] TYPE SYMBOL"; one nm for all files.
+    split='{ i = index($0, ":"); n = split(substr($0, i + 1), w, " "); f = substr($0, 1, i - 1) }'
+    nm -A -g --defined-only "$@" | awk "$split"' n == 3 { print w[3], f }' | sort >"$T/defined"
+    nm -A -u "$@" | awk "$split"' n >= 2 { print w[n], f }' | sort >"$T/used"
     join "$T/used" "$T/defined" | awk '$2 != $3 { print $2, $3 }' | sort -u >"$T/calls"
     tsort "$T/calls" >/dev/null 2>"$T/tsort" || sed 's/^tsort: //' "$T/tsort"
 }

@@ -49,16 +49,13 @@ seconds() { printf '%.2f' "$(echo "$1 / 1000" | bc -l)"; }
 # module_edges ROOT: "FROM TO" once for each quoted include between two
 # modules of the tree at ROOT (a module is FOLDER/NAME: src/F/NAME.c with
 # include/F/NAME.h or src/F/NAME.h; a bare "NAME.h" is a header beside the
-# file, in its own folder), sorted.
+# file, in its own folder), sorted. One awk reads every file.
 module_edges() {
-    (cd "$1" && find src include -name '*.[ch]' | sort | while read -r f; do
-        from=$(printf '%s\n' "$f" | awk -F/ '{ n = $3; sub(/\.[ch]$/, "", n); print $2 "/" n }')
-        sed -n 's/^#[ \t]*include[ \t]*"\([^"]*\)".*/\1/p' "$f" | while read -r inc; do
-            case $inc in
-            */*) to=${inc%.h} ;;
-            *) to=${from%/*}/${inc%.h} ;;
-            esac
-            [ "$from" != "$to" ] && echo "$from $to"
-        done
-    done | sort -u)
+    (cd "$1" && find src include -name '*.[ch]' | sort | xargs awk '
+        FNR == 1 { n = split(FILENAME, p, "/"); name = p[3]; sub(/\.[ch]$/, "", name); from = p[2] "/" name }
+        /^#[ \t]*include[ \t]*"/ {
+            inc = $0; sub(/^#[ \t]*include[ \t]*"/, "", inc); sub(/".*/, "", inc)
+            to = inc ~ /\// ? inc : p[2] "/" inc; sub(/\.h$/, "", to)
+            if (from != to) print from, to
+        }' | sort -u)
 }

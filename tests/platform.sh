@@ -145,15 +145,17 @@ fi
 
 # An interrupt (Ctrl-C: Wine makes SIGINT the console's Ctrl-C event) ends
 # a render with 130 and its message, the existing output kept.
+# It waits for -v's first line (the scene is read), not a fixed time.
 printf 'old output\n' >"$T/dir/kept.ppm"
-"$RT" --size 1600x1600 -s 64 scenes/glass.txt "$T/dir/kept.ppm" 2>"$T/err" &
-sleep 3
+: >"$T/err"
+$DEFAULT_INT "$RT" -v --size 1600x1600 -s 64 scenes/glass.txt "$T/dir/kept.ppm" 2>"$T/err" &
+awaits $! "$T/err" "read the scene" || fail "an interrupt: the render ended before its first line"
 pkill -INT -f "glass.txt $T/dir/kept.ppm" || kill -INT $!
 wait $!
 code=$?
 tr -d '\r' <"$T/err" >"$T/int"
 [ "$code" = 130 ] && grep -q '^raytrace: interrupted$' "$T/int" && pass ||
-    fail "an interrupt: exit $code, expected 130 and its message" "$(cat "$T/int")"
+    fail "an interrupt: exit $code, expected 130 and its message" "$(describe "$T/int")"
 [ "$(cat "$T/dir/kept.ppm")" = "old output" ] && pass || fail "an interrupt changed the existing output"
 expect_clean "nothing left beside the output after an interrupt" "$T/dir"
 

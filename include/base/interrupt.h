@@ -7,7 +7,10 @@
  * status 128 + the signal's number (130 for Ctrl-C, 143 for SIGTERM or a
  * closing console). Any exit the program did not choose (the OpenMP
  * runtime's fatal errors call exit() from its threads) removes the
- * temporary file too. interrupt_posix.c and interrupt_win32.c say how.
+ * temporary file too. An interrupt the process's parent set to be ignored
+ * (a POSIX shell's background job, nohup; on Windows, a process group
+ * started with Ctrl-C disabled) stays ignored. interrupt_posix.c and
+ * interrupt_win32.c say how.
  */
 #ifndef RAYTRACE_INTERRUPT_H
 #define RAYTRACE_INTERRUPT_H

@@ -25,7 +25,12 @@ typedef struct {
  * call). */
 const char *summary_samples_text(const RenderOptions *ropts);
 
-/* Prints -v's statistics of the render of scene into img with ropts on
+/* Prints -v's first line, "raytrace: read the scene in T s", as soon as
+ * the scene is read: a render's first sign of life (and a test's sign that
+ * an interrupt will be caught, which it is from the program's start). */
+void summary_read(double seconds);
+
+/* Prints -v's statistics, after summary_read(), of the render of scene into img with ropts on
  * `threads` threads, which cast counts' rays (spp_map: --spp-map's file,
  * or NULL). */
 void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,

@@ -46,6 +46,18 @@ static void interrupt_at_exit(void)
         unlink(path);
 }
 
+/* Gives sig to sa's handler, unless the process started with sig ignored
+ * (a job its shell started in the background, nohup): that choice of the
+ * parent's stands, as POSIX shells expect of their commands. */
+static void interrupt_take(int sig, const struct sigaction *sa)
+{
+    struct sigaction now;
+
+    if (sigaction(sig, NULL, &now) == 0 && now.sa_handler == SIG_IGN)
+        return;
+    sigaction(sig, sa, NULL);
+}
+
 void interrupt_catch(const char *message)
 {
     static int caught;
@@ -58,8 +70,8 @@ void interrupt_catch(const char *message)
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = interrupt_on_signal;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    interrupt_take(SIGINT, &sa);
+    interrupt_take(SIGTERM, &sa);
     atexit(interrupt_at_exit);
 }
 

@@ -45,7 +45,6 @@ static int main_open_output(OutFile *out, const char *path, Error *err)
 {
     int rc;
 
-    interrupt_catch("raytrace: interrupted\n");
     interrupt_hold();
     out->temp[0] = '\0';
     interrupt_watch(out->temp);
@@ -514,19 +513,20 @@ static int main_render(const Options *opts)
     IrradianceStats gi_stats = {0, 0, 0, 0};
     Tile tile;
     char record[TILE_RECORD_MAX];
-    int rows;
     double start = process_seconds(), write_start;
     SummaryTimes times = {0, 0, 0, 0, 0, 0};
     SceneSource source;
     Scene scene;
     Image img;
     Error err;
-    int threads, rc;
+    int rows, threads, rc;
 
     gicache_init(&cache, 0, 1, 0);
     if (main_load(opts, &scene, &source) != 0)
         return 1;
     times.read = process_seconds() - start;
+    if (opts->verbose)
+        summary_read(times.read);
     adjust_render(opts, &scene, &ropts);
     if (strcmp(opts->output_path, "-") == 0 && file_is_terminal(stdout)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");
@@ -563,7 +563,6 @@ static int main_render(const Options *opts)
     }
     /* The render needs no file: the output is created once the picture is
      * done, so that nothing is left of it whatever ends the render. */
-    interrupt_catch("raytrace: interrupted\n");
     if (ropts.indirect.gi_cache &&
         main_gi_cache(opts, &scene, &ropts, &cache, &gi_stats, &counts, &err) != 0)
         goto fail_image_only;
@@ -609,6 +608,9 @@ int main(int argc, char **argv)
     OptionsAction action;
 
     process_init(&argc, &argv);
+    /* From its first instruction on, an interrupt ends raytrace (130 or 143)
+     * and leaves every file as it was, unless its parent ignores it. */
+    interrupt_catch("raytrace: interrupted\n");
     action = options_parse(&opts, argc, argv, threads_processors(), msg,
                                          sizeof msg);
 

@@ -128,11 +128,15 @@ static void summary_noise(const RenderOptions *ropts, size_t n, const char *spp_
                 spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
 }
 
+void summary_read(double seconds)
+{
+    fprintf(stderr, "raytrace: read the scene in %.3f s\n", seconds);
+}
+
 void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,
                      const char *spp_map, const SummaryTimes *times, int threads,
                      const RayCounts *counts)
 {
-    fprintf(stderr, "raytrace: read the scene in %.3f s\n", times->read);
     if (scene->accel)
         fprintf(stderr, "raytrace: bounding volume hierarchy: %zu nodes, depth %d, built in "
                         "%.3f s%s\n",
