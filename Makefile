@@ -259,7 +259,7 @@ check:
 # TEST_LEVEL=quick).
 SUITE_ENV = RAYTRACE_TEST_LEVEL=$(TEST_LEVEL)
 test-unit: $(BUILD)/unit$(EXE)
-	$(BUILD)/unit$(EXE) || $(SUITE_FAILED)
+	$(SUITE_ENV) $(BUILD)/unit$(EXE) || $(SUITE_FAILED)
 test-replay: $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
 	@for t in $(FUZZ_TARGETS); do (cd scenes && ../$(BUILD)/replay/$$t \
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || $(SUITE_FAILED); done

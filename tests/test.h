@@ -52,4 +52,9 @@ void test_check_contains(const char *file, int line, const char *expr, const cha
 void test_check_error(const char *file, int line, const char *what, const void *err,
                       int want_line, int want_column, const char *want_message);
 
+/* Returns n, the trials of a random test in full (make check), or a tenth
+ * of them, at least one, in the quick suite (make test, which sets
+ * RAYTRACE_TEST_LEVEL=quick). */
+int test_trials(int n);
+
 #endif

@@ -463,7 +463,7 @@ static void keyword_numbers_print_shortest_and_read_back(void)
     CHECK(strcmp(number_format(buf, 0.1 + 0.2), "0.30000000000000004") == 0);
     CHECK(strcmp(number_format(buf, 2.2250738585072014e-308), "2.2250738585072014e-308") == 0);
     /* Random doubles of every magnitude read back to the same bits. */
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0, n = test_trials(100000); i < n; i++) {
         double x = ldexp(rng_range(-1, 1), (int)rng_range(-1000, 49)), back = 0;
         int digits = 0;
         number_format(buf, x);

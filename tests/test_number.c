@@ -88,7 +88,7 @@ static void number_format_reads_back_exactly(void)
     char buf[NUMBER_FORMAT_MAX];
     int bad = 0;
 
-    for (int i = 0; i < 100000; i++) {
+    for (int i = 0, n = test_trials(100000); i < n; i++) {
         double x = rng_range(-1, 1) * rng_log_scale(-300, 15), back = 0;
         number_format(buf, x);
         if (number_parse(buf, strlen(buf), &back) != NUMBER_OK || !number_same(x, back)) {

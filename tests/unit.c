@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
@@ -71,6 +72,13 @@ void test_check_error(const char *file, int line, const char *what, const void *
         e->column != want_column)
         test_fail(file, line, "%s: expected %d:%d \"%s\", got %d:%d \"%s\"", what, want_line,
                   want_column, want_message, e->line, e->column, e->message);
+}
+
+int test_trials(int n)
+{
+    const char *level = getenv("RAYTRACE_TEST_LEVEL");
+
+    return level && strcmp(level, "quick") == 0 ? (n + 9) / 10 : n;
 }
 
 /* Says whether name is selected by the filters in argv[1..argc-1]. */
