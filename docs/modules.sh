@@ -25,11 +25,10 @@ modules() {
 # The structures a module's headers declare: "MODULE TYPE" lines, in the
 # order of the header.
 types() {
-    for h in include/*/*.h src/*/*.h; do
-        m=$(printf '%s\n' "$h" | awk -F/ '{ n = $3; sub(/\.h$/, "", n); print $2 "/" n }')
-        awk -v m="$m" '/^typedef struct[^;]*$/ { s = 1; next }
-            s && /^} *[A-Za-z_][A-Za-z0-9_]* *;/ { t = $2; sub(/;.*/, "", t); print m, t; s = 0 }' "$h"
-    done
+    awk 'FNR == 1 { n = split(FILENAME, p, "/"); m = p[2] "/" p[3]; sub(/\.h$/, "", m) }
+        /^typedef struct[^;]*$/ { s = 1; next }
+        s && /^} *[A-Za-z_][A-Za-z0-9_]* *;/ { t = $2; sub(/;.*/, "", t); print m, t; s = 0 }' \
+        include/*/*.h src/*/*.h
 }
 
 T=${TMPDIR:-/tmp}/modules.$$

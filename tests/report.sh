@@ -43,9 +43,10 @@ else
     fail "docs/modules.dot does not match the code: run make report (or sh docs/modules.sh >docs/modules.dot)" \
         "$(diff docs/modules.dot "$T/modules.dot" | head -20)"
 fi
-mkdir -p "$T/tree/tests"
-cp -R src include docs "$T/tree/"
+mkdir -p "$T/tree/tests" "$T/tree/docs"
+cp -R src include "$T/tree/"
 cp tests/lib.sh "$T/tree/tests/"
+cp docs/modules.sh "$T/tree/docs/"
 echo '#include "render/trace.h"' >>"$T/tree/src/base/grow.c" 2>/dev/null ||
     echo '#include "render/trace.h"' >"$T/tree/src/base/grow.c"
 (cd "$T/tree" && sh docs/modules.sh >"$T/planted.dot" 2>/dev/null)
