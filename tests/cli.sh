@@ -84,12 +84,13 @@ if script -qc true /dev/null >/dev/null 2>&1; then
     expect_grep "summary on a terminal" "raytrace: wrote $T/tty.ppm: 8 x 8 pixels, 1 object," "$T/tty"
     script -qc "$RT -q $T/small.txt $T/tty.ppm" /dev/null >"$T/tty" 2>&1
     [ ! -s "$T/tty" ] && pass || fail "-q prints on a terminal" "$(cat "$T/tty")"
-    # A render long enough for the progress bar, which is then erased.
-    script -qc "$RT --spp 8 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
+    # A render long enough for the progress bar (half a second on one
+    # thread), which is then erased.
+    script -qc "$RT -j 1 --spp 16 --size 240x180 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
     expect_grep "progress bar" "% [#" "$T/tty"
     expect_grep "progress ETA" " s left" "$T/tty"
     expect_grep "progress bar erased" "$(printf '\r\033[K')raytrace: wrote" "$T/tty"
-    script -qc "$RT -q --spp 8 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
+    script -qc "$RT -q -j 1 --spp 16 --size 240x180 scenes/glass.txt $T/bar.ppm" /dev/null >"$T/tty" 2>&1
     [ ! -s "$T/tty" ] && pass || fail "-q draws a progress bar" "$(cat "$T/tty")"
 elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
     fail "script(1) is missing: the terminal tests cannot run"
