@@ -239,8 +239,9 @@ $(BUILD)/tests/unit.o: tests/unit.c $(SUITES_H) $(FLAGS_STAMP)
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 TEST_JOBS = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
 TEST_LEVEL ?= full
-# In the order make starts them: raytrace's objects and link first.
-QUICK_SUITES := golden report unit cli hostile install layers jpeg tiles faults noise
+# In the order make starts them: raytrace's objects and link first, then
+# the longest suites first.
+QUICK_SUITES := golden cli report unit jpeg faults hostile tiles noise install layers
 FULL_SUITES := $(QUICK_SUITES) replay
 .PHONY: $(FULL_SUITES:%=test-%)
 
