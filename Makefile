@@ -44,19 +44,18 @@ ifeq ($(origin CC),default)
 CC := $(shell command -v cc >/dev/null 2>&1 && echo cc || echo gcc)
 endif
 
-# Link-time optimisation when $(CC) can do it: a ray's hot path runs through
-# several modules (render/trace.c, shade.c, visibility.c), which LTO
-# inlines into one another (docs/log.md: without it the course scene took
-# 5% longer, glass.txt 8%). The same bytes either way. Only raytrace is
-# linked so: where the compiler can (GCC), the objects also keep their
-# plain code (fat objects), which the tests and the other tools link
-# without LTO's second optimisation ($(NO_LTO)): a fresh make test builds
-# in half the time.
+CFLAGS ?= -O3
+# Link-time optimisation of the hot path, when $(CC) can do it: a ray runs
+# through several modules (render/trace.c, shade.c, visibility.c, the
+# shapes' tests), which LTO inlines into one another (docs/log.md: without
+# it glass.txt takes 9% longer). LTO holds the flags, empty for none; they
+# apply to the objects of the layers a ray runs through (math, geometry,
+# accel, scene, render) and to raytrace's link alone. Those objects keep
+# their plain code too (fat objects, GCC's), which the tests and the other
+# tools link as they are: a fresh make test builds in half the time. The
+# same bytes either way.
 LTO_TRY = printf 'int main(void){return 0;}\n' | $(CC) $(1) -x c - -o /dev/null >/dev/null 2>&1
-LTO_PROBE := $(shell $(call LTO_TRY,-flto=auto -ffat-lto-objects -fno-lto) \
-	&& echo -flto=auto -ffat-lto-objects || { $(call LTO_TRY,-flto=auto) && echo -flto=auto; })
-CFLAGS ?= -O3 $(LTO_PROBE)
-NO_LTO := $(if $(findstring -ffat-lto-objects,$(CFLAGS)),-fno-lto)
+LTO ?= $(shell $(call LTO_TRY,-flto=auto -ffat-lto-objects) && echo -flto=auto -ffat-lto-objects)
 
 BUILD ?= build
 
@@ -149,7 +148,7 @@ endif
 
 # Objects are rebuilt when the flags change (say, OPENMP=0 or a sanitizer).
 FLAGS_STAMP := $(BUILD)/flags
-FLAGS_NOW := $(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) $(LDLIBS) $(AVX2_FLAGS)
+FLAGS_NOW := $(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LTO) $(RT_LDFLAGS) $(LDFLAGS) $(LDLIBS) $(AVX2_FLAGS)
 ifneq ($(shell cat $(FLAGS_STAMP) 2>/dev/null),$(strip $(FLAGS_NOW)))
 $(shell mkdir -p $(BUILD) && echo '$(strip $(FLAGS_NOW))' > $(FLAGS_STAMP))
 endif
@@ -189,21 +188,27 @@ ifneq ($(OUT)/$(EXE),./)
 raytrace raytrace-diff raytrace-merge: %: $(OUT)/%$(EXE)
 endif
 
+# The hot path's objects, compiled for LTO (above), and raytrace linked with
+# it ("private": its prerequisites do not inherit it).
+HOT_OBJ := $(filter $(foreach l,math geometry accel scene render,$(BUILD)/$(l)/%),$(LIB_OBJ))
+$(HOT_OBJ): RT_LTO = $(LTO)
+$(OUT)/raytrace$(EXE): private RT_LTO = $(LTO)
+
 $(OUT)/raytrace$(EXE): $(RAYTRACE_OBJ) $(LIB_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LTO) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(BUILD)/unit$(EXE): $(TEST_OBJ) $(LIB_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # raytrace-diff and raytrace-merge need images alone: the layers below
 # geometry (link-time optimisation then reads a third of the objects).
 TOOL_OBJ := $(filter $(BUILD)/base/% $(BUILD)/math/% $(BUILD)/image/%,$(LIB_OBJ))
 
 $(OUT)/raytrace-diff$(EXE): $(BUILD)/cli/diff_main.o $(BUILD)/cli/args.o $(TOOL_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 $(OUT)/raytrace-merge$(EXE): $(BUILD)/cli/merge_main.o $(BUILD)/cli/args.o $(TOOL_OBJ)
-	$(CC) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The fault injector tests/faults.sh preloads (test-only, glibc): built with
 # flags of its own, since a sanitizer's runtime cannot be preloaded.
@@ -213,19 +218,19 @@ $(BUILD)/inject.so: tests/inject.c
 
 $(BUILD)/%.o: src/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(RT_LTO) -c -o $@ $<
 
 $(BUILD)/accel/bvh_query_avx2.o: src/accel/bvh_query.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(AVX2_FLAGS) -c -o $@ $<
+	$(CC) $(RT_CPPFLAGS) $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(RT_LTO) $(AVX2_FLAGS) -c -o $@ $<
 
 $(BUILD)/tests/%.o: tests/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) -c -o $@ $<
+	$(CC) $(RT_CPPFLAGS) -Itests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 $(BUILD)/tests/unit.o: tests/unit.c $(SUITES_H) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CPPFLAGS) -Itests -I$(BUILD)/tests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) -c -o $@ $<
+	$(CC) $(RT_CPPFLAGS) -Itests -I$(BUILD)/tests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
 # make test, README's second command: the quick suite, at most a minute on
 # two cores from a fresh clone, build included: the unit tests, the golden
@@ -447,7 +452,7 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_scene.h $(FUZZ_OBJ)
 $(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h $(LIB_OBJ) \
 		$(wildcard include/*/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(RT_CPPFLAGS) -Itests/fuzz $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(NO_LTO) $(LDFLAGS) -o $@ \
+	$(CC) $(RT_CPPFLAGS) -Itests/fuzz $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ \
 		$< tests/fuzz/replay.c $(LIB_OBJ) $(RT_LDLIBS) $(LDLIBS)
 
 fuzz: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
