@@ -26,7 +26,7 @@
 #     next render to that output removes it, and only what dead processes
 #     of this machine left.
 #
-# The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) kills at 10
+# The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) kills at 6
 # moments, races twice and injects each fault at the first, a middle and
 # the last of its calls; make check does all.
 #
@@ -51,7 +51,7 @@ took=$((($(date +%s%N) - start) / 1000000))
 
 # --- 1. SIGKILL at 50 moments from 0 to 1.2 times the render's time ---
 moments=50 races=10
-full || moments=10 races=2
+full || moments=6 races=2
 mkdir "$T/o"
 survived=0 finished=0 committing=0
 i=0

@@ -28,7 +28,7 @@
 # saying so, unless RAYTRACE_TEST_TOOLS=required (CI), where that fails.
 #
 # The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) takes a sample of
-# each part: three sources at seven settings, the sizes up to 5 x 5, one
+# each part: two sources at five settings, the sizes up to 3 x 3, one
 # orientation, two scenes written at two settings, two odd sizes; make
 # check takes them all.
 #
@@ -70,8 +70,8 @@ if have cjpeg && have djpeg; then
     sources="render materials n1 n7 n17 n33 n257"
     settings='-quality 90;-quality 10;-quality 50 -sample 1x1;-quality 100;-sample 2x1;-sample 1x2;-sample 2x2;-sample 4x1;-sample 1x4;-sample 4x2;-sample 2x2,1x1,2x1;-progressive;-progressive -sample 1x1;-grayscale;-grayscale -progressive;-restart 1;-restart 3b -sample 2x1;-optimize;-smooth 40;-dct float -quality 95;-baseline -quality 5'
     if ! full; then
-        sources="render n7 n33"
-        settings='-quality 90;-sample 2x1;-sample 2x2;-progressive;-grayscale;-restart 1;-optimize'
+        sources="render n33"
+        settings='-quality 90;-sample 2x1;-progressive;-grayscale;-restart 1'
     fi
     for src in $sources; do
         for opts in $(printf '%s' "$settings" | tr ' ;' '@ '); do
@@ -98,9 +98,9 @@ if have cjpeg && have djpeg; then
     # Every size from 1 x 1 to 17 x 17 under each chroma subsampling, of
     # noise: where a subsampled component is 1 or 2 samples wide, libjpeg
     # repeats its samples instead of filtering them (the quick suite: up to
-    # 5 x 5).
+    # 3 x 3).
     last=17
-    full || last=4
+    full || last=3
     sizes=0 bad=""
     w=1
     while [ $w -le $last ]; do
