@@ -125,6 +125,37 @@ for f in glass focus; do
     expect_exit "$f ppm" 0 "$RT" --spp 2 "scenes/$f.txt" "$T/$f.ppm"
     expect_exit "$f png = ppm" 0 "$DIFF" "$T/$f.ppm" "$T/$f.png"
 done
+# BMP: 24 bits, rows bottom to top, padded to 4 bytes (a 7-pixel width
+# needs 3 bytes of it), the PPM's pixels; netpbm's bmptopnm, when
+# installed, reads them too.
+expect_exit "bmp by extension" 0 "$RT" "$scene" "$T/course.bmp"
+expect_exit "bmp = ppm" 0 "$DIFF" "$T/course.ppm" "$T/course.bmp"
+expect_exit "odd bmp" 0 "$RT" --size 7x5 "$scene" "$T/odd.BMP"
+expect_exit "odd ppm" 0 "$RT" --size 7x5 "$scene" "$T/odd.ppm"
+[ "$(head -c 2 "$T/odd.BMP")" = BM ] && [ "$(wc -c <"$T/odd.BMP")" -eq $((54 + 24 * 5)) ] && pass ||
+    fail "a 7 x 5 BMP is not 54 + 5 rows of 24 bytes" "$(describe "$T/odd.BMP")"
+if command -v bmptopnm >/dev/null; then
+    for f in course odd; do
+        b=$T/$f.bmp
+        [ -f "$b" ] || b=$T/$f.BMP
+        bmptopnm "$b" >"$T/netpbm.ppm" 2>"$T/err" && cmp -s "$T/netpbm.ppm" "$T/$f.ppm" && pass ||
+            fail "netpbm's bmptopnm reads other pixels in $b" "$(cat "$T/err")"
+    done
+elif [ "${RAYTRACE_TEST_TOOLS:-}" = required ]; then
+    fail "bmptopnm is missing"
+fi
+# An image format raytrace cannot write: exit 2, the formats it writes, no
+# file; --format overrides the name.
+for ext in tif TIFF gif webp exr tga; do
+    expect_exit "out.$ext refused" 2 "$RT" "$scene" "$T/out.$ext"
+    expect_grep "out.$ext lists the formats" "it writes PPM (.ppm), PNG (.png), PFM (.pfm), JPEG (.jpg, .jpeg) and BMP (.bmp)" "$T/err"
+    [ ! -e "$T/out.$ext" ] && pass || fail "out.$ext refused but written"
+done
+expect_exit "--format png out.tif" 0 "$RT" --format png "$scene" "$T/named.tif"
+head -c 8 "$T/named.tif" | od -An -tx1 | grep -q '89 50 4e 47' && pass || fail "--format png did not write a PNG"
+expect_exit "--spp-map out.gif refused" 2 "$RT" --noise 4 --spp-map "$T/map.gif" "$scene" "$T/x.ppm"
+expect_exit "no extension: PPM" 0 "$RT" "$scene" "$T/plain"
+cmp -s "$T/plain" "$T/course.ppm" && pass || fail "a name without an extension is not PPM"
 expect_exit "pfm by extension" 0 "$RT" "$scene" "$T/course.pfm"
 head -c 20 "$T/course.pfm" | head -3 | tr '\n' ' ' | grep -q '^PF 400 400 -1.0 ' && pass || fail "PFM header"
 expect_exit "pfm rounds to ppm" 0 "$DIFF" --tolerance 0.5 "$T/course.ppm" "$T/course.pfm"
@@ -135,8 +166,10 @@ expect_exit "ascii = binary" 0 "$DIFF" "$T/course.ppm" "$T/ascii.ppm"
 expect_exit "--format png to stdout" 0 sh -c "\"$RT\" --format png \"$scene\" - >\"$T/fmt.out\""
 expect_exit "--format png = ppm" 0 "$DIFF" "$T/course.ppm" "$T/fmt.out"
 expect_exit "--ascii with png" 2 "$RT" --ascii "$scene" "$T/x.png"
-expect_exit "--format bmp" 2 "$RT" --format bmp "$scene" "$T/x.bmp"
-expect_line "--format bmp message" 1 "raytrace: option '--format' takes ppm, png, pfm, jpeg or jpg, found 'bmp'" "$T/err"
+expect_exit "--format tiff" 2 "$RT" --format tiff "$scene" "$T/x.ppm"
+expect_line "--format tiff message" 1 "raytrace: option '--format' takes ppm, png, pfm, jpeg, jpg or bmp, found 'tiff'" "$T/err"
+expect_exit "--format bmp to stdout" 0 sh -c "\"$RT\" --format bmp \"$scene\" - >\"$T/fmt.bmp\""
+cmp -s "$T/fmt.bmp" "$T/course.bmp" && pass || fail "--format bmp to standard output is not the .bmp file"
 
 # --- raytrace-diff: statistics, tolerance, diff image, exit status ---
 "$RT" --max-depth 1 "$scene" "$T/d1.ppm"

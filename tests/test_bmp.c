@@ -2,6 +2,7 @@
  * written in every layout the reader takes, each read back to the same
  * bytes, and the files it must refuse, each with its reason. */
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "image/bmp.h"
@@ -196,7 +197,43 @@ static void bmp_is_a_picture_to_compare(void)
     }
 }
 
+/* bmp_write() writes what the reader reads back, pixel for pixel, at
+ * every row padding (widths 1 to 5), with the plain headers a viewer
+ * expects: 54 bytes of headers, 24 bits, rows bottom to top, the sizes. */
+static void bmp_writes_what_it_reads(void)
+{
+    for (int w = 1; w <= 5; w++) {
+        int h = 6 - w;
+        unsigned char rgb[3 * 5 * 5], data[256];
+        size_t len, row = ((size_t)w * 3 + 3) / 4 * 4;
+        FILE *f = tmpfile();
+        BmpImage img = {0, 0, 0, NULL};
+        Error err;
+
+        for (int i = 0; i < 3 * w * h; i++)
+            rgb[i] = (unsigned char)(37 * i + w);
+        CHECK(f != NULL);
+        if (!f)
+            return;
+        CHECK_INT(0, bmp_write(f, w, h, rgb));
+        rewind(f);
+        len = fread(data, 1, sizeof data, f);
+        fclose(f);
+        CHECK_INT((long long)(54 + row * (size_t)h), (long long)len);
+        CHECK(len > 54 && data[0] == 'B' && data[1] == 'M' && data[10] == 54 && data[14] == 40 &&
+              data[28] == 24);
+        /* The first row in the file is the picture's last, in BGR. */
+        CHECK(len > 56 && (unsigned char)data[54] == rgb[3 * w * (h - 1) + 2] &&
+              (unsigned char)data[56] == rgb[3 * w * (h - 1)]);
+        CHECK_INT(0, bmp_parse("out.bmp", (const unsigned char *)data, len, &img, &err));
+        CHECK(img.rgb && img.width == w && img.height == h && img.bits == 24 &&
+              memcmp(img.rgb, rgb, 3 * (size_t)w * (size_t)h) == 0);
+        bmp_free(&img);
+    }
+}
+
 const TestCase bmp_tests[] = {
+    {"bmp_writes_what_it_reads", bmp_writes_what_it_reads},
     {"bmp_reads_every_layout", bmp_reads_every_layout},
     {"bmp_refuses_what_it_cannot_read", bmp_refuses_what_it_cannot_read},
     {"bmp_is_a_picture_to_compare", bmp_is_a_picture_to_compare},

@@ -1,7 +1,8 @@
 /*
- * bmp.h: reading Windows bitmap (BMP) files, as textures and as pictures to
- * compare (seed 001's program saved its renders as BMP, whatever their
- * names said).
+ * bmp.h: Windows bitmap (BMP) files: reading them, as textures and as
+ * pictures to compare (the MPL ray tracer saved its renders as BMP,
+ * whatever their names said), and writing renders as the plainest BMP,
+ * which every Windows viewer opens.
  *
  * The reader takes the headers of every Windows version (BITMAPCOREHEADER,
  * BITMAPINFOHEADER and its V2 to V5 extensions, OS/2's 64-byte one) with
@@ -15,6 +16,7 @@
 #define RAYTRACE_BMP_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "base/error.h"
 
@@ -35,5 +37,11 @@ int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage 
 
 /* Releases img's pixels. */
 void bmp_free(BmpImage *img);
+
+/* Writes the width x height pixels at rgb (rows top to bottom, 3 bytes a
+ * pixel) to f as a 24-bit BMP: BITMAPINFOHEADER, rows bottom to top, each
+ * padded to 4 bytes, 72 dpi. Returns 0, or -1 with errno set when a write
+ * fails. */
+int bmp_write(FILE *f, int width, int height, const unsigned char *rgb);
 
 #endif

@@ -18,8 +18,12 @@ typedef enum {
     FORMAT_PPM, /* binary P6, or ASCII P3 with ascii set */
     FORMAT_PNG, /* 8-bit RGB PNG */
     FORMAT_PFM, /* linear float RGB */
-    FORMAT_JPEG /* baseline JPEG: lossy, smaller */
+    FORMAT_JPEG, /* baseline JPEG: lossy, smaller */
+    FORMAT_BMP   /* 24-bit Windows bitmap */
 } ImageFormat;
+
+/* The formats written and their extensions, for messages. */
+#define WRITER_FORMATS "PPM (.ppm), PNG (.png), PFM (.pfm), JPEG (.jpg, .jpeg) and BMP (.bmp)"
 
 typedef struct {
     ImageFormat format;
@@ -32,13 +36,20 @@ typedef struct {
                                keeps (a tile's record, tile.h), or NULL */
 } WriterOptions;
 
-/* Returns the format named name ("ppm", "png", "pfm", "jpeg" or "jpg"), or
- * -1. */
+/* Returns the format named name ("ppm", "png", "pfm", "jpeg", "jpg" or
+ * "bmp"), or -1. */
 int writer_format_named(const char *name);
 
-/* Returns the format path's extension names (.ppm, .png, .pfm, .jpg or
- * .jpeg, in any case), or FORMAT_PPM for any other name and for "-". */
+/* Returns the format path's extension names (.ppm, .pnm, .png, .pfm, .jpg,
+ * .jpeg or .bmp, in any case), or FORMAT_PPM for any other name and for
+ * "-". */
 ImageFormat writer_format_for(const char *path);
+
+/* Returns the name of the image format path's extension names when it is
+ * one of the other image formats ("TIFF" for .tif or .tiff, "GIF", "WebP",
+ * "OpenEXR", ...), which raytrace cannot write; NULL otherwise (a format it
+ * writes, an extension of no image format, none). */
+const char *writer_unwritable(const char *path);
 
 /* Returns the bytes a width x height image takes in memory, and writing it
  * as opts say on top of that (PNG: its filtered rows and their compressed

@@ -96,7 +96,7 @@ static int diff_options(int argc, char **argv, DiffOptions *o)
 {
     static const ArgTable table = {diff_specs, sizeof diff_specs / sizeof diff_specs[0], 2,
                                    "REFERENCE and IMAGE"};
-    char msg[256];
+    char msg[512];
     int n, rc;
 
     memset(o, 0, sizeof *o);
@@ -121,6 +121,12 @@ static int diff_options(int argc, char **argv, DiffOptions *o)
     }
     if (o->only && o->box)
         return diff_usage("--only and --box cannot be combined");
+    if (o->diff_path && writer_unwritable(o->diff_path)) {
+        snprintf(msg, sizeof msg,
+                 "--diff '%.60s': raytrace-diff cannot write %s images; it writes " WRITER_FORMATS,
+                 o->diff_path, writer_unwritable(o->diff_path));
+        return diff_usage(msg);
+    }
     return -1;
 }
 

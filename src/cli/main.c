@@ -604,7 +604,7 @@ fail_scene:
 int main(int argc, char **argv)
 {
     Options opts;
-    char msg[256];
+    char msg[512];
     OptionsAction action;
 
     process_init(&argc, &argv);

@@ -232,7 +232,7 @@ static int merge_options(int argc, char **argv, MergeOptions *o)
 {
     static const ArgTable table = {merge_specs, sizeof merge_specs / sizeof merge_specs[0], 0,
                                    "OUT and TILE"};
-    char msg[256];
+    char msg[512];
     int rc = args_parse(&table, o, argc, argv, o->paths, &o->npaths, msg, sizeof msg);
 
     if (rc == MERGE_HELP) {
@@ -245,7 +245,10 @@ static int merge_options(int argc, char **argv, MergeOptions *o)
     }
     if (rc == 0 && o->npaths < 2)
         snprintf(msg, sizeof msg, "%s", o->npaths ? "missing TILE" : "missing OUT and TILE");
-    if (rc < 0 || o->npaths < 2) {
+    else if (rc == 0 && writer_unwritable(o->paths[0]))
+        snprintf(msg, sizeof msg, "OUT '%.60s': raytrace-merge cannot write %s images; it writes "
+                 WRITER_FORMATS, o->paths[0], writer_unwritable(o->paths[0]));
+    if (rc < 0 || o->npaths < 2 || writer_unwritable(o->paths[0])) {
         fprintf(stderr, "raytrace-merge: %s\nTry 'raytrace-merge --help'.\n", msg);
         return 2;
     }
@@ -267,7 +270,7 @@ static int merge_run(const MergeOptions *o, Merge *m, Error *err)
     if ((w.format == FORMAT_PFM) != m->linear) {
         error_set(err, out_path,
                   m->linear ? "the tiles are PFM (linear colours): write a PFM"
-                            : "the tiles hold 8-bit pixels: write PPM, PNG or JPEG, not PFM");
+                            : "the tiles hold 8-bit pixels: write PPM, PNG, JPEG or BMP, not PFM");
         return -1;
     }
     if (merge_missing(m, err) != 0 || outfile_open(&out, out_path, err) != 0)

@@ -142,9 +142,9 @@ const char *const *options_help(void)
     return parts;
 }
 
-static const ArgWord options_formats[] = {{"ppm", FORMAT_PPM},   {"png", FORMAT_PNG},
-                                             {"pfm", FORMAT_PFM},   {"jpeg", FORMAT_JPEG},
-                                             {"jpg", FORMAT_JPEG}, {NULL, 0}};
+static const ArgWord options_formats[] = {
+    {"ppm", FORMAT_PPM},   {"png", FORMAT_PNG}, {"pfm", FORMAT_PFM}, {"jpeg", FORMAT_JPEG},
+    {"jpg", FORMAT_JPEG}, {"bmp", FORMAT_BMP}, {NULL, 0}};
 static const ArgWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
 static const ArgWord options_layouts[] = {{"rows", TILE_ROWS}, {"bands", TILE_BANDS}, {NULL, 0}};
 static const ArgWord options_filters[] = {{"nearest", TEXTURE_NEAREST},
@@ -204,6 +204,21 @@ static const ArgSpec options_table[] = {
 };
 #undef OPT
 
+/* Says in msg, of the file `what` names, that path's extension names an
+ * image format raytrace cannot write; returns -1 then, else 0. */
+static int options_unwritable(const char *what, const char *path, char *msg, size_t msg_size)
+{
+    const char *format = writer_unwritable(path);
+
+    if (!format)
+        return 0;
+    snprintf(msg, msg_size,
+             "%s '%.60s': raytrace cannot write %s images; it writes " WRITER_FORMATS
+             ", chosen by the extension (PPM for a name without one)",
+             what, path, format);
+    return -1;
+}
+
 /* Reads --tile K/N into opts (1 <= K <= N <= TILE_MAX), and checks that
  * the output can keep a tile's record; returns 0, or -1 with msg set. */
 static int options_tile(Options *opts, char *msg, size_t msg_size)
@@ -217,10 +232,11 @@ static int options_tile(Options *opts, char *msg, size_t msg_size)
                  TILE_MAX, opts->tile);
         return -1;
     }
-    if (opts->output_path && opts->format == FORMAT_JPEG) {
+    if (opts->output_path && (opts->format == FORMAT_JPEG || opts->format == FORMAT_BMP)) {
         snprintf(msg, msg_size,
-                 "--tile writes PPM, PNG or PFM tiles (lossless), which raytrace-merge puts "
-                 "together in any format: not JPEG");
+                 "--tile writes PPM, PNG or PFM tiles (each keeps its place in the picture), "
+                 "which raytrace-merge puts together in any format: not %s",
+                 opts->format == FORMAT_JPEG ? "JPEG" : "BMP");
         return -1;
     }
     opts->tile_k = k;
@@ -289,8 +305,11 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
     }
     opts->scene_path = positional[0];
     opts->output_path = npos > 1 ? positional[1] : NULL;
-    if (opts->format < 0 && opts->output_path)
+    if (opts->format < 0 && opts->output_path) {
+        if (options_unwritable("OUTPUT", opts->output_path, msg, msg_size) != 0)
+            return OPTIONS_USAGE;
         opts->format = (int)writer_format_for(opts->output_path);
+    }
     if (opts->ascii && opts->output_path && opts->format != FORMAT_PPM) {
         snprintf(msg, msg_size, "--ascii applies to PPM output only");
         return OPTIONS_USAGE;
@@ -304,12 +323,17 @@ OptionsAction options_parse(Options *opts, int argc, char **argv, int default_th
                  opts->max_spp);
         return OPTIONS_USAGE;
     }
-    if (opts->spp_map && !*opts->spp_map) {
-        snprintf(msg, msg_size, "--spp-map needs a file name");
+    if (opts->spp_map && (!*opts->spp_map ||
+                          options_unwritable("--spp-map", opts->spp_map, msg, msg_size) != 0)) {
+        if (!*opts->spp_map)
+            snprintf(msg, msg_size, "--spp-map needs a file name");
         return OPTIONS_USAGE;
     }
-    if (opts->gi_cache_map && !*opts->gi_cache_map) {
-        snprintf(msg, msg_size, "--gi-cache-map needs a file name");
+    if (opts->gi_cache_map &&
+        (!*opts->gi_cache_map ||
+         options_unwritable("--gi-cache-map", opts->gi_cache_map, msg, msg_size) != 0)) {
+        if (!*opts->gi_cache_map)
+            snprintf(msg, msg_size, "--gi-cache-map needs a file name");
         return OPTIONS_USAGE;
     }
     return opts->check ? OPTIONS_CHECK : opts->save_path ? OPTIONS_SAVE : OPTIONS_RENDER;

@@ -1,4 +1,4 @@
-/* bmp.c: reading Windows bitmaps (see bmp.h). */
+/* bmp.c: reading and writing Windows bitmaps (see bmp.h). */
 #include "image/bmp.h"
 
 #include <stdint.h>
@@ -257,4 +257,47 @@ int bmp_parse(const char *name, const unsigned char *data, size_t len, BmpImage 
             bmp_pixel(&b, row, x, out + 3 * x);
     }
     return 0;
+}
+
+/* Stores v at p, little-endian, in n bytes. */
+static void bmp_put(unsigned char *p, uint32_t v, int n)
+{
+    for (int i = 0; i < n; i++)
+        p[i] = (unsigned char)(v >> 8 * i);
+}
+
+int bmp_write(FILE *f, int width, int height, const unsigned char *rgb)
+{
+    size_t row = ((size_t)width * 3 + 3) / 4 * 4;
+    unsigned char head[BMP_FILE_HEADER + BMP_INFO] = {'B', 'M'}, *line = calloc(row, 1);
+    uint32_t data = (uint32_t)(row * (size_t)height);
+    int rc = 0;
+
+    if (!line)
+        return -1;
+    bmp_put(head + 2, (uint32_t)sizeof head + data, 4); /* the file's size */
+    bmp_put(head + 10, sizeof head, 4);                 /* where the pixels start */
+    bmp_put(head + 14, BMP_INFO, 4);
+    bmp_put(head + 18, (uint32_t)width, 4);
+    bmp_put(head + 22, (uint32_t)height, 4); /* positive: bottom to top */
+    bmp_put(head + 26, 1, 2);                /* planes */
+    bmp_put(head + 28, 24, 2);               /* bits a pixel */
+    bmp_put(head + 30, BMP_RGB, 4);
+    bmp_put(head + 34, data, 4);
+    bmp_put(head + 38, 2835, 4); /* 72 dpi, in pixels a metre */
+    bmp_put(head + 42, 2835, 4);
+    if (fwrite(head, 1, sizeof head, f) != sizeof head)
+        rc = -1;
+    for (int y = height - 1; y >= 0 && rc == 0; y--) {
+        const unsigned char *src = rgb + 3 * (size_t)width * (size_t)y;
+        for (int x = 0; x < width; x++) { /* BGR */
+            line[3 * x] = src[3 * x + 2];
+            line[3 * x + 1] = src[3 * x + 1];
+            line[3 * x + 2] = src[3 * x];
+        }
+        if (fwrite(line, 1, row, f) != row)
+            rc = -1;
+    }
+    free(line);
+    return rc;
 }
