@@ -18,7 +18,7 @@
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
 # make race         only its race against the exact Embree renderer, scaling
 #                   and shapes' fields (tests/bench/anchor.sh)
-# make seed001 SEED001=DIR  render seed 001's four scenes (DIR: a checkout of
+# make mpl MPL=DIR  render the MPL ray tracer's four scenes (DIR: a checkout of
 #                   its program's repository) and compare them with its renders
 # make trade        measure error against time for every speed/accuracy knob;
 #                   writes docs/trade.md and docs/trade-*.svg (and make
@@ -172,10 +172,10 @@ MANPAGES := docs/raytrace.1 docs/raytrace-diff.1 docs/raytrace-merge.1
 SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png \
-	docs/gallery/seed001-modelphysical.png docs/gallery/materials-noise4maxspp1024.png \
+	docs/gallery/mpl-modelphysical.png docs/gallery/materials-noise4maxspp1024.png \
 	docs/gallery/horizon-texturefilterbilinear.png docs/gallery/materials-texturefilterbilinear.png
 
-.PHONY: all test check clean install uninstall gallery bench race trade trade-cache report fuzz fuzz-long memcheck seed001
+.PHONY: all test check clean install uninstall gallery bench race trade trade-cache report fuzz fuzz-long memcheck mpl
 
 # The programs go to OUT (default: here), named NAME.exe on Windows; NAME
 # stands for them in the rules. make test-musl builds its own in a folder
@@ -344,8 +344,8 @@ docs/gallery/materials-noise4maxspp1024.png: scenes/materials.txt raytrace
 # at a point), beside their default renders.
 docs/gallery/%-texturefilterbilinear.png: scenes/%.txt raytrace
 	./raytrace -q --texture-filter bilinear $< $@
-# Seed 001's example by our physical model, beside its program's.
-docs/gallery/seed001-modelphysical.png: scenes/seed001.txt raytrace
+# The MPL ray tracer's example by our physical model, beside its program's.
+docs/gallery/mpl-modelphysical.png: scenes/mpl.txt raytrace
 	./raytrace -q --model physical $< $@
 
 # The single-precision build beside the double one, for `make trade`.
@@ -427,11 +427,11 @@ trade: raytrace raytrace-diff $(BUILD)/raytrace-float $(BUILD)/scenegen
 trade-cache: raytrace raytrace-diff
 	sh tests/bench/gicache.sh ./raytrace ./raytrace-diff
 
-# Seed 001's scenes against its program's renders (docs/seed001.md): give
-# the path of a checkout of its repository, SEED001=DIR.
-seed001: raytrace raytrace-diff
-	@test -n "$(SEED001)" || { echo "make seed001 SEED001=DIR: DIR a checkout of seed 001's repository (docs/seed001.md)" >&2; exit 2; }
-	sh tests/bench/seed001.sh '$(SEED001)'
+# The MPL ray tracer's scenes against its program's renders (docs/mpl.md): give
+# the path of a checkout of its repository, MPL=DIR.
+mpl: raytrace raytrace-diff
+	@test -n "$(MPL)" || { echo "make mpl MPL=DIR: DIR a checkout of the MPL ray tracer's repository (docs/mpl.md)" >&2; exit 2; }
+	sh tests/bench/mpl.sh '$(MPL)'
 
 # Fuzzing: each parser's target (tests/fuzz/fuzz_*.c), built with clang's
 # libFuzzer and sanitizers in $(BUILD)/fuzz; the same targets replay their

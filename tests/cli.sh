@@ -37,7 +37,7 @@ for args in "" "$scene" "--bogus $scene x.ppm" "--max-depth $scene x.ppm" \
     [ "$n" -eq 2 ] && pass || fail "usage '$args': $n lines on stderr, expected 2"
 done
 # Ambient occlusion and global illumination: what -v says of them, and a
-# scene's own settings (seed 001's c AO and c GI lines) that options override.
+# scene's own settings (the MPL ray tracer's c AO and c GI lines) that options override.
 expect_exit "ao and gi" 0 "$RT" -v --ao 4 --ao-distance 2.5 --gi 3 --gi-bounces 2 \
     scenes/indirect.txt "$T/ind.ppm"
 expect_grep "ao and gi" 'raytrace: ambient occlusion: 4 rays a point, distance 2.5' "$T/err"
@@ -248,17 +248,17 @@ expect_grep "--ao note" "raytrace: note: --ao changes nothing here" "$T/err"
 [ "$(grep -c note "$T/err")" = 1 ] && pass || fail "the note is not said once" "$(cat "$T/err")"
 expect_exit "-q silences notes" 0 "$RT" -q --ao 4 "$scene" "$T/ao.ppm"
 [ ! -s "$T/err" ] && pass || fail "-q printed a note" "$(cat "$T/err")"
-# Seed 001's model: 500 x 500 and 4 samples without a camera or c Samples;
+# The MPL model: 500 x 500 and 4 samples without a camera or c Samples;
 # a matte plane lit head on, without occlusion or gathering, is 255 / pi
 # encoded with gamma 2.2 (152); by the physical model, linear (255).
 printf 'c Background 0 0 0\nm w MATTE 1 1 1 0 0 0 N\np Plane 0 0 2 0 0 -1 w\nl DirectionLight 0 0 1 1 1 1 1\n' >"$T/flat-mpl.txt"
-expect_exit "seed 001's defaults" 0 "$RT" -v --ao 0 --gi 0 "$T/flat-mpl.txt" "$T/flat-mpl.ppm"
-expect_grep "seed 001's size and samples" "raytrace: 500 x 500 pixels, 4 samples per pixel" "$T/err"
+expect_exit "the MPL ray tracer's defaults" 0 "$RT" -v --ao 0 --gi 0 "$T/flat-mpl.txt" "$T/flat-mpl.ppm"
+expect_grep "the MPL ray tracer's size and samples" "raytrace: 500 x 500 pixels, 4 samples per pixel" "$T/err"
 "$RT" --ao 0 --gi 0 --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "gamma-encoded" 1 "152 152 152" "$T/px"
 "$RT" --model physical --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "physical: linear" 1 "255 255 255" "$T/px"
 "$RT" --gi 0 --size 1x1 --ascii "$T/flat-mpl.txt" - | sed -n 4p >"$T/px" && expect_line "occlusion open to the sky changes nothing" 1 "152 152 152" "$T/px"
-expect_exit "--gi-bounces by seed 001's model" 0 "$RT" --gi-bounces 2 --size 2x2 "$T/flat-mpl.txt" "$T/b.ppm"
-expect_grep "--gi-bounces note" "raytrace: note: --gi-bounces changes nothing here: seed 001's model gathers the colours its rays meet" "$T/err"
+expect_exit "--gi-bounces by the MPL model" 0 "$RT" --gi-bounces 2 --size 2x2 "$T/flat-mpl.txt" "$T/b.ppm"
+expect_grep "--gi-bounces note" "raytrace: note: --gi-bounces changes nothing here: the MPL model gathers the colours its rays meet" "$T/err"
 # The tracer's own rule for the note on --ao: a physical MPL scene whose
 # materials take no ambient light (metal: ka = 0) has nothing to darken,
 # one with a matte material has (c Ambient lights it).
@@ -268,7 +268,7 @@ expect_grep "--ao note on metal" "raytrace: note: --ao changes nothing here" "$T
 sed 's/METALLIC/MATTE/' "$T/metal-mpl.txt" >"$T/matte-mpl.txt"
 expect_exit "--ao on matte" 0 "$RT" --model physical --ao 4 --size 8x8 "$T/matte-mpl.txt" "$T/m.ppm"
 grep -q 'note' "$T/err" && fail "--ao on a matte MPL scene is said to change nothing" "$(cat "$T/err")" || pass
-# Seed 001's files: textures beside the scene's folder (its repository's
+# The MPL ray tracer's files: textures beside the scene's folder (its repository's
 # Scene/ and Textures/), BMP textures, and the layout of raytrace 0.1.
 mkdir -p "$T/repo/Scene" "$T/repo/Textures"
 cp tests/fuzz/corpus/picture/rgb24.bmp "$T/repo/Textures/t.jpg"
@@ -369,25 +369,25 @@ if [ -n "$RT_FLOAT" ]; then
     done
 fi
 
-# --- seed 002's keyword format: detection, errors, --save ---
+# --- the keyword format of the OCaml course project: detection, errors, --save ---
 expect_exit "keyword --check" 0 "$RT" --check scenes/keyword.txt
 expect_line "keyword --check report" 1 "scenes/keyword.txt: OK: 480 x 320 pixels, 1605 objects, 2 lights" "$T/out"
 printf 'camera 0 0 0 0 0 5 1 40 30\nmaterial m 255 0 0 1 1 1 1\nsphere 0 0 5 1 n\n' >"$T/kw-bad.txt"
 expect_exit "keyword error" 1 "$RT" "$T/kw-bad.txt" "$T/kw-bad.ppm"
 expect_grep "keyword error position" "kw-bad.txt:3:16: error: unknown material 'n': a material line must define it before the sphere" "$T/err"
 [ ! -e "$T/kw-bad.ppm" ] && pass || fail "a bad keyword scene left an output"
-expect_exit "--scene-format course on a keyword scene" 1 "$RT" --check --scene-format course scenes/seed002.txt
-expect_grep "--scene-format course message" "seed002.txt:5:1: error: expected a number for the camera position's x, found 'camera'" "$T/err"
+expect_exit "--scene-format course on a keyword scene" 1 "$RT" --check --scene-format course scenes/ocaml-test.txt
+expect_grep "--scene-format course message" "ocaml-test.txt:5:1: error: expected a number for the camera position's x, found 'camera'" "$T/err"
 expect_exit "--scene-format keyword on a course scene" 1 "$RT" --check --scene-format keyword "$scene"
 expect_grep "--scene-format keyword message" "course.txt:6:1: error: expected an element such as 'sphere', found the number '100'" "$T/err"
 expect_exit "--scene-format bad" 2 "$RT" --check --scene-format pov "$scene"
 expect_grep "--scene-format bad message" "option '--scene-format' takes course, keyword, mpl or auto, found 'pov'" "$T/err"
-expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.ppm\" <scenes/seed002.txt"
-"$RT" scenes/seed002.txt "$T/seed.ppm" && cmp -s "$T/seed.ppm" "$T/stdin-kw.ppm" && pass ||
+expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.ppm\" <scenes/ocaml-test.txt"
+"$RT" scenes/ocaml-test.txt "$T/ocaml.ppm" && cmp -s "$T/ocaml.ppm" "$T/stdin-kw.ppm" && pass ||
     fail "a keyword scene reads the same from standard input"
 # --save: the saved scene renders the same bytes, and saves to the same text.
 mkdir "$T/elsewhere"
-for s in seed002 keyword materials; do
+for s in ocaml-test keyword materials; do
     expect_exit "--save $s" 0 "$RT" --save "$T/elsewhere/$s.txt" "scenes/$s.txt"
     expect_exit "--save $s again" 0 "$RT" --save "$T/elsewhere/$s-2.txt" "$T/elsewhere/$s.txt"
     cmp -s "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt" && pass || fail "--save $s is not stable" "$(diff "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt")"
@@ -409,7 +409,7 @@ rm -rf "$T/moved"
 expect_exit "--save beside the scene" 0 "$RT" --save scenes/.saved-by-cli.txt scenes/keyword.txt
 expect_grep "--save keeps a relative mesh path beside the scene" "mesh models/torus-smooth.obj gold" scenes/.saved-by-cli.txt
 rm -f scenes/.saved-by-cli.txt
-expect_exit "--save to standard output" 0 "$RT" --save - scenes/seed002.txt
+expect_exit "--save to standard output" 0 "$RT" --save - scenes/ocaml-test.txt
 expect_line "--save output" 2 "camera 0 0 0 0 0 5 2.0943951 700 500" "$T/out"
 echo old >"$T/kept.txt"
 expect_exit "--save a course scene" 1 "$RT" --save "$T/kept.txt" "$scene"
@@ -418,11 +418,11 @@ expect_grep "--save a course scene keeps the output" "old" "$T/kept.txt"
 expect_clean "--save a course scene leaves no temporary file" "$T"
 expect_exit "--save a bad scene" 1 "$RT" --save "$T/kept.txt" "$T/kw-bad.txt"
 expect_grep "--save a bad scene keeps the output" "old" "$T/kept.txt"
-expect_exit "--save into a missing directory" 1 "$RT" --save "$T/nowhere/x.txt" scenes/seed002.txt
-expect_exit "--save onto the scene itself" 1 "$RT" --save "$T/elsewhere/seed002.txt" "$T/elsewhere/seed002.txt"
+expect_exit "--save into a missing directory" 1 "$RT" --save "$T/nowhere/x.txt" scenes/ocaml-test.txt
+expect_exit "--save onto the scene itself" 1 "$RT" --save "$T/elsewhere/ocaml-test.txt" "$T/elsewhere/ocaml-test.txt"
 expect_exit "--save without SCENE" 2 "$RT" --save "$T/x.txt"
-expect_exit "--save with an OUTPUT too" 2 "$RT" --save "$T/x.txt" scenes/seed002.txt "$T/x.ppm"
-expect_exit "--save with --check" 2 "$RT" --check --save "$T/x.txt" scenes/seed002.txt
+expect_exit "--save with an OUTPUT too" 2 "$RT" --save "$T/x.txt" scenes/ocaml-test.txt "$T/x.ppm"
+expect_exit "--save with --check" 2 "$RT" --check --save "$T/x.txt" scenes/ocaml-test.txt
 
 # --- OBJ files written by other tools: Debian's assimp-testmodels ---
 models=/usr/share/assimp/models
@@ -478,12 +478,12 @@ expect_exit "scene is a directory" 1 "$RT" "$T" "$T/keep.ppm"
 expect_grep "scene is a directory" 'it is a directory, not a file' "$T/err"
 expect_grep "failed runs keep output" 'keep me' "$T/keep.ppm"
 
-# --- seed 001's lenient lines: read with a warning each, --strict refuses ---
+# --- the MPL ray tracer's lenient lines: read with a warning each, --strict refuses ---
 printf 'm a MATTE 1 1 1 0 0 0 N\nc Camera 0 0 -5 0 0 0 60 16 12\np Sphere 0 0 0 1.5abc a shiny\n' >"$T/lenient.txt"
-expect_exit "seed 001's lenient lines" 0 "$RT" "$T/lenient.txt" "$T/lenient.ppm"
-expect_grep "a number up to its letter: warning" "raytrace: $T/lenient.txt:3:19: warning: read '1.5abc' as 1.5, up to its first letter (as seed 001's program did; --strict refuses it)" "$T/err"
+expect_exit "the MPL ray tracer's lenient lines" 0 "$RT" "$T/lenient.txt" "$T/lenient.ppm"
+expect_grep "a number up to its letter: warning" "raytrace: $T/lenient.txt:3:19: warning: read '1.5abc' as 1.5, up to its first letter (as the MPL ray tracer did; --strict refuses it)" "$T/err"
 expect_grep "words after the material: warning" "$T/lenient.txt:3:25: warning: ignored 1 word after the material's name" "$T/err"
-expect_exit "seed 001's lenient lines, quietly" 0 "$RT" -q "$T/lenient.txt" "$T/lenient.ppm"
+expect_exit "the MPL ray tracer's lenient lines, quietly" 0 "$RT" -q "$T/lenient.txt" "$T/lenient.ppm"
 [ ! -s "$T/err" ] && pass || fail "-q printed warnings" "$(cat "$T/err")"
 printf 'old\n' >"$T/strict.ppm"
 expect_exit "--strict" 1 "$RT" --strict "$T/lenient.txt" "$T/strict.ppm"
@@ -557,8 +557,8 @@ expect_grep "--gi-cache with --gi 0" "note: --gi-cache changes nothing here: no 
     "$RT" -v --gi-cache "$T/room.txt" "$T/gd0.ppm" 2>"$T/err" && cmp -s "$T/gd0.ppm" "$T/gd1.ppm" &&
     grep -q "global illumination: 2048 rays a point" "$T/err" && pass ||
     fail "--gi-cache alone gathers 2048 rays a record"
-"$RT" --gi 8 --gi-cache --model seed001 scenes/indirect.txt --size 8x8 "$T/n.ppm" 2>"$T/err"
-expect_grep "--gi-cache under seed 001's model" "note: --gi-cache changes nothing here: seed 001's model" "$T/err"
+"$RT" --gi 8 --gi-cache --model mpl scenes/indirect.txt --size 8x8 "$T/n.ppm" 2>"$T/err"
+expect_grep "--gi-cache under the MPL model" "note: --gi-cache changes nothing here: the MPL model" "$T/err"
 "$RT" --gi-cache-error 0.1 "$T/room.txt" "$T/n.ppm" 2>"$T/err"
 expect_grep "--gi-cache-error alone" "note: --gi-cache-error and --gi-cache-map change nothing" "$T/err"
 expect_exit "--gi-cache-error 0" 2 "$RT" --gi 8 --gi-cache --gi-cache-error 0 "$T/room.txt" "$T/n.ppm"

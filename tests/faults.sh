@@ -128,7 +128,7 @@ fi
 if [ -n "$INJECT" ]; then
     printf '0 0 -5\n-1 1 -4\n1 1 -4\n-1 -1 -4\n64\n20 30 40\n5 5 -5 255 255 255\n' >"$T/f.txt"
     printf 'sphere: 0 0 0 1 200 100 50 0.3\nplane: 0 -1 0 0 1 0 200 200 200 0.2\n' >>"$T/f.txt"
-    # And seed 001's room of every material, JPEG textures (more reads and
+    # And the MPL ray tracer's room of every material, JPEG textures (more reads and
     # allocations: the decoder's, the hierarchy's, the named materials').
     sed 's/^c Camera \(.*\) 640 400$/c Camera \1 32 20/' scenes/materials.txt >scenes/.faults-m.txt
     trap 'chmod -R u+rwx "$T" 2>/dev/null; rm -rf "$T" scenes/.faults-m.txt' EXIT

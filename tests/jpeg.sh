@@ -333,9 +333,9 @@ fi
 psnr() { "$DIFF" "$1" "$2" 2>&1 | sed -n 's/.*PSNR: \([0-9.]*\) dB.*/\1/p'; }
 if have djpeg; then
     written=0
-    # Seed 001's example by the physical model: its textures' sharp edges,
+    # The MPL ray tracer's example by the physical model: its textures' sharp edges,
     # without its own model's noise.
-    scenes="course lights seed001 materials"
+    scenes="course lights mpl materials"
     settings=';--jpeg-subsampling 444;--jpeg-quality 1;--jpeg-quality 50;--jpeg-quality 100;--jpeg-quality 100 --jpeg-subsampling 444'
     if ! full; then
         scenes="course lights"
@@ -343,7 +343,7 @@ if have djpeg; then
     fi
     for src in $scenes; do
         model=
-        [ "$src" = seed001 ] && model="--model physical"
+        [ "$src" = mpl ] && model="--model physical"
         # shellcheck disable=SC2086
         "$RT" -q $model "scenes/$src.txt" "$T/w-$src.ppm"
         for opts in $(printf '%s' "$settings" | tr ' ;' '@ ' | sed 's/^ /_ /'); do
@@ -377,7 +377,7 @@ if have djpeg; then
     for size in $sizes; do
         size=$(printf '%s' "$size" | tr '@' ' ')
         set -- $size
-        sed "s/ 700 500\$/ $1 $2/" scenes/seed002.txt >"$T/odd.txt"
+        sed "s/ 700 500\$/ $1 $2/" scenes/ocaml-test.txt >"$T/odd.txt"
         for sub in 420 444; do
             "$RT" -q --jpeg-subsampling $sub "$T/odd.txt" "$T/odd.jpg" &&
                 djpeg -rgb "$T/odd.jpg" >"$T/odd-d.ppm" 2>"$T/err" && [ ! -s "$T/err" ] &&

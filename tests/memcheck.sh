@@ -66,8 +66,8 @@ run "ambient occlusion and global illumination" 0 "$RT" -q -j 2 --ao 4 --gi 3 --
 run "the irradiance cache: its pre-pass on two threads, two bounces, its map" 0 "$RT" -q -j 2 \
     --gi 16 --gi-bounces 2 --gi-cache --gi-cache-map "$T/cache-map.png" \
     scenes/.memcheck-indirect.txt "$T/indirect-cache.ppm"
-run "seed 001's model: its example, textures, occlusion, gathering" 0 "$RT" -q -j 2 \
-    --size 16x16 scenes/seed001.txt "$T/seed001.png"
+run "the MPL model: its example, textures, occlusion, gathering" 0 "$RT" -q -j 2 \
+    --size 16x16 scenes/mpl.txt "$T/mpl.png"
 run "raytrace-diff, a BMP and --box" 0 "$DIFF" -q --box 2x1 tests/fuzz/corpus/picture/rgb24.bmp \
     tests/fuzz/corpus/picture/palette8.bmp
 run "a tile" 0 "$RT" -q -j 2 --tile 1/2 scenes/.memcheck-glass.txt "$T/tile-1.ppm"

@@ -17,9 +17,9 @@ SUITE=noise
 
 # --- the bytes are each pixel's own: threads and tiles change none ---
 # A lens (focus), and occlusion with gathering (indirect); make check adds
-# textures and glass (materials) and seed 001's model (its gamma).
+# textures and glass (materials) and the MPL model (its gamma).
 scenes="focus indirect"
-full && scenes="$scenes materials seed001"
+full && scenes="$scenes materials mpl"
 for s in $scenes; do
     opts="--size 64x48 --noise 3 --max-spp 256"
     [ "$s" = indirect ] && opts="$opts --ao 2 --gi 2"

@@ -92,11 +92,11 @@ fi
 
 # --- 2. the same bytes as this system's build ---
 # SCENE|OPTIONS: the course format (its scene, glass, textures, meshes),
-# the keyword format, seed 001's by its model and ours, and adaptive
+# the keyword format, the MPL ray tracer's by its model and ours, and adaptive
 # sampling of indirect light.
 for line in "scenes/course.txt|" "scenes/glass.txt|" "scenes/textures.txt|" \
-    "scenes/keyword.txt|" "scenes/seed001.txt|--size 200x200" \
-    "scenes/seed001.txt|--model physical --size 160x120" \
+    "scenes/keyword.txt|" "scenes/mpl.txt|--size 200x200" \
+    "scenes/mpl.txt|--model physical --size 160x120" \
     "scenes/indirect.txt|--noise 4 --size 120x90" "scenes/materials.txt|--size 160x120" \
     "scenes/mesh.txt|--size 160x120" "scenes/indirect.txt|--gi 8 --ao 4 --size 96x72"; do
     scene=${line%%|*} opts=${line#*|}

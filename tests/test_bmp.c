@@ -180,7 +180,7 @@ static void bmp_refuses_what_it_cannot_read(void)
 
 static void bmp_is_a_picture_to_compare(void)
 {
-    /* raytrace-diff reads seed 001's renders, BMP files named .jpg. */
+    /* raytrace-diff reads the MPL ray tracer's renders, BMP files named .jpg. */
     BmpFile f;
     Picture pic;
     Error err;

@@ -1,4 +1,4 @@
-/* test_keyword.c: seed 002's keyword format: reading, the look-at camera,
+/* test_keyword.c: the keyword format of the OCaml course project: reading, the look-at camera,
  * Blinn-Phong shading with distant lights, format detection and saving. */
 #include <math.h>
 #include <stdio.h>
@@ -16,7 +16,7 @@
 #include "shading.h"
 #include "test.h"
 
-#define SEED                                                                                  \
+#define OCAML_TEST                                                                                  \
     "camera 0. 0. 0. 0. 0. 5. 2.0943951 700 500\n"                                             \
     "material sphereMat 255 0 0 1. 0.6 0.7 10.\n"                                              \
     "sphere 1. 1. 5. 0.4 sphereMat\n"                                                          \
@@ -34,14 +34,14 @@ static int kw_source(const char *text, Scene *sc, SceneSource *src, Error *err)
     return load_scene_text("t.txt", text, strlen(text), SCENE_KEYWORD, 0, 0, sc, src, err);
 }
 
-static void keyword_reads_the_seed_scene(void)
+static void keyword_reads_the_ocaml_test_scene(void)
 {
     Scene sc;
     SceneSource src;
     Error err;
     Vec3 d = vec3_normalize(vec3(-10, -30, 20));
 
-    CHECK_INT(0, kw_source(SEED, &sc, &src, &err));
+    CHECK_INT(0, kw_source(OCAML_TEST, &sc, &src, &err));
     CHECK_INT(SCENE_KEYWORD, sc.format);
     CHECK_INT(700, sc.camera.width);
     CHECK_INT(500, sc.camera.height);
@@ -437,7 +437,7 @@ static SceneFormat detect(const char *s)
 
 static void keyword_formats_are_told_apart(void)
 {
-    CHECK_INT(SCENE_KEYWORD, detect(SEED));
+    CHECK_INT(SCENE_KEYWORD, detect(OCAML_TEST));
     CHECK_INT(SCENE_KEYWORD, detect("\xEF\xBB\xBF# c\r\n\n  \tmaterial"));
     CHECK_INT(SCENE_KEYWORD, detect("camra 1 2")); /* a misspelt keyword */
     CHECK_INT(SCENE_COURSE, detect("100 100 0\n"));
@@ -598,7 +598,7 @@ static void keyword_saved_scene_reads_back_the_same(void)
     /* Numbers that need all 17 digits, -0, tiny and huge values, every
      * element, materials with 0 to 3 optional numbers, one unused. */
     static const char *const texts[] = {
-        SEED,
+        OCAML_TEST,
         ("camera 0.30000000000000004 -0 1e-300 0.1 0.7 123456789012345.67 2.0943951023931957 "
         "640 480\n"
         "background 0.1 254.99999999999997 3\nambient 1e-5 2 3\n"
@@ -684,7 +684,7 @@ static void keyword_save_refuses_a_course_scene(void)
 }
 
 const TestCase keyword_tests[] = {
-    {"keyword_reads_the_seed_scene", keyword_reads_the_seed_scene},
+    {"keyword_reads_the_ocaml_test_scene", keyword_reads_the_ocaml_test_scene},
     {"keyword_reads_every_element_in_any_order", keyword_reads_every_element_in_any_order},
     {"keyword_camera_looks_at_its_target", keyword_camera_looks_at_its_target},
     {"keyword_blinn_phong_has_its_three_terms", keyword_blinn_phong_has_its_three_terms},

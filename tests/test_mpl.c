@@ -1,4 +1,4 @@
-/* test_mpl.c: seed 001's MPL format: its own example read verbatim, its
+/* test_mpl.c: the MPL ray tracer's MPL format: its own example read verbatim, its
  * spellings of numbers, its errors, the four material kinds' shading and
  * its lights, and scenes saved and read back. */
 #include <math.h>
@@ -19,13 +19,13 @@ static int mpl(const char *text, Scene *sc, Error *err)
     return load_scene_text("t.txt", text, strlen(text), SCENE_MPL, 0, 0, sc, NULL, err);
 }
 
-static void mpl_reads_the_seed_example_verbatim(void)
+static void mpl_reads_the_example_verbatim(void)
 {
-    /* scenes/seed001.txt is the seed's 15 lines, textures and all. */
+    /* scenes/mpl.txt is the MPL ray tracer's 15 lines, textures and all. */
     Scene sc;
     Error err;
 
-    CHECK_INT(0, load_scene_file("scenes/seed001.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
+    CHECK_INT(0, load_scene_file("scenes/mpl.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(SCENE_MPL, sc.format);
     CHECK_INT(5, (long long)sc.named_count);
     CHECK_INT(4, (long long)sc.texture_count);
@@ -39,7 +39,7 @@ static void mpl_reads_the_seed_example_verbatim(void)
     CHECK_NEAR(-4, scene_cylinders(&sc)[0].centre.x, 0);
     CHECK_NEAR(5, scene_cylinders(&sc)[0].centre.z, 0);
     CHECK_NEAR(1, scene_cylinders(&sc)[0].radius, 0);
-    /* The seed's sizes are half-edges: the painting stands out of the
+    /* The MPL ray tracer's sizes are half-edges: the painting stands out of the
      * wall at z = 5 by 0.25. */
     CHECK_NEAR(4.75, scene_cubes(&sc)[0].lo.z, 0);
     CHECK_NEAR(6.75, scene_cubes(&sc)[0].hi.z, 0);
@@ -47,7 +47,7 @@ static void mpl_reads_the_seed_example_verbatim(void)
     CHECK_INT(MODEL_METALLIC, sc.named[4].model);
     CHECK_INT(MODEL_MATTE, sc.named[0].model);
     /* "m marble MATTE 1.f 1.f 1.f 0 1.f 50.f marble.jpg": the index 7th,
-     * the glossiness 8th, as the seed's reader takes them; a glossy matte
+     * the glossiness 8th, as the MPL ray tracer's reader takes them; a glossy matte
      * surface has highlights. */
     CHECK_NEAR(1, sc.named[3].index, 0);
     CHECK_NEAR(50, sc.named[3].shininess, 0);
@@ -61,13 +61,13 @@ static void mpl_reads_the_seed_example_verbatim(void)
     CHECK_INT(1, sc.lights[0].distant);
     CHECK_NEAR(sqrt(0.5), sc.lights[0].to_light.y, 1e-15);
     CHECK_NEAR(-sqrt(0.5), sc.lights[0].to_light.z, 1e-15);
-    /* No camera line: the seed's, 500 x 500 at the origin looking along +z
+    /* No camera line: the MPL ray tracer's, 500 x 500 at the origin looking along +z
      * with 90 degrees of view, 4 samples a pixel, its program's model. */
     CHECK_INT(500, sc.camera.width);
     CHECK_INT(500, sc.camera.height);
     CHECK_INT(4, sc.samples);
-    CHECK_INT(SCENE_MODEL_SEED001, sc.model);
-    CHECK_INT(SCENE_MAPPING_SEED001, sc.mapping);
+    CHECK_INT(SCENE_MODEL_MPL, sc.model);
+    CHECK_INT(SCENE_MAPPING_MPL, sc.mapping);
     CHECK_INT(-1, sc.ao_samples); /* not said: the model's default */
     CHECK_NEAR(0, sc.camera.eye.z, 0);
     CHECK_NEAR(-1, sc.camera.top_left.x, 1e-15);
@@ -96,7 +96,7 @@ static void mpl_reads_c_literals_commas_and_any_case(void)
     CHECK_NEAR(10, sc.named[0].shininess, 0);
     CHECK_NEAR(1.33, sc.named[1].base.ior, 0);
     CHECK_NEAR(3, scene_spheres(&sc)[0].centre.z, 0);
-    /* The seed program's Tri: size 4 at (0, 0, 5): (0, 1), (-1, -1), (1, -1). */
+    /* The MPL ray tracer's Tri: size 4 at (0, 0, 5): (0, 1), (-1, -1), (1, -1). */
     CHECK_NEAR(1, scene_triangles(&sc)[0].v[0].y, 0);
     CHECK_NEAR(-1, scene_triangles(&sc)[0].v[1].x, 0);
     CHECK_NEAR(1, scene_triangles(&sc)[0].v[2].x, 0);
@@ -133,7 +133,7 @@ static const BadMpl mpl_bad[] = {
     {"m a DIELECTRIC 1 1 1 0 0 10 N\n", 1, 24,
      "the DIELECTRIC material's index must be positive (glass: about 1.5), found '0'"},
     {"m a PLASTIC 1 1 1 0 0.5 20 N 1.5\n", 1, 30,
-     "the material has an 11th field, '1.5': seed 001's layout ends with the texture (m name "
+     "the material has an 11th field, '1.5': the MPL ray tracer's layout ends with the texture (m name "
      "kind r g b stripes index glossiness texture); raytrace 0.1's --save wrote a highlight "
      "weight 7th and the index last: move the index to the 7th field and drop this one"},
     {"m a MATTE 1 1 1 0 0 0 N x\n", 1, 25,
@@ -142,7 +142,7 @@ static const BadMpl mpl_bad[] = {
     {"m a MATTE 1 1 1 0 0 0 N ewa x\n", 1, 29,
      "expected the end of the line after the material's filter, found 'x'"},
     {"c Model pbr\n", 1, 9,
-     "unknown model 'pbr' (expected seed001, seed 001's program's rules, or physical)"},
+     "unknown model 'pbr' (expected mpl, the MPL ray tracer's rules, or physical)"},
     {"m a MATTE 1 1 1 0.5 0 0 N\n", 1, 17,
      "the material's stripes must be 0 (a plain colour) or 1 (stripes), found '0.5'"},
     {"m a MATTE 1 1 1 0 0 0\n", 1, 22,
@@ -205,7 +205,7 @@ static const BadMpl mpl_bad[] = {
     {"c GI 2\nc GI 3\n", 2, 1, "the global illumination is already set, on line 1"},
 };
 
-/* Under --strict: every line that breaks the format, those seed 001's
+/* Under --strict: every line that breaks the format, those the MPL ray tracer's
  * program read leniently among them. */
 static void mpl_rejects_bad_scenes_with_position(void)
 {
@@ -225,7 +225,7 @@ static void mpl_rejects_bad_scenes_with_position(void)
     }
 }
 
-/* Lines seed 001's program read though they break the format: read as it
+/* Lines the MPL ray tracer read though they break the format: read as it
  * read them, each with a warning at its place; --strict refuses each. */
 static void mpl_reads_its_programs_lenient_lines_with_warnings(void)
 {
@@ -255,7 +255,7 @@ static void mpl_reads_its_programs_lenient_lines_with_warnings(void)
         char want[ERROR_MESSAGE_MAX];
         CHECK_INT(0, mpl(text, &sc, &err));
         CHECK_INT(1, (long long)sc.warning_count);
-        snprintf(want, sizeof want, "%s (as seed 001's program did; --strict refuses it)",
+        snprintf(want, sizeof want, "%s (as the MPL ray tracer did; --strict refuses it)",
                  cases[i].message);
         if (sc.warning_count == 1)
             CHECK_ERROR(text, &sc.warnings[0], cases[i].line, cases[i].column, want);
@@ -537,15 +537,19 @@ static void mpl_model_line_chooses_the_rules(void)
 
     CHECK_INT(0, mpl("c Model physical\n", &sc, &err));
     CHECK_INT(SCENE_MODEL_PHYSICAL, sc.model);
-    CHECK_INT(SCENE_MAPPING_SEED001, sc.mapping); /* textures stay where the file put them */
+    CHECK_INT(SCENE_MAPPING_MPL, sc.mapping); /* textures stay where the file put them */
     scene_free(&sc);
+    CHECK_INT(0, mpl("c model MPL\n", &sc, &err));
+    CHECK_INT(SCENE_MODEL_MPL, sc.model);
+    scene_free(&sc);
+    /* The old spelling, still taken. */
     CHECK_INT(0, mpl("c model SEED001\n", &sc, &err));
-    CHECK_INT(SCENE_MODEL_SEED001, sc.model);
+    CHECK_INT(SCENE_MODEL_MPL, sc.model);
     scene_free(&sc);
 }
 
 const TestCase mpl_tests[] = {
-    {"mpl_reads_the_seed_example_verbatim", mpl_reads_the_seed_example_verbatim},
+    {"mpl_reads_the_example_verbatim", mpl_reads_the_example_verbatim},
     {"mpl_reads_c_literals_commas_and_any_case", mpl_reads_c_literals_commas_and_any_case},
     {"mpl_rejects_bad_scenes_with_position", mpl_rejects_bad_scenes_with_position},
     {"mpl_reads_its_programs_lenient_lines_with_warnings",

@@ -13,7 +13,7 @@ static Triangle triangle_of(Vec3 a, Vec3 b, Vec3 c)
     return t;
 }
 
-/* The seed's Moller-Trumbore, written as seed 002 gives it: vectors from v0,
+/* The OCaml course project's Moller-Trumbore, written as it gives it: vectors from v0,
  * so two triangles sharing an edge round it differently. For comparison. */
 static int naive_hit(const Triangle *tri, const Ray *r)
 {

@@ -50,7 +50,7 @@ resize scenes/course.txt 48 >scenes/.tiles-course.txt
 G=glass
 full || { G=.tiles-glass && resize scenes/glass.txt 160 >scenes/.tiles-glass.txt; }
 if full; then
-    cases='course;.tiles-course;glass;focus --spp 4;textures;materials;seed002;seed001 --size 48x40;indirect --ao 3 --gi 2 --gi-bounces 2 --spp 2'
+    cases='course;.tiles-course;glass;focus --spp 4;textures;materials;ocaml-test;mpl --size 48x40;indirect --ao 3 --gi 2 --gi-bounces 2 --spp 2'
     counts="1 2 3 7 16"
 else
     cases=".tiles-course;$G"

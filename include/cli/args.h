@@ -27,6 +27,7 @@ typedef enum {
 typedef struct {
     const char *word;
     int value;
+    int alias; /* 1: an old spelling, taken but never listed */
 } ArgWord;
 
 /* An option of a command line. */

@@ -51,7 +51,7 @@ typedef struct {
     int width, height;       /* its W and H, 1..CAMERA_MAX_SIZE; 0: the
                                 scene's */
     int no_shadows;          /* --no-shadows: no shadow rays */
-    int strict;              /* --strict: seed 001's lenient lines refused */
+    int strict;              /* --strict: the MPL ray tracer's lenient lines refused */
     double noise;            /* --noise L: the error a pixel may keep, in
                                 levels (noise.h); -1: the scene's (none
                                 unless it asks); 0: none */

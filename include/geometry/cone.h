@@ -1,18 +1,18 @@
 /*
  * cone.h: the infinite cone along the y axis, and its ray intersection.
  *
- * Seed 001's `Cone x y z r h` is the cone whose circle of radius r is
+ * The MPL ray tracer's `Cone x y z r h` is the cone whose circle of radius r is
  * centred on (x, y, z), square to the y axis, and whose apex is h above
  * that centre (below it when h < 0): the half-angle theta has tan theta =
- * r / |h|. It is infinite, as the seed calls it: one nappe, from the apex
+ * r / |h|. It is infinite, as the MPL ray tracer calls it: one nappe, from the apex
  * through the circle and on for ever (so a cone standing on a floor at
- * y looks as the seed's did). A ray's crossings solve a quadratic whose
+ * y looks as the MPL ray tracer's did). A ray's crossings solve a quadratic whose
  * discriminant is computed as k |fy D - dy F|^2 - (F x D)^2 (F and D the
  * horizontal parts of origin - apex and of the direction, k = tan^2 theta),
  * the form that does not subtract the squares of large numbers; roots on
  * the other nappe are left out. Closed: its inside is within the nappe.
  * Unbounded: it stays out of the bounding volume hierarchy. A finite cone
- * (seed 001's program's, which MPL scenes mean) is the part of the nappe
+ * (the MPL ray tracer's, which MPL scenes mean) is the part of the nappe
  * between the circle and the apex, open at the circle.
  */
 #ifndef RAYTRACE_CONE_H
@@ -55,7 +55,7 @@ SurfacePoint cone_surface_at(const Cone *c, Vec3 p);
 
 /* Returns in uv the texture coordinates of its point p: u around the axis
  * as on a cylinder, v = p.y - y of the circle's centre, the image
- * repeating every unit up the axis (as seed 001's program shows it). */
+ * repeating every unit up the axis (as the MPL ray tracer shows it). */
 void cone_uv(const Cone *c, Vec3 p, double uv[2]);
 
 #endif

@@ -2,7 +2,7 @@
  * cube.h: the axis-aligned cube, and its ray intersection by slabs.
  *
  * A cube of centre c and half-edge h is the box [c - h, c + h] on each
- * axis (seed 001's `Cube cx cy cz size` takes size as h, so its edge is
+ * axis (the MPL ray tracer's `Cube cx cy cz size` takes size as h, so its edge is
  * 2 size). Its corners are computed once, by cube_make(): the box between
  * them is the surface every test and every surface point agree on. The
  * slab distances (b - o) / d are each one subtraction and one division, so

@@ -3,7 +3,7 @@
  * intersection.
  *
  * The cylinder of radius r around the vertical line through (cx, cz) is
- * the set of points whose distance to that line is r (seed 001's
+ * the set of points whose distance to that line is r (the MPL ray tracer's
  * `Cylinder cx cy cz r`; cy only anchors the texture). Seen from above it
  * is a circle, so a ray's crossings are those of the ray's shadow on the
  * xz plane with that circle, computed as the sphere's are (sphere.h:
@@ -40,7 +40,7 @@ SurfacePoint cylinder_surface_at(const Cylinder *c, Vec3 p);
 /* Returns in uv the texture coordinates of the point p of outward normal
  * n: u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the axis (as on a
  * sphere), v = p.y - cy, so that the image repeats every unit up the
- * axis (as seed 001's program shows it). */
+ * axis (as the MPL ray tracer shows it). */
 void cylinder_uv(const Cylinder *c, Vec3 p, Vec3 n, double uv[2]);
 
 #endif

@@ -42,7 +42,7 @@ typedef struct {
     int named;             /* index in the scene's named materials, whose
                               model shades it (shade.h), or -1: the
                               course's rule (trace.h) */
-    int stripes;           /* 1: Ci is striped (seed 001's pattern, shade.h):
+    int stripes;           /* 1: Ci is striped (the MPL ray tracer's pattern, shade.h):
                               the colour, then black, across the shape */
 } Material;
 

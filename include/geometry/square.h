@@ -5,7 +5,7 @@
  * edges along two unit axes of that plane (square_make() chooses them: v
  * along the world's +y seen in the plane, or +z when the normal is
  * vertical, and u = normal x v), and reaches `half` from the centre along
- * each (seed 001's `Square ... size` takes size as half the edge). The
+ * each (the MPL ray tracer's `Square ... size` takes size as half the edge). The
  * ray meets its plane as a plane's (plane.h); the hit is inside when both
  * coordinates along the axes are within [-half, half]. Its front is the
  * side the normal points to; refraction treats the back as inside.
@@ -43,7 +43,7 @@ SurfacePoint square_surface_at(const Square *s, Vec3 p);
 
 /* Returns in uv the texture coordinates of its point p: its distances
  * from the centre along axis_u and axis_v, in scene units, so that the
- * image repeats every unit (as seed 001's program shows textures on
+ * image repeats every unit (as the MPL ray tracer shows textures on
  * squares). */
 void square_uv(const Square *s, Vec3 p, double uv[2]);
 

@@ -53,8 +53,8 @@ typedef struct {
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's
- * camera width and height (and gamma-encoded for a scene of seed 001's
- * model: seed001.h); cannot fail. The cut-off applies to linear images
+ * camera width and height (and gamma-encoded for a scene of the MPL ray tracer's
+ * model: mpl_light.h); cannot fail. The cut-off applies to linear images
  * only. Adds the rays cast to *counts (may
  * be NULL). Returns the number of threads used. */
 int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts *counts);

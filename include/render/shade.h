@@ -66,7 +66,7 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
 
 /* Returns the colour Ci of material m of scene at texture coordinates uv
  * (its texture's, v clamped when clamp_v is set) or stripe coordinate
- * stripe (seed 001's stripes: its colour where the fraction is below one
+ * stripe (the MPL ray tracer's stripes: its colour where the fraction is below one
  * half, black above), else its colour. */
 Colour shade_texel(const Scene *scene, const Material *m, const double uv[2], double stripe,
                    int clamp_v);

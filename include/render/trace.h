@@ -16,7 +16,7 @@
  * otherwise it contributes 0. A material with a Blinn-Phong entry (the
  * keyword format) is shaded instead by Whitted's sum C = local + R Cr + T
  * Ct with the Blinn-Phong local term (shade.h): the physical model
- * (scene.h); seed001.h traces seed 001's. Functions here only read
+ * (scene.h); mpl_light.h traces the MPL ray tracer's. Functions here only read
  * the scene and write the tracer's cut-off and counters: safe to call from
  * many threads at once, each with its own tracer.
  */

@@ -60,7 +60,7 @@ typedef enum {
 } CameraViewFault;
 
 /*
- * Sets up the look-at camera of seed 002: the eye at `from` looks towards
+ * Sets up the look-at camera of the OCaml course project: the eye at `from` looks towards
  * `at`, with a horizontal field of view of fov radians (0 < fov < pi) and an
  * image of width x height square pixels. The screen is centred on `at`,
  * square to the line of sight, at the eye's distance from `at` (so that it

@@ -1,9 +1,9 @@
 /*
- * mapping.h: where a texture's image and seed 001's stripes fall on each
+ * mapping.h: where a texture's image and the MPL ray tracer's stripes fall on each
  * shape: the texture coordinates of the scene's mapping (scene.h).
  *
  * SCENE_MAPPING_OURS is each shape's own (the *_uv() functions of the
- * geometry headers); SCENE_MAPPING_SEED001, the MPL format's, is seed 001's
+ * geometry headers); SCENE_MAPPING_MPL, the MPL format's, is the MPL ray tracer's
  * program's, below. Both models of light (scene.h) lay textures by the
  * scene's mapping, so a file's texture falls where its format says.
  */
@@ -16,11 +16,11 @@
 #include "scene/scene.h"
 
 /*
- * Stores in uv the texture coordinates, by seed 001's program's
+ * Stores in uv the texture coordinates, by the MPL ray tracer's
  * conventions, of sp, a point of the shape of kind and index in scene (u
  * across the image, v up it, one image over [0, 1)), and in *stripe the coordinate its stripes alternate along: a stripe
  * of the colour where its fraction is below one half, a black one above.
- * Under seed 001's model (scene.h) its program's rules hold whole; under
+ * Under the MPL model (scene.h) its program's rules hold whole; under
  * the physical model two of them are ours, as marked.
  *   sphere    u = 1 - (atan2(z, x) + pi) / 2 pi of the unit normal; v =
  *             (asin(y) + pi / 2) / pi = 1 - acos(y) / pi of the height y
@@ -49,7 +49,7 @@
  * program's rules), to be read clamped (the one row its program read, not
  * the seam where the image repeats); else 0.
  */
-int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
+int mapping_mpl(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
                     double uv[2], double *stripe);
 
 #endif

@@ -86,7 +86,7 @@ typedef enum {
     SCENE_MODEL_PHYSICAL, /* the course's rule and Blinn-Phong (trace.h,
                              shade.h), ambient occlusion of the ambient light
                              and gathered light (trace.h); linear bytes */
-    SCENE_MODEL_SEED001   /* seed 001's program's rules (seed001.h): its
+    SCENE_MODEL_MPL   /* the MPL ray tracer's rules (mpl_light.h): its
                              lighting, occlusion and gathering; bytes
                              encoded with gamma 2.2 */
 } SceneModel;
@@ -94,7 +94,7 @@ typedef enum {
 /* Where a texture and stripes fall on each shape (texture coordinates). */
 typedef enum {
     SCENE_MAPPING_OURS,   /* each shape's own (the geometry headers) */
-    SCENE_MAPPING_SEED001 /* seed 001's program's conventions (mapping.h) */
+    SCENE_MAPPING_MPL /* the MPL ray tracer's conventions (mapping.h) */
 } SceneMapping;
 
 struct Bvh;
@@ -105,7 +105,7 @@ typedef struct Scene {
                                sky: seen looking straight down) */
     Colour sky;             /* with has_sky, seen looking straight up, and
                                blended linearly with the background by the
-                               direction's y in between (seed 001's sky) */
+                               direction's y in between (the MPL ray tracer's sky) */
     int has_sky;            /* the background is that gradient */
     Colour ambient;         /* course: Ca, added to every lit surface, 0 by
                                default; keyword: Ia, the ambient record or
@@ -133,16 +133,16 @@ typedef struct Scene {
     size_t named_count;
     size_t named_capacity;
     Error *warnings;        /* what the reader assumed of lines it read
-                               leniently (seed 001's program's ways), for
+                               leniently (the MPL ray tracer's ways), for
                                the command to say; at most SCENE_WARNINGS_MAX */
     size_t warning_count;
     size_t warnings_dropped; /* warnings past SCENE_WARNINGS_MAX, counted */
     SceneFormat format;     /* the format it was read from */
     SceneModel model;       /* the rules its picture is made by: the MPL
-                               format's default is SCENE_MODEL_SEED001, the
+                               format's default is SCENE_MODEL_MPL, the
                                others' SCENE_MODEL_PHYSICAL */
     SceneMapping mapping;   /* its texture coordinates: the MPL format's
-                               are seed 001's */
+                               are the MPL ray tracer's */
     struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
                                triangles, cubes, squares), or NULL: every ray
                                then tests every object */
@@ -164,7 +164,7 @@ typedef struct Scene {
     int samples;            /* samples per pixel a samples: record asks for,
                                0 when the scene does not say */
     int ao_samples;         /* ambient occlusion rays the scene asks for
-                               (seed 001's c AO), 0: none; -1 when it does
+                               (the MPL ray tracer's c AO), 0: none; -1 when it does
                                not say */
     double ao_distance;     /* their distance, in the file's units; 0: not
                                said */
@@ -382,12 +382,12 @@ size_t scene_object_count(const Scene *scene);
  * camera and its screen. */
 double scene_size(const Scene *scene);
 
-/* Says whether scene is drawn by seed 001's program's rules (its model),
+/* Says whether scene is drawn by the MPL ray tracer's rules (its model),
  * which its texture coordinates follow too (mapping.h); the lighting
  * models' other choices are render/model.h's. */
-static inline int scene_seed001_rules(const Scene *scene)
+static inline int scene_mpl_light_rules(const Scene *scene)
 {
-    return scene->model == SCENE_MODEL_SEED001;
+    return scene->model == SCENE_MODEL_MPL;
 }
 
 #endif

@@ -74,7 +74,7 @@ Colour texture_lookup_footprint(const Texture *tex, double u, double v, const do
                                 TextureFilter filter, int clamp_v);
 
 /* Returns the share of [s - w/2, s + w/2] where the fraction of the
- * coordinate is below one half (seed 001's coloured stripes): the stripes'
+ * coordinate is below one half (the MPL ray tracer's coloured stripes): the stripes'
  * square wave box-filtered over a footprint w wide (w <= 0: the point's,
  * 1 or 0). */
 double texture_stripe_cover(double s, double w);

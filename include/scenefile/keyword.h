@@ -1,5 +1,5 @@
 /*
- * keyword.h: reading seed 002's keyword scene format into a Scene.
+ * keyword.h: reading the OCaml course project's keyword scene format into a Scene.
  *
  * One element per line, each starting with its keyword: camera, material,
  * sphere, plane, triangle, mesh, light, and our ambient and background

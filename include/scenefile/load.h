@@ -1,6 +1,6 @@
 /*
  * load.h: reading a scene file in any of the three formats: the course's
- * (course.h), seed 002's keyword format (keyword.h) or seed 001's MPL
+ * (course.h), the keyword format of the OCaml course project (keyword.h) or the MPL ray tracer's MPL
  * format (mpl.h), told apart by content unless the caller names one.
  *
  * The rule: the first token of the first line that is neither blank nor a
@@ -31,7 +31,7 @@ SceneFormat load_detect(const char *text, size_t len);
  * (SCENE_AUTO: detected) into *scene, which this call initialises with
  * memory_limit (bytes, 0 for none: scene.h), and, unless source is NULL,
  * what --save writes back into *source (source.h), initialised too;
- * strict: lines of seed 001's format its program read leniently are
+ * strict: lines of the MPL ray tracer's format its program read leniently are
  * errors, not warnings in the scene's list (mpl.h). Returns 0, or -1 with
  * *err filled and both empty. */
 int load_scene_file(const char *path, SceneFormat format, size_t memory_limit, int strict,

@@ -1,5 +1,5 @@
 /*
- * mpl.h: reading seed 001's scene format, the MPL format, into a Scene.
+ * mpl.h: reading the MPL ray tracer's scene format, the MPL format, into a Scene.
  *
  * One element per line, its kind the line's first letter: `m` a material,
  * `p` a primitive, `l` a light, and our `c` settings (camera, background,
@@ -18,7 +18,7 @@
 #include "scene/scene.h"
 #include "scenefile/source.h"
 
-/* The defaults of a scene without a camera line: seed 001's camera and
+/* The defaults of a scene without a camera line: the MPL ray tracer's camera and
  * image size, and of one without c Samples: its program's samples. */
 #define MPL_DEFAULT_FOV 90.0 /* vertical field of view, degrees */
 enum { MPL_DEFAULT_SIZE = 500 };  /* width and height, pixels */
@@ -28,7 +28,7 @@ enum { MPL_DEFAULT_SAMPLES = 4 }; /* samples per pixel */
  * and for relative texture paths, into *scene, which this call initialises
  * with memory_limit (scene.h), and what --save writes back into *source,
  * which it initialises too; returns 0, or -1 with *err filled and both
- * empty. Lines seed 001's program read, though they break the
+ * empty. Lines the MPL ray tracer read, though they break the
  * format, are read as it read them, each with a warning in the scene's
  * list (a number up to its first letter, words after a primitive's
  * material and numbers after a light's ignored, an unknown material read

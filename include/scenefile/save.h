@@ -1,6 +1,6 @@
 /*
- * save.h: writing a scene back in the format it was read from: seed 002's
- * keyword format (its Q.1.3) or seed 001's MPL format.
+ * save.h: writing a scene back in the format it was read from: the OCaml course project's
+ * keyword format (its Q.1.3) or the MPL ray tracer's MPL format.
  *
  * The file has the camera and the settings the scene set (background or
  * sky, ambient light, samples), every material (in definition order,

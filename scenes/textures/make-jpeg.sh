@@ -1,5 +1,5 @@
 #!/bin/sh
-# make-jpeg.sh: renders the JPEG textures of scenes/seed001.txt with
+# make-jpeg.sh: renders the JPEG textures of scenes/mpl.txt with
 # raytrace itself and encodes them with cjpeg (Debian's
 # libjpeg-turbo-progs): all of them ours, none taken from elsewhere.
 #

@@ -16,7 +16,7 @@
 /* Sets *in from the command line, else from the scene, else from its
  * model's defaults: the rays, the occlusion distance (the scene file's
  * units, as the scene may have been enlarged; by default a tenth of the
- * scene's size, seed 001's 2) and the bounces. */
+ * scene's size, the MPL ray tracer's 2) and the bounces. */
 static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *in)
 {
     const Model *model = model_of(scene);

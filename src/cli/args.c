@@ -108,13 +108,16 @@ static int args_match_value(const ArgSpec *o, int argc, char **argv, int *i, con
 static void args_fail_word(const ArgSpec *o, const char *value, char *msg, size_t msg_size)
 {
     size_t n = (size_t)snprintf(msg, msg_size, "option '%s' takes ", o->long_name);
-    int count = 0;
+    int count = 0, k = 0;
 
-    while (o->words[count].word)
-        count++;
-    for (int k = 0; k < count && n < msg_size; k++)
-        n += (size_t)snprintf(msg + n, msg_size - n, "%s%s",
-                              k == 0 ? "" : k == count - 1 ? " or " : ", ", o->words[k].word);
+    for (const ArgWord *w = o->words; w->word; w++)
+        count += !w->alias;
+    for (const ArgWord *w = o->words; w->word && n < msg_size; w++)
+        if (!w->alias) {
+            n += (size_t)snprintf(msg + n, msg_size - n, "%s%s",
+                                  k == 0 ? "" : k == count - 1 ? " or " : ", ", w->word);
+            k++;
+        }
     if (n < msg_size)
         snprintf(msg + n, msg_size - n, ", found '%.40s'", value);
 }

@@ -134,7 +134,7 @@ static int main_load(const Options *opts, Scene *scene, SceneSource *source)
         for (size_t i = 0; !opts->quiet && i < scene->warning_count; i++)
             main_report(&scene->warnings[i], "warning");
         if (!opts->quiet && scene->warnings_dropped > 0)
-            fprintf(stderr, "raytrace: %s: warning: %zu more lines read as seed 001's program "
+            fprintf(stderr, "raytrace: %s: warning: %zu more lines read as the MPL ray tracer "
                             "read them (--strict refuses them)\n",
                     file_display_name(opts->scene_path), scene->warnings_dropped);
         /* Textures read despite damage, as other readers read them. */

@@ -23,17 +23,18 @@ const char *const *options_help(void)
         "Usage: raytrace [OPTIONS] SCENE OUTPUT\n"
         "       raytrace --check SCENE\n"
         "       raytrace --save OUT SCENE\n"
-        "Render SCENE, a scene file in the course format, seed 002's keyword format\n"
-        "or seed 001's MPL format (told apart by content), to OUTPUT: a PPM (P6),\n"
-        "PNG, PFM or JPEG image, chosen by OUTPUT's extension (.ppm, .png, .pfm,\n"
-        ".jpg, .jpeg; PPM for any other) or by --format. Textures may be PPM, PNG,\n"
-        "JPEG or BMP files. SCENE may be '-' for standard input, OUTPUT '-' for\n"
-        "standard output. OUTPUT is replaced only when the whole image has been\n"
-        "written.\n"
+        "Render SCENE, a scene file in the course format, the keyword format of\n"
+        "the OCaml course project or the MPL format of the MPL ray tracer (told\n"
+        "apart by content), to OUTPUT: a PPM (P6), PNG, PFM, JPEG or BMP image,\n"
+        "chosen by OUTPUT's extension (.ppm, .png, .pfm, .jpg, .jpeg, .bmp; PPM\n"
+        "for a name without one; another image format's, as .tif, is refused)\n"
+        "or by --format. Textures may be PPM, PNG, JPEG or BMP files. SCENE may\n"
+        "be '-' for standard input, OUTPUT '-' for standard output. OUTPUT is\n"
+        "replaced only when the whole image has been written.\n"
         "\n"
         "Options:\n",
         "  -d, --max-depth N  trace mirror and refracted rays down to depth N,\n"
-        "                     0 to 1000 (default 10, seed 001's model 99; 0 traces\n"
+        "                     0 to 1000 (default 10, the MPL model 99; 0 traces\n"
         "                     none)\n"
         "  -s, --spp N        take N samples per pixel, 1 to 65536, averaged\n"
         "                     (anti-aliasing; a lens: record blurs with them);\n"
@@ -50,7 +51,7 @@ const char *const *options_help(void)
         "                     4096; up to 1048576)\n"
         "  --spp-map FILE     under --noise, also write a heat map of the samples\n"
         "                     each pixel took (black: --min-spp, white: --max-spp)\n"
-        "  --texture-filter F read every texture and seed 001's stripes with F:\n"
+        "  --texture-filter F read every texture and the MPL format's stripes with F:\n"
         "                     nearest, bilinear, trilinear (mip-maps: the pixel's\n"
         "                     footprint averaged, followed by ray differentials\n"
         "                     through mirrors and glass) or ewa (an elliptical\n"
@@ -59,14 +60,14 @@ const char *const *options_help(void)
         "                     records bilinear, MPL materials trilinear)\n",
         "  --size WxH         render W x H pixels (1 to 32768 each) of the scene's\n"
         "                     view, its height kept (default: the scene's size)\n"
-        "  --model M          light an MPL scene by M: seed001 (the default: seed\n"
-        "                     001's program's rules, its occlusion and gathering,\n"
+        "  --model M          light an MPL scene by M: mpl (the default: the MPL\n"
+        "                     ray tracer's rules, its occlusion and gathering,\n"
         "                     gamma 2.2) or physical (the keyword format's\n"
         "                     Blinn-Phong, physically based occlusion and\n"
         "                     gathered light, linear bytes)\n"
         "  --no-shadows       cast no shadow rays: every light reaches every point\n"
         "                     that faces it\n"
-        "  --strict           refuse the MPL lines seed 001's program read despite\n"
+        "  --strict           refuse the lines the MPL ray tracer read despite\n"
         "                     the format (1.5abc, words after a primitive's\n"
         "                     material, an unknown or repeated material, numbers\n"
         "                     after a light's), which are otherwise read as it\n"
@@ -79,15 +80,15 @@ const char *const *options_help(void)
         "  --ao N             ambient occlusion: N rays per point the camera sees\n"
         "                     (0 to 4096) darken its ambient light by the share\n"
         "                     they find hidden (default: the scene's, else 0;\n"
-        "                     seed 001's model: 10 rays at every point, darkening\n"
+        "                     the MPL model: 10 rays at every point, darkening\n"
         "                     all its light)\n"
         "  --ao-distance D    what is nearer than D hides (default: the scene's,\n"
         "                     else a tenth of the diagonal of its objects' box;\n"
-        "                     seed 001's model: 2)\n"
+        "                     the MPL model: 2)\n"
         "  --gi N             global illumination: N rays per point the camera\n"
         "                     sees (0 to 4096) gather the light other surfaces\n"
         "                     reflect onto its diffuse part (default: 0; with\n"
-        "                     --gi-cache 2048 a record; seed 001's model: 10 rays\n"
+        "                     --gi-cache 2048 a record; the MPL model: 10 rays\n"
         "                     gathering the colours they meet)\n"
         "  --gi-bounces B     diffuse bounces gathered, 1 to 64 (default 1)\n"
         "  --gi-cache         gather through an irradiance cache: --gi N rays at\n"
@@ -109,8 +110,9 @@ const char *const *options_help(void)
         "  -j, --threads N    read, build and render with N threads, 1 to 1024\n"
         "                     (default: one per processor; ignored in builds\n"
         "                     without OpenMP)\n",
-        "  --format F         write F: ppm, png, pfm (linear floats, unclamped) or\n"
-        "                     jpeg (lossy: smaller files, not the exact bytes)\n"
+        "  --format F         write F: ppm, png, pfm (linear floats, unclamped),\n"
+        "                     jpeg (lossy: smaller files, not the exact bytes) or\n"
+        "                     bmp (24-bit Windows bitmap)\n"
         "  --jpeg-quality Q   JPEG quality, 1 to 100 (default 90)\n"
         "  --jpeg-subsampling S  JPEG chroma: 420 (halved both ways, the default)\n"
         "                     or 444 (whole: sharp coloured edges)\n"
@@ -126,15 +128,16 @@ const char *const *options_help(void)
         "                     keyword when it is another word, else course)\n"
         "  --no-accel         test every ray against every object (no bounding\n"
         "                     volume hierarchy): slower, the same image\n"
-        "  -v, --verbose      after rendering, print the image size, threads, rays\n"
-        "                     cast by kind, time and speed\n"
+        "  -v, --verbose      say when the scene is read, then after rendering the\n"
+        "                     image size, threads, rays cast by kind, time and speed\n"
         "  -q, --quiet        print nothing on success, not even the progress bar\n"
         "  -h, --help         print this help and exit\n"
         "  -V, --version      print the version and exit\n"
         "\n"
         "Exit status: 0 the image was written; 1 the scene or an output could not be\n"
         "read or written (the message says where); 2 the command line is wrong;\n"
-        "130 or 143 interrupted by SIGINT or SIGTERM.\n"
+        "130 or 143 interrupted by SIGINT or SIGTERM (at any moment; one the parent\n"
+        "set to be ignored, as a shell's background job has it, stays ignored).\n"
         "\n"
         "The scene formats are described in docs/scene-format.md.\n",
         NULL};
@@ -143,24 +146,27 @@ const char *const *options_help(void)
 }
 
 static const ArgWord options_formats[] = {
-    {"ppm", FORMAT_PPM},   {"png", FORMAT_PNG}, {"pfm", FORMAT_PFM}, {"jpeg", FORMAT_JPEG},
-    {"jpg", FORMAT_JPEG}, {"bmp", FORMAT_BMP}, {NULL, 0}};
-static const ArgWord options_subsampling[] = {{"420", 0}, {"444", 1}, {NULL, 0}};
-static const ArgWord options_layouts[] = {{"rows", TILE_ROWS}, {"bands", TILE_BANDS}, {NULL, 0}};
-static const ArgWord options_filters[] = {{"nearest", TEXTURE_NEAREST},
-                                            {"bilinear", TEXTURE_BILINEAR},
-                                            {"trilinear", TEXTURE_TRILINEAR},
-                                            {"ewa", TEXTURE_EWA},
-                                            {NULL, 0}};
-static const ArgWord options_deflates[] = {{"stored", 1}, {"fixed", 0}, {NULL, 0}};
-static const ArgWord options_models[] = {{"seed001", SCENE_MODEL_SEED001},
-                                           {"physical", SCENE_MODEL_PHYSICAL},
-                                           {NULL, 0}};
-static const ArgWord options_scene_formats[] = {{"course", SCENE_COURSE},
-                                                    {"keyword", SCENE_KEYWORD},
-                                                    {"mpl", SCENE_MPL},
-                                                    {"auto", SCENE_AUTO},
-                                                    {NULL, 0}};
+    {"ppm", FORMAT_PPM, 0},  {"png", FORMAT_PNG, 0}, {"pfm", FORMAT_PFM, 0},
+    {"jpeg", FORMAT_JPEG, 0}, {"jpg", FORMAT_JPEG, 0}, {"bmp", FORMAT_BMP, 0},
+    {NULL, 0, 0}};
+static const ArgWord options_subsampling[] = {{"420", 0, 0}, {"444", 1, 0}, {NULL, 0, 0}};
+static const ArgWord options_layouts[] = {
+    {"rows", TILE_ROWS, 0}, {"bands", TILE_BANDS, 0}, {NULL, 0, 0}};
+static const ArgWord options_filters[] = {{"nearest", TEXTURE_NEAREST, 0},
+                                            {"bilinear", TEXTURE_BILINEAR, 0},
+                                            {"trilinear", TEXTURE_TRILINEAR, 0},
+                                            {"ewa", TEXTURE_EWA, 0},
+                                            {NULL, 0, 0}};
+static const ArgWord options_deflates[] = {{"stored", 1, 0}, {"fixed", 0, 0}, {NULL, 0, 0}};
+static const ArgWord options_models[] = {{"mpl", SCENE_MODEL_MPL, 0},
+                                           {"seed001", SCENE_MODEL_MPL, 1},
+                                           {"physical", SCENE_MODEL_PHYSICAL, 0},
+                                           {NULL, 0, 0}};
+static const ArgWord options_scene_formats[] = {{"course", SCENE_COURSE, 0},
+                                                    {"keyword", SCENE_KEYWORD, 0},
+                                                    {"mpl", SCENE_MPL, 0},
+                                                    {"auto", SCENE_AUTO, 0},
+                                                    {NULL, 0, 0}};
 
 #define OPT(name, kind, field) name, kind, offsetof(Options, field)
 static const ArgSpec options_table[] = {

@@ -54,7 +54,7 @@ const char *summary_samples_text(const RenderOptions *ropts)
 }
 
 /* Prints the -v summary: size, threads, rays by kind, the model when it
- * is seed 001's, time, speed, peak memory. */
+ * is the MPL ray tracer's, time, speed, peak memory. */
 static void summary_statistics(const Image *img, const RenderOptions *ropts, const Model *model,
                             int threads, const RayCounts *c, const SummaryTimes *times)
 {

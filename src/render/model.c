@@ -1,11 +1,11 @@
 /* model.c: the lighting models' table (see model.h). */
 #include "render/model.h"
 
-#include "render/seed001.h"
+#include "render/mpl_light.h"
 #include "render/trace.h"
 
-/* Seed 001's model darkens its own ambient term, which every scene has. */
-static int model_seed001_occludes(const Scene *scene)
+/* The MPL model darkens its own ambient term, which every scene has. */
+static int model_mpl_light_occludes(const Scene *scene)
 {
     (void)scene;
     return 1;
@@ -14,14 +14,14 @@ static int model_seed001_occludes(const Scene *scene)
 static const Model model_table[] = {
     {SCENE_MODEL_PHYSICAL, "physical", trace_ray_diff, trace_miss, trace_miss_uniform, 10, 0, 0, 0,
      0, 1, NULL, NULL, NULL, trace_has_ambient}, /* the tracer's own ambient rule */
-    {SCENE_MODEL_SEED001, "seed001", seed001_trace_diff, seed001_miss, seed001_miss_uniform,
-     SEED001_MAX_DEPTH, SEED001_AO_RAYS, SEED001_GI_RAYS, SEED001_AO_DISTANCE, SEED001_GAMMA, 0,
-     "seed 001's model: its program's light, occlusion and gathering",
-     "seed 001's model gathers the colours its rays meet, one bounce (--model physical gathers "
+    {SCENE_MODEL_MPL, "mpl", mpl_light_trace_diff, mpl_light_miss, mpl_light_miss_uniform,
+     MPL_LIGHT_MAX_DEPTH, MPL_LIGHT_AO_RAYS, MPL_LIGHT_GI_RAYS, MPL_LIGHT_AO_DISTANCE, MPL_LIGHT_GAMMA, 0,
+     "the MPL model: its program's light, occlusion and gathering",
+     "the MPL model gathers the colours its rays meet, one bounce (--model physical gathers "
      "light)",
-     "seed 001's model keeps its own gathering, every point's rays (--model physical gathers "
+     "the MPL model keeps its own gathering, every point's rays (--model physical gathers "
      "through the cache)",
-     model_seed001_occludes},
+     model_mpl_light_occludes},
 };
 
 const Model *model_of(const Scene *scene)

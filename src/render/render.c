@@ -383,7 +383,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     int tiles = render_tiles_over(img->width) * render_tiles_over(img->height);
     Cut proto = {0};
     /* Under global illumination a ray's colour has no bound the cut-off
-     * could use, nor under seed 001's rules: it is off; its proof of the
+     * could use, nor under the MPL ray tracer's rules: it is off; its proof of the
      * bytes is for linear ones. */
     int noise = opts->noise.level > 0;
     int cutting = opts->cutoff > 0 && opts->max_depth > 0 && opts->indirect.gi_samples == 0 &&

@@ -36,7 +36,7 @@ static inline Colour shade_colour(const Scene *scene, const Material *m, const d
 
 /* Stores in sp and uv the surface point of hit's shape at p, a point of
  * the tangent plane near hit's point (uv only when want_uv, by the
- * shapes' own mapping; the caller applies seed 001's), sp0 being hit's. */
+ * shapes' own mapping; the caller applies the MPL ray tracer's), sp0 being hit's. */
 static void shade_surface_near(const Scene *scene, const Hit *hit, const SurfacePoint *sp0,
                                Vec3 p, int want_uv, SurfacePoint *sp, double uv[2])
 {
@@ -94,10 +94,10 @@ static double shade_unwrap(double d)
  * reads sh's colour over it, its only reading: texture
  * coordinates (by the scene's mapping) and stripes at the footprint's
  * ends, their derivatives by difference. uv and stripe are the point's,
- * seed says whether seed 001's mapping lays them. */
+ * mpl says whether the MPL ray tracer's mapping lays them. */
 static void shade_footprint(const Scene *scene, const Ray *ray, const Hit *hit,
                             const RayDiff *diff, ShadeFootprint *fp, Shade *sh, const double uv[2],
-                            double stripe, int averages, int seed, int clamp_v)
+                            double stripe, int averages, int mpl, int clamp_v)
 {
     const Material *m = &sh->material;
     double d[4], ds[2];
@@ -108,12 +108,12 @@ static void shade_footprint(const Scene *scene, const Ray *ray, const Hit *hit,
         double nuv[2] = {0, 0}, nstripe = 0;
         Vec3 p = vec3_add(sh->sp.point, vec3_scale(fp->dp[k], SHADE_STEP));
 
-        shade_surface_near(scene, hit, &sh->sp, p, averages && !seed, &near, nuv);
+        shade_surface_near(scene, hit, &sh->sp, p, averages && !mpl, &near, nuv);
         fp->dn[k] = vec3_scale(vec3_sub(near.shading, sh->sp.shading), 1 / SHADE_STEP);
         if (!averages)
             continue;
-        if (seed)
-            mapping_seed001(scene, hit->kind, hit->index, &near, nuv, &nstripe);
+        if (mpl)
+            mapping_mpl(scene, hit->kind, hit->index, &near, nuv, &nstripe);
         d[2 * k] = shade_unwrap(nuv[0] - uv[0]) / SHADE_STEP;
         d[2 * k + 1] = (clamp_v ? nuv[1] - uv[1] : shade_unwrap(nuv[1] - uv[1])) / SHADE_STEP;
         ds[k] = shade_unwrap(nstripe - stripe) / SHADE_STEP;
@@ -139,15 +139,15 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
 {
     Shade sh;
     double uv[2] = {0, 0}, stripe = 0;
-    int clamp_v = 0, want_uv, seed, mapped, averages;
+    int clamp_v = 0, want_uv, mpl, mapped, averages;
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
     sh.footprint = NULL;
-    /* Stripes are seed 001's, laid as its program laid them. */
+    /* Stripes are the MPL ray tracer's, laid as its program laid them. */
     mapped = sh.material.texture >= 0 || sh.material.stripes;
-    seed = mapped && (sh.material.stripes || scene->mapping == SCENE_MAPPING_SEED001);
-    want_uv = mapped && !seed;
+    mpl = mapped && (sh.material.stripes || scene->mapping == SCENE_MAPPING_MPL);
+    want_uv = mapped && !mpl;
     switch (hit->kind) {
     case SHAPE_SPHERE: {
         const Sphere *s = &scene_spheres(scene)[hit->index];
@@ -198,14 +198,14 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
         break;
     }
     }
-    if (seed && mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe))
+    if (mpl && mapping_mpl(scene, hit->kind, hit->index, &sh.sp, uv, &stripe))
         clamp_v = 1;
     /* A colour averaged over the footprint is read there alone. */
     averages = diff && material_averages(&sh.material);
     if (!averages)
         sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
     if (diff)
-        shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, averages, seed, clamp_v);
+        shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, averages, mpl, clamp_v);
     return sh;
 }
 

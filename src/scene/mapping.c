@@ -47,12 +47,12 @@ static double mapping_around(Vec3 q)
     return 0.5 - angle_atan2(q.x, q.z) / (2 * ANGLE_PI);
 }
 
-int mapping_seed001(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
+int mapping_mpl(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
                     double uv[2], double *stripe)
 {
     int k = -scene->length_exponent;
     /* Its program's own rules under its model; ours under the physical. */
-    int program = scene_seed001_rules(scene);
+    int program = scene_mpl_light_rules(scene);
     Vec3 p = vec3_ldexp(sp->point, k);
     double scale = 10;
 

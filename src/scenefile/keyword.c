@@ -1,5 +1,5 @@
 /*
- * keyword.c: seed 002's keyword scene format (see keyword.h,
+ * keyword.c: the OCaml course project's keyword scene format (see keyword.h,
  * docs/scene-format.md). Lines, comments and numbers follow lex.h.
  *
  *   scene      -> element*            (exactly one camera, anywhere)

@@ -1,5 +1,5 @@
 /*
- * mpl.c: seed 001's MPL scene format (see mpl.h, docs/scene-format.md).
+ * mpl.c: the MPL ray tracer's MPL scene format (see mpl.h, docs/scene-format.md).
  * Lines, comments and numbers follow lex.h, with C float literals and
  * stray commas allowed.
  *
@@ -14,7 +14,7 @@
  *              | 'c' Background r g b | 'c' Sky r g b r g b        (one of them)
  *              | 'c' Ambient r g b | 'c' Samples n                 (each at most once)
  *              | 'c' AO n [distance] | 'c' GI n [bounces]          (each at most once)
- *              | 'c' Model seed001 | 'c' Model physical          (at most once)
+ *              | 'c' Model mpl | 'c' Model physical          (at most once)
  *
  * Colours are 0 to 1 (scaled to the renderer's 0 to 255).
  */
@@ -33,7 +33,7 @@
 #include "scenefile/texture_file.h"
 #include "mpl_read.h"
 
-/* Seed 001's reader's order (its SceneReader and Material): the 7th field
+/* The MPL ray tracer's reader's order (its SceneReader and Material): the 7th field
  * is the refractive index ("indice"), the 8th the glossiness. */
 static const char *const mpl_material_names[] = {"red",   "green",      "blue",
                                                  "stripes", "index", "glossiness"};
@@ -56,7 +56,7 @@ static const RecordSpec mpl_point = {"the point light", "x y z r g b intensity [
                                      mpl_light_names, mpl_light_kinds};
 /* The shapes a primitive line names, and the numbers each takes. */
 typedef struct {
-    const char *word; /* as the seed writes it; any case */
+    const char *word; /* as the MPL ray tracer writes it; any case */
     ShapeKind kind;
     RecordSpec spec;
 } MplShape;
@@ -84,7 +84,7 @@ enum { MPL_SHAPES = sizeof mpl_shapes / sizeof mpl_shapes[0] };
 static const char *const mpl_kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
 
 /* Returns the path of texture token t, as texture_file_find() finds it
- * from the scene's folder in the folders seed 001's program looks in:
+ * from the scene's folder in the folders the MPL ray tracer looks in:
  * Textures beside the scene (or textures, the same on a system that
  * ignores case), and Textures beside the scene's folder (its repository
  * keeps Scene/ and Textures/ side by side); NULL with the fault recorded
@@ -101,7 +101,7 @@ static char *mpl_texture_path(Mpl *M, const Token *t)
 
 /* Sets what the material kind `model` shades with under the physical
  * model (docs/scene-format.md): the weights of the Blinn-Phong term, a
- * highlight wherever the glossiness is above 0 (seed 001's rule), and the
+ * highlight wherever the glossiness is above 0 (the MPL ray tracer's rule), and the
  * index its glass and clear coat bend and reflect with. */
 static void mpl_model(NamedMaterial *pm, ShadingModel model, double index, double glossiness)
 {
@@ -122,11 +122,11 @@ static void mpl_model(NamedMaterial *pm, ShadingModel model, double index, doubl
         b->transparency = (1 - f0 * f0) * (b->colour.r + b->colour.g + b->colour.b) / (3 * 255);
 }
 
-/* Checks the fields of material record rec past its texture (seed 001's
+/* Checks the fields of material record rec past its texture (the MPL ray tracer's
  * layout ends there, ours may add the filter its texture or stripes are
  * read with, stored in *filter); returns 0, or -1 with the fault recorded: a number
  * there is the layout raytrace's --save wrote before it followed the
- * seed's reader (a highlight weight 7th, the index 11th), which would be
+ * MPL ray tracer's reader (a highlight weight 7th, the index 11th), which would be
  * misread. */
 static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
 {
@@ -138,7 +138,7 @@ static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
     if (rec->count == 11 &&
         number_parse(rec->tok[10].text, rec->tok[10].len, &ignored) == NUMBER_OK) {
         mpl_fail(M, &rec->line, rec->tok[10].column,
-                 "the material has an 11th field, %s: seed 001's layout ends with the texture "
+                 "the material has an 11th field, %s: the MPL ray tracer's layout ends with the texture "
                  "(m name kind r g b stripes index glossiness texture); raytrace 0.1's --save "
                  "wrote a highlight weight 7th and the index last: move the index to the 7th "
                  "field and drop this one",
@@ -156,7 +156,7 @@ static int mpl_material_end(Mpl *M, const Record *rec, TextureFilter *filter)
 }
 
 /* Reads texture token tex of material record rec into *pm: N (or n) for
- * none, else a file found as seed 001's program found it; returns 0, or
+ * none, else a file found as the MPL ray tracer found it; returns 0, or
  * -1 with the fault recorded. */
 static int mpl_material_texture(Mpl *M, const Record *rec, Scene *scene, const Token *tex,
                                 NamedMaterial *pm)
@@ -272,7 +272,7 @@ static int mpl_material_record(Mpl *M, const Record *line, Scene *scene)
                                                            : 0;
 }
 
-/* Reads the material name at token k of primitive rec as seed 001's
+/* Reads the material name at token k of primitive rec as the MPL ray tracer's
  * program did (not when strict), each time with a warning: the words
  * after it ignored; an unknown name read as the first material's (when
  * there is one). Returns 0, or -1 when memory runs out. */
@@ -334,7 +334,7 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
         0)
         return -1;
     if (shape->kind == SHAPE_TRIANGLE && n == 4) {
-        /* The seed program's Tri: size s at (x, y, z), upright in its z
+        /* The MPL ray tracer's Tri: size s at (x, y, z), upright in its z
          * plane: (x, y + s/4), (x - s/4, y - s/4), (x + s/4, y - s/4). */
         double s = v[0] / 4, x = v[1], y = v[2], z = v[3];
         double tri[9] = {x, y + s, z, x - s, y - s, z, x + s, y - s, z};
@@ -347,7 +347,7 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
     }
     if (rc != 0)
         return mpl_fail_memory(M, rec, scene, rc);
-    /* Seed 001's program's cone ends at its circle (cone.h). */
+    /* The MPL ray tracer's cone ends at its circle (cone.h). */
     if (shape->kind == SHAPE_CONE)
         scene_cones(scene)[scene_count_of(scene, SHAPE_CONE) - 1].finite = 1;
     return 0;
@@ -446,9 +446,9 @@ int mpl_parse_text(const char *name, const char *text, size_t len, size_t memory
     source_init(source);
     scene->memory_limit = memory_limit;
     scene->format = SCENE_MPL;
-    scene->model = SCENE_MODEL_SEED001;
-    scene->mapping = SCENE_MAPPING_SEED001;
-    /* Seed 001's sky: white below, blue above. */
+    scene->model = SCENE_MODEL_MPL;
+    scene->mapping = SCENE_MAPPING_MPL;
+    /* The MPL ray tracer's sky: white below, blue above. */
     scene->has_sky = 1;
     scene->sky = colour(0.5 * 255, 0.7 * 255, 255);
     scene->background = colour(255, 255, 255);

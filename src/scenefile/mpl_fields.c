@@ -1,4 +1,4 @@
-/* mpl_fields.c: the MPL reader's fields and seed 001's spellings of them
+/* mpl_fields.c: the MPL reader's fields and the MPL ray tracer's spellings of them
  * (see mpl_read.h). */
 #include <ctype.h>
 #include <stdarg.h>
@@ -80,7 +80,7 @@ int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fm
     vsnprintf(message, sizeof message, fmt, ap);
     va_end(ap);
     error_set_at(&w, M->lex.name, rec->line.number, column, rec->line.text, rec->line.len,
-                 "%s (as seed 001's program did; --strict refuses it)", message);
+                 "%s (as the MPL ray tracer did; --strict refuses it)", message);
     return scene_add_warning(scene, &w) == 0 ? 0 : mpl_fail_memory(M, rec, scene, -1);
 }
 

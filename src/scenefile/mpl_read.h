@@ -1,7 +1,7 @@
 /*
  * mpl_read.h: the MPL reader's state and the steps that share it (private
  * to scenefile/; mpl.h is the reader's contract):
- *   mpl_fields.c    fields and seed 001's spellings: words in any case,
+ *   mpl_fields.c    fields and the MPL ray tracer's spellings: words in any case,
  *                   stray commas and float suffixes, lenient lines read
  *                   with a warning
  *   mpl_settings.c  the 'c' lines: camera, background or sky, ambient
@@ -32,7 +32,7 @@ typedef struct {
     int noise_line;
     int gicache_line;
     Names names;         /* the materials by name */
-    int strict;          /* 1: lines seed 001's program read leniently are
+    int strict;          /* 1: lines the MPL ray tracer read leniently are
                             errors; 0: read as it did, with a warning */
 } Mpl;
 
@@ -42,7 +42,7 @@ typedef struct {
 /* Says whether token t spells word in any case. */
 int mpl_word_is(const Token *t, const char *word);
 
-/* Writes seed 001's spellings of numbers as plain ones in rec: stray
+/* Writes the MPL ray tracer's spellings of numbers as plain ones in rec: stray
  * commas before or after a field, or standing alone, go; so does a C float
  * literal's 'f' ("1.f", "0.5f"). The tokens keep the column of their first
  * character. */
@@ -57,20 +57,20 @@ int mpl_fail_memory(Mpl *M, const Record *rec, const Scene *scene, long rc);
  * line" recorded. */
 int mpl_need(Mpl *M, const Record *rec, int k, const char *what, const char *syntax);
 
-/* Keeps a warning at column of rec's line: a line seed 001's program read,
+/* Keeps a warning at column of rec's line: a line the MPL ray tracer read,
  * read here as it read it; returns 0, or -1 with the fault recorded when
  * memory runs out. */
 int mpl_warn(Mpl *M, Scene *scene, const Record *rec, int column, const char *fmt, ...)
     ERROR_FORMAT(5, 6);
 
 /* Reads tokens first .. first + count - 1 of rec that are not numbers but
- * start with one followed by a letter ("1.5abc") as seed 001's program
+ * start with one followed by a letter ("1.5abc") as the MPL ray tracer
  * did, up to the letter, with a warning each (not when strict); returns 0,
  * or -1 when memory runs out. */
 int mpl_number_prefixes(Mpl *M, Scene *scene, Record *rec, int first, int count);
 
 /* Leaves out, with a warning (not when strict), rec's tokens from keep on:
- * what seed 001's program did not read ("2 words after the material's
+ * what the MPL ray tracer did not read ("2 words after the material's
  * name": noun "word", after "after the material's name"); returns 0, or
  * -1 when memory runs out. */
 int mpl_ignore_rest(Mpl *M, Scene *scene, Record *rec, int keep, const char *noun,

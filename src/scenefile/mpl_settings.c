@@ -68,7 +68,7 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
     M->source->look_from = vec3(v[0], v[1], v[2]);
     M->source->look_at = vec3(v[3], v[4], v[5]);
     M->source->fov = v[6];
-    /* The seed's field of view is vertical; the camera's, horizontal. */
+    /* The MPL ray tracer's field of view is vertical; the camera's, horizontal. */
     half = angle_atan2(angle_tan(v[6] * ANGLE_PI / 360) * width, height);
     switch (camera_look_at(&scene->camera, M->source->look_from, M->source->look_at, 2 * half,
                            width, height)) {
@@ -88,7 +88,7 @@ static int mpl_camera_record(Mpl *M, const Record *rec, Scene *scene)
 }
 
 /* AO -> 'c' AO n [distance] | GI -> 'c' GI n [bounces]: ambient occlusion
- * and global illumination rays (seed 001's section IV, trace.h, seed001.h);
+ * and global illumination rays (the MPL ray tracer's section IV, trace.h, mpl_light.h);
  * 0 for none. */
 static int mpl_indirect_record(Mpl *M, const Record *rec, Scene *scene, int gi)
 {
@@ -169,22 +169,23 @@ static int mpl_gicache_record(Mpl *M, const Record *rec, Scene *scene)
     return 0;
 }
 
-/* model -> 'c' Model seed001 | 'c' Model physical: the rules the picture
+/* model -> 'c' Model mpl | 'c' Model physical: the rules the picture
  * is made by (scene.h). */
 static int mpl_model_record(Mpl *M, const Record *rec, Scene *scene)
 {
     char q[64];
 
     if (lex_once(&M->lex, rec, &M->model_line, "the model") != 0 ||
-        mpl_need(M, rec, 2, "the model", "c Model seed001 or c Model physical") != 0)
+        mpl_need(M, rec, 2, "the model", "c Model mpl or c Model physical") != 0)
         return -1;
-    if (mpl_word_is(&rec->tok[2], "seed001")) {
-        scene->model = SCENE_MODEL_SEED001;
+    /* "seed001" is the old spelling of "mpl", still taken. */
+    if (mpl_word_is(&rec->tok[2], "mpl") || mpl_word_is(&rec->tok[2], "seed001")) {
+        scene->model = SCENE_MODEL_MPL;
     } else if (mpl_word_is(&rec->tok[2], "physical")) {
         scene->model = SCENE_MODEL_PHYSICAL;
     } else {
         mpl_fail(M, &rec->line, rec->tok[2].column,
-                 "unknown model %s (expected seed001, seed 001's program's rules, or physical)",
+                 "unknown model %s (expected mpl, the MPL ray tracer's rules, or physical)",
                  lex_quote(q, sizeof q, &rec->tok[2]));
         return -1;
     }

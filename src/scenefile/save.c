@@ -225,7 +225,7 @@ static int save_mpl(FILE *fp, const Scene *scene, const SceneSource *src, const 
     ShapeKind kind;
     size_t i;
 
-    fputs("# An MPL-format scene (seed 001's), written by raytrace --save.\n", fp);
+    fputs("# An MPL-format scene (the MPL ray tracer's), written by raytrace --save.\n", fp);
     if (src->camera_line) {
         double fov[1] = {src->fov};
         fputs("c Camera", fp);

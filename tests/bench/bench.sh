@@ -212,7 +212,7 @@ if [ "${BENCH_UNUSED:-1}" = 1 ] && git rev-parse -q --verify "$BASE^{commit}" >/
     done
 fi
 
-# Seed 001's scenes: its example by its program's model at its defaults
+# The MPL ray tracer's scenes: its example by its program's model at its defaults
 # (500 x 500, then 1000 x 1000 as its report's render: 4 samples a pixel,
 # 10 occlusion and 10 gathering rays a point; four JPEG textures), every
 # material kind (scenes/materials.txt, the physical model), and a
@@ -220,8 +220,8 @@ fi
 # textures, 1920 x 1080, the physical model at one sample a pixel. Reading
 # (JPEG decoding included) and rendering apart, medians of RUNS on all
 # threads.
-: >"$DIR/seed001"
-if [ "${BENCH_SEED001:-1}" = 1 ]; then
+: >"$DIR/mpl"
+if [ "${BENCH_MPL:-1}" = 1 ]; then
     tex=$(pwd)/scenes/textures
     awk -v tex="$tex" 'BEGIN {
         print "c Camera 0 9 -22 0 0 4 45 1920 1080"
@@ -240,7 +240,7 @@ if [ "${BENCH_SEED001:-1}" = 1 ]; then
         print "l DirectionLight -0.5 -1 0.7 1 1 1 1"
         print "l PointLight 0 4 2 1 0.9 0.8 20 30"
     }' >"$DIR/textured.txt"
-    for run in scenes/seed001.txt scenes/seed001.txt:1000x1000 scenes/materials.txt \
+    for run in scenes/mpl.txt scenes/mpl.txt:1000x1000 scenes/materials.txt \
         "$DIR/textured.txt"; do
         f=${run%%:*}
         size=
@@ -250,15 +250,15 @@ if [ "${BENCH_SEED001:-1}" = 1 ]; then
         i=0
         while [ $i -lt "$RUNS" ]; do
             # shellcheck disable=SC2086
-            "$RT" -v -j "$ALL" $size "$f" "$DIR/seed.ppm" 2>"$DIR/log" || exit 1
+            "$RT" -v -j "$ALL" $size "$f" "$DIR/mpl.ppm" 2>"$DIR/log" || exit 1
             sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/log" >>"$DIR/times"
             sed -n 's/^raytrace: read the scene in \([0-9.]*\) s/\1/p' "$DIR/log" >>"$DIR/reads"
             i=$((i + 1))
         done
         size=$(sed -n 's/^raytrace: \([0-9]* x [0-9]*\) pixels.*/\1/p' "$DIR/log")
         printf '| %s | %s | %s s | %s s |\n' "${f##*/}" "$size" "$(median <"$DIR/reads")" \
-            "$(median <"$DIR/times")" >>"$DIR/seed001"
-        echo "bench: seed 001, ${f##*/}" >&2
+            "$(median <"$DIR/times")" >>"$DIR/mpl"
+        echo "bench: the MPL ray tracer, ${f##*/}" >&2
     done
 fi
 
@@ -395,11 +395,11 @@ rm -f "$DIR/kernel.ppm"
         echo "|--------|---------|--------|------|-------|--------|"
         cat "$DIR/scale"
     fi
-    if [ -s "$DIR/seed001" ]; then
+    if [ -s "$DIR/mpl" ]; then
         echo
-        echo "## Seed 001's scenes"
+        echo "## The MPL ray tracer's scenes"
         echo
-        echo "Its example scene (scenes/seed001.txt: squares, a cube, four infinite"
+        echo "Its example scene (scenes/mpl.txt: squares, a cube, four infinite"
         echo "cylinders, a cone, a metallic ball, four JPEG textures) by its program's"
         echo "model at its defaults (4 samples a pixel, 10 occlusion and 10 gathering"
         echo "rays a point), at 500 x 500 and at the 1000 x 1000 of its report's render"
@@ -412,7 +412,7 @@ rm -f "$DIR/kernel.ppm"
         echo
         echo "| scene | pixels | read | render |"
         echo "|-------|--------|------|--------|"
-        cat "$DIR/seed001"
+        cat "$DIR/mpl"
     fi
     if [ -s "$DIR/unused" ]; then
         echo

@@ -112,7 +112,7 @@ static int scenegen_field(const char *kind, long n)
     if (strcmp(kind, "sphere") != 0 && strcmp(kind, "cube") != 0 && strcmp(kind, "square") != 0 &&
         strcmp(kind, "cylinder") != 0 && strcmp(kind, "cone") != 0)
         return 2;
-    printf("# %ld random %ss in seed 002's keyword format (the benchmark's field)\n"
+    printf("# %ld random %ss in the keyword format of the OCaml course project (the benchmark's field)\n"
            "camera 0 35 -60 0 24.2 0 1.3495 %d %d\nbackground 20 24 36\nambient 30 30 30\n"
            "light -0.5 -1 0.5 255 250 240 1\n"
            "material floor 200 200 200 0.2 0.7 0 1 0.3\n",

@@ -2,7 +2,7 @@
 # fuzz.sh: runs each libFuzzer target for FUZZ_TIME seconds (`make fuzz`).
 #
 # Usage: sh tests/fuzz/fuzz.sh BUILD-DIR [TARGET...]
-# Each target starts from its seeds (tests/fuzz/corpus/T) and the inputs
+# Each target starts from its corpus (tests/fuzz/corpus/T) and the inputs
 # that once crashed it (tests/fuzz/regress/T); what it learns is kept in
 # BUILD-DIR/fuzz/corpus/T. It runs in scenes/ so that scene inputs can
 # name the example textures and meshes. A crash leaves its input in

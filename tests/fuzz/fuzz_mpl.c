@@ -1,4 +1,4 @@
-/* fuzz_mpl.c: libFuzzer target for seed 001's scene format (mpl.c), its
+/* fuzz_mpl.c: libFuzzer target for the MPL ray tracer's scene format (mpl.c), its
  * texture files included (names resolve in the fuzzer's directory). */
 #include "fuzz_scene.h"
 

@@ -1,7 +1,7 @@
 /*
  * replay.c: runs a fuzz target's LLVMFuzzerTestOneInput on each file named
  * on the command line, without libFuzzer, so that `make test` replays the
- * seed corpora and every input a fuzzer ever crashed on (tests/fuzz/regress)
+ * corpora and every input a fuzzer ever crashed on (tests/fuzz/regress)
  * with the ordinary compiler, and under the sanitizers in CI.
  */
 #include <stdint.h>

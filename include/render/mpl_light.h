@@ -1,8 +1,8 @@
 /*
- * seed001.h: how seed 001's program made the picture of an MPL scene
- * (SCENE_MODEL_SEED001), and where it laid textures and stripes
- * (SCENE_MAPPING_SEED001). Its users' scenes give the pictures its program
- * gave them; docs/seed001.md compares the two, scene by scene.
+ * mpl_light.h: how the MPL ray tracer made the picture of an MPL scene
+ * (SCENE_MODEL_MPL), and where it laid textures and stripes
+ * (SCENE_MAPPING_MPL). Its users' scenes give the pictures its program
+ * gave them; docs/mpl.md compares the two, scene by scene.
  *
  * The colour seen along a ray, on the scale 0..1 of the program: a ray
  * that meets nothing sees the sky (trace_background()), and so does a
@@ -48,8 +48,8 @@
  * PLASTIC and DIELECTRIC, which its reader could not build, follow its
  * report: Fresnel on the mirror ray, refraction without Fresnel.
  */
-#ifndef RAYTRACE_SEED001_H
-#define RAYTRACE_SEED001_H
+#ifndef RAYTRACE_MPL_LIGHT_H
+#define RAYTRACE_MPL_LIGHT_H
 
 #include "geometry/ray.h"
 #include "math/colour.h"
@@ -59,25 +59,25 @@
 /* The program's defaults (its Properties and tracer): ambient occlusion
  * and global illumination rays a point, the occlusion distance in the
  * scene's units, the deepest mirror ray, the encoding's gamma. */
-enum { SEED001_AO_RAYS = 10, SEED001_GI_RAYS = 10, SEED001_MAX_DEPTH = 99 };
-#define SEED001_AO_DISTANCE 2.0
-#define SEED001_GAMMA 2.2
+enum { MPL_LIGHT_AO_RAYS = 10, MPL_LIGHT_GI_RAYS = 10, MPL_LIGHT_MAX_DEPTH = 99 };
+#define MPL_LIGHT_AO_DISTANCE 2.0
+#define MPL_LIGHT_GAMMA 2.2
 
 /* Returns the colour seen along the primary ray `ray` by the rules above,
  * on the renderer's scale (1 of the program = 255), tracing deeper rays
  * down to t->max_depth. */
-Colour seed001_trace(const Tracer *t, const Ray *ray);
+Colour mpl_light_trace(const Tracer *t, const Ray *ray);
 
-/* seed001_trace() for a primary ray with differentials diff (NULL: none),
+/* mpl_light_trace() for a primary ray with differentials diff (NULL: none),
  * followed through mirrors and glass for the textures and stripes whose
  * filter averages over a footprint (trace.h). */
-Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
+Colour mpl_light_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff);
 
-/* Returns what seed001_trace_diff() returns for a primary ray that meets
+/* Returns what mpl_light_trace_diff() returns for a primary ray that meets
  * nothing (the model table's miss). */
-Colour seed001_miss(const Tracer *t, const Ray *ray);
+Colour mpl_light_miss(const Tracer *t, const Ray *ray);
 
-/* Says whether seed001_miss() is the same colour for every ray. */
-int seed001_miss_uniform(const Tracer *t);
+/* Says whether mpl_light_miss() is the same colour for every ray. */
+int mpl_light_miss_uniform(const Tracer *t);
 
 #endif

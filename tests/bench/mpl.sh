@@ -1,31 +1,31 @@
 #!/bin/sh
-# seed001.sh: seed 001's four scenes rendered by raytrace with its
+# mpl.sh: the MPL ray tracer's four scenes rendered by raytrace with its
 # program's model and defaults, against the renders its program made,
 # both box-filtered to 100 x 100 (raytrace-diff --box): the mean absolute
 # difference (levels) and the share of boxes off by more than 32 levels in
 # some channel. Targets: at most 12 levels and 5% on each scene.
 #
-# Usage: sh tests/bench/seed001.sh RAYTRACER [OUTDIR]   (make seed001
-#        SEED001=RAYTRACER): RAYTRACER is a checkout of the repository its
+# Usage: sh tests/bench/mpl.sh RAYTRACER [OUTDIR]   (make mpl
+#        MPL=RAYTRACER): RAYTRACER is a checkout of the repository its
 #        report names (github.com/Paillette/Raytracer): its scenes in
 #        RayTracer/Scene/, its textures in RayTracer/Textures/, its renders
 #        where the table below says. Our renders go to OUTDIR (default: a
-#        temporary folder, removed). SEED001_OPTS adds options to every
+#        temporary folder, removed). MPL_OPTS adds options to every
 #        render (say --model physical, or --ao 0). Nothing here is run by
 #        make test.
 set -eu
 cd "$(dirname "$0")/../.."
-REPO=${1:?usage: seed001.sh RAYTRACER [OUTDIR]}
+REPO=${1:?usage: mpl.sh RAYTRACER [OUTDIR]}
 RT=./raytrace
 DIFF=./raytrace-diff
-[ -x "$RT" ] && [ -x "$DIFF" ] || { echo "seed001: run make first" >&2; exit 2; }
+[ -x "$RT" ] && [ -x "$DIFF" ] || { echo "mpl.sh: run make first" >&2; exit 2; }
 [ -f "$REPO/RayTracer/Scene/scene1.txt" ] ||
-    { echo "seed001: no RayTracer/Scene/scene1.txt in $REPO" >&2; exit 2; }
+    { echo "mpl.sh: no RayTracer/Scene/scene1.txt in $REPO" >&2; exit 2; }
 if [ $# -ge 2 ]; then
     OUT=$2
     mkdir -p "$OUT"
 else
-    OUT=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-seed001.XXXXXX")
+    OUT=$(mktemp -d "${TMPDIR:-/tmp}/raytrace-mpl.XXXXXX")
     trap 'rm -rf "$OUT"' EXIT
 fi
 
@@ -43,7 +43,7 @@ while [ $# -ge 3 ]; do
     shift 3
     start=$(date +%s.%N)
     # shellcheck disable=SC2086
-    "$RT" -q --size "$size" ${SEED001_OPTS:-} "$REPO/RayTracer/Scene/scene$n.txt" "$OUT/scene$n.png"
+    "$RT" -q --size "$size" ${MPL_OPTS:-} "$REPO/RayTracer/Scene/scene$n.txt" "$OUT/scene$n.png"
     end=$(date +%s.%N)
     "$DIFF" --box 100x100 -t 32 "$ref" "$OUT/scene$n.png" >"$OUT/diff$n.txt" || true
     mad=$(sed -n 's/^mean error: \([0-9.e+-]*\),.*/\1/p' "$OUT/diff$n.txt")

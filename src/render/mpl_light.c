@@ -1,6 +1,6 @@
-/* seed001.c: seed 001's program's picture rules and texture coordinates
- * (see seed001.h). */
-#include "render/seed001.h"
+/* mpl_light.c: the MPL ray tracer's picture rules and texture coordinates
+ * (see mpl_light.h). */
+#include "render/mpl_light.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -19,7 +19,7 @@
  * along the ray itself, so its point falls short of the surface, in front
  * of it, the more so the steeper the ray. Only the nearer crossing, in
  * front of the origin, counts. */
-static real seed001_cylinder_t(const Cylinder *c, const Ray *ray)
+static real mpl_light_cylinder_t(const Cylinder *c, const Ray *ray)
 {
     double dx = ray->dir.x, dz = ray->dir.z, across = sqrt(dx * dx + dz * dz);
     double fx = (double)(ray->origin.x - c->centre.x), fz = (double)(ray->origin.z - c->centre.z);
@@ -37,8 +37,8 @@ static real seed001_cylinder_t(const Cylinder *c, const Ray *ray)
 
 /* Finds the nearest hit along ray with 0 < t < tmax as the program found
  * it: visibility_nearest(), but for its infinite cylinders' distances
- * (seed001_cylinder_t()). */
-static int seed001_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
+ * (mpl_light_cylinder_t()). */
+static int mpl_light_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *hit)
 {
     int found;
 
@@ -47,7 +47,7 @@ static int seed001_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *h
     found = visibility_nearest_among(scene, ray, tmax, ~(1u << SHAPE_CYLINDER), hit);
     for (size_t k = 0; k < scene_count_of(scene, SHAPE_CYLINDER); k++) {
         const Cylinder *c = &scene_cylinders(scene)[k];
-        real t = seed001_cylinder_t(c, ray);
+        real t = mpl_light_cylinder_t(c, ray);
         if (t > 0 && t < tmax && (!found || t < hit->t || (t == hit->t && c->order < hit->order))) {
             hit->t = t;
             hit->kind = SHAPE_CYLINDER;
@@ -61,11 +61,11 @@ static int seed001_nearest(const Scene *scene, const Ray *ray, real tmax, Hit *h
 
 /* Returns the shading record of hit, crossed by ray with differentials
  * diff (NULL: none; fp receives the footprint): shade_at_footprint()'s,
- * but on an infinite cylinder the program's point (seed001_cylinder_t())
+ * but on an infinite cylinder the program's point (mpl_light_cylinder_t())
  * with its normal, the point's offset from the axis (not of unit length),
  * and the colour there, read at the point (no footprint: the point is off
  * the surface). */
-static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
+static Shade mpl_light_shade(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
                            ShadeFootprint *fp)
 {
     const Cylinder *c;
@@ -82,7 +82,7 @@ static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit, c
     sh.sp.normal = vec3(sh.sp.point.x - c->centre.x, 0, sh.sp.point.z - c->centre.z);
     sh.sp.shading = sh.sp.normal;
     sh.sp.error = vec3_scale(vec3_abs(sh.sp.point), real_gamma(8));
-    mapping_seed001(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
+    mapping_mpl(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
     sh.colour = shade_texel(scene, &sh.material, uv, stripe, 0);
     return sh;
 }
@@ -94,7 +94,7 @@ static Shade seed001_shade(const Scene *scene, const Ray *ray, const Hit *hit, c
  * strips), made a unit vector and turned into n's half-space. A point
  * uniform on the cube's surface has the direction of one uniform in its
  * volume, which is what the program normalised. */
-static Vec3 seed001_direction(const Tracer *t, const SamplerGrid *g, unsigned k, uint64_t key,
+static Vec3 mpl_light_direction(const Tracer *t, const SamplerGrid *g, unsigned k, uint64_t key,
                               Vec3 n)
 {
     const TraceSample *s = t->sample;
@@ -119,13 +119,13 @@ static Vec3 seed001_direction(const Tracer *t, const SamplerGrid *g, unsigned k,
 
 /* Returns ray i of the `rays` that the point sh (n its normal facing the
  * ray) casts on path key from grid g: the program's direction
- * (seed001_direction()), started off the surface. */
-static Ray seed001_indirect_ray(const Tracer *t, const SamplerGrid *g, unsigned rays, unsigned i,
+ * (mpl_light_direction()), started off the surface. */
+static Ray mpl_light_indirect_ray(const Tracer *t, const SamplerGrid *g, unsigned rays, unsigned i,
                                 uint64_t key, const Shade *sh, Vec3 n)
 {
     Ray r;
 
-    r.dir = seed001_direction(t, g, t->sample->k * rays + i, key, n);
+    r.dir = mpl_light_direction(t, g, t->sample->k * rays + i, key, n);
     r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
     return r;
 }
@@ -133,7 +133,7 @@ static Ray seed001_indirect_ray(const Tracer *t, const SamplerGrid *g, unsigned 
 /* Returns the program's occlusion factor A at the point sh (n its normal
  * facing the ray) on path key: the mean over t's occlusion rays of the
  * distance to what each meets over the occlusion distance, at most 1. */
-static double seed001_occlusion(const Tracer *t, const Shade *sh, Vec3 n, uint64_t key)
+static double mpl_light_occlusion(const Tracer *t, const Shade *sh, Vec3 n, uint64_t key)
 {
     unsigned rays = (unsigned)t->indirect.ao_samples;
     real reach = (real)t->indirect.ao_distance;
@@ -141,11 +141,11 @@ static double seed001_occlusion(const Tracer *t, const Shade *sh, Vec3 n, uint64
 
     key = sampler_branch(key, TRACER_OCCLUSION);
     for (unsigned i = 0; i < rays; i++) {
-        Ray r = seed001_indirect_ray(t, &t->ao_grid, rays, i, key, sh, n);
+        Ray r = mpl_light_indirect_ray(t, &t->ao_grid, rays, i, key, sh, n);
         Hit hit;
 
         t->counts->occlusion++;
-        sum += seed001_nearest(t->scene, &r, reach, &hit) ? (double)(hit.t / reach) : 1;
+        sum += mpl_light_nearest(t->scene, &r, reach, &hit) ? (double)(hit.t / reach) : 1;
     }
     return sum / rays;
 }
@@ -153,27 +153,27 @@ static double seed001_occlusion(const Tracer *t, const Shade *sh, Vec3 n, uint64
 /* Returns the program's gathered colour G at the point sh (n its normal
  * facing the ray) on path key: the mean over t's gathering rays of the
  * colour (0..1) of what each meets, 0 for the sky. */
-static Colour seed001_gather(const Tracer *t, const Shade *sh, Vec3 n, uint64_t key)
+static Colour mpl_light_gather(const Tracer *t, const Shade *sh, Vec3 n, uint64_t key)
 {
     unsigned rays = (unsigned)t->indirect.gi_samples;
     Colour sum = colour(0, 0, 0);
 
     key = sampler_branch(key, TRACER_GATHER);
     for (unsigned i = 0; i < rays; i++) {
-        Ray r = seed001_indirect_ray(t, &t->gi_grid, rays, i, key, sh, n);
+        Ray r = mpl_light_indirect_ray(t, &t->gi_grid, rays, i, key, sh, n);
         Hit hit;
 
         t->counts->gather++;
-        if (seed001_nearest(t->scene, &r, INFINITY, &hit))
-            sum = colour_add(sum, seed001_shade(t->scene, &r, &hit, NULL, NULL).colour);
+        if (mpl_light_nearest(t->scene, &r, INFINITY, &hit))
+            sum = colour_add(sum, mpl_light_shade(t->scene, &r, &hit, NULL, NULL).colour);
     }
     return colour_scale(sum, 1.0 / (255.0 * rays));
 }
 
 /* Returns the light the scene's lights bring to the point sh (n its
  * normal facing the ray along unit direction v), of colour a (0..1) and
- * glossiness g: the sum of E_i L_i (seed001.h). */
-static Colour seed001_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v, Colour a,
+ * glossiness g: the sum of E_i L_i (mpl_light.h). */
+static Colour mpl_light_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v, Colour a,
                              double g)
 {
     const Scene *scene = t->scene;
@@ -219,14 +219,14 @@ static Colour seed001_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v, C
 
 /* Returns the colour (0..1) seen along ray, with differentials diff
  * (NULL: none), of depth `depth`, on path key. */
-static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
+static Colour mpl_light_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
                            uint64_t key);
 
 /* Returns the colour (0..1) along the ray of kind `kind` leaving sh (n its
  * normal facing the arriving ray `ray`, of unit direction v and
  * differentials diff) in direction dir, bent by eta when refracted, one
  * deeper than depth. */
-static Colour seed001_secondary(const Tracer *t, const Ray *ray, Vec3 v, const RayDiff *diff,
+static Colour mpl_light_secondary(const Tracer *t, const Ray *ray, Vec3 v, const RayDiff *diff,
                                 const Shade *sh, Vec3 n, Vec3 dir, RayKind kind, real eta,
                                 int depth, uint64_t key)
 {
@@ -254,11 +254,11 @@ static Colour seed001_secondary(const Tracer *t, const Ray *ray, Vec3 v, const R
         else
             ray_diff_reflect(v, &unit, n, dn, fp->dp, &child);
     }
-    return seed001_path(t, &r, diff && sh->footprint ? &child : NULL, depth + 1,
+    return mpl_light_path(t, &r, diff && sh->footprint ? &child : NULL, depth + 1,
                         sampler_branch(key, kind));
 }
 
-static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
+static Colour mpl_light_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
                            uint64_t key)
 {
     const Scene *scene = t->scene;
@@ -270,9 +270,9 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff,
     Colour a, c;
     real eta;
 
-    if (!seed001_nearest(scene, ray, INFINITY, &hit))
+    if (!mpl_light_nearest(scene, ray, INFINITY, &hit))
         return colour_scale(trace_background(scene, ray), 1.0 / 255);
-    sh = seed001_shade(scene, ray, &hit, diff, &fp);
+    sh = mpl_light_shade(scene, ray, &hit, diff, &fp);
     pm = &scene->named[sh.material.named];
     v = vec3_normalize(ray->dir);
     n = ray_facing_normal(sh.sp.normal, v);
@@ -280,14 +280,14 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff,
     switch (pm->model) {
     case MODEL_METALLIC:
     case MODEL_PLASTIC: {
-        Colour mirror = seed001_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n),
+        Colour mirror = mpl_light_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n),
                                           RAY_REFLECTION, 1, depth, key);
         double f = pm->model == MODEL_PLASTIC
                        ? ray_fresnel(v, n, vec3_dot(v, sh.sp.normal) < 0 ? 1 / sh.material.ior
                                                                          : sh.material.ior)
                        : 1;
         c = colour_add(colour_scale(colour_mul(a, mirror), f),
-                       seed001_lights(t, &sh, n, v, a, pm->shininess));
+                       mpl_light_lights(t, &sh, n, v, a, pm->shininess));
         break;
     }
     case MODEL_DIELECTRIC: {
@@ -295,41 +295,41 @@ static Colour seed001_path(const Tracer *t, const Ray *ray, const RayDiff *diff,
         Vec3 bent;
         eta = entering ? 1 / sh.material.ior : sh.material.ior;
         if (ray_refract(v, n, eta, &bent))
-            c = seed001_secondary(t, ray, v, diff, &sh, n, bent, RAY_REFRACTION, eta, depth, key);
+            c = mpl_light_secondary(t, ray, v, diff, &sh, n, bent, RAY_REFRACTION, eta, depth, key);
         else
-            c = seed001_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n), RAY_REFLECTION, 1,
+            c = mpl_light_secondary(t, ray, v, diff, &sh, n, ray_reflect(v, n), RAY_REFLECTION, 1,
                                   depth, key);
         break;
     }
     default: /* MATTE */
-        c = seed001_lights(t, &sh, n, v, a, pm->shininess);
+        c = mpl_light_lights(t, &sh, n, v, a, pm->shininess);
         if (t->indirect.gi_samples > 0)
-            c = colour_add(c, seed001_gather(t, &sh, n, key));
+            c = colour_add(c, mpl_light_gather(t, &sh, n, key));
         c = colour_scale(colour_mul(c, a), 1 / ANGLE_PI);
         break;
     }
     if (t->indirect.ao_samples > 0)
-        c = colour_scale(c, seed001_occlusion(t, &sh, n, key));
+        c = colour_scale(c, mpl_light_occlusion(t, &sh, n, key));
     return c;
 }
 
-Colour seed001_trace(const Tracer *t, const Ray *ray)
+Colour mpl_light_trace(const Tracer *t, const Ray *ray)
 {
-    return seed001_trace_diff(t, ray, NULL);
+    return mpl_light_trace_diff(t, ray, NULL);
 }
 
-Colour seed001_miss(const Tracer *t, const Ray *ray)
+Colour mpl_light_miss(const Tracer *t, const Ray *ray)
 {
-    /* As seed001_path() answers, on seed001_trace_diff()'s scale. */
+    /* As mpl_light_path() answers, on mpl_light_trace_diff()'s scale. */
     return colour_scale(colour_scale(trace_background(t->scene, ray), 1.0 / 255), 255);
 }
 
-int seed001_miss_uniform(const Tracer *t)
+int mpl_light_miss_uniform(const Tracer *t)
 {
     return !t->scene->has_sky;
 }
 
-Colour seed001_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
+Colour mpl_light_trace_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
 {
-    return colour_scale(seed001_path(t, ray, diff, 0, 0), 255);
+    return colour_scale(mpl_light_path(t, ray, diff, 0, 0), 255);
 }
