@@ -14,6 +14,7 @@
 # make install      install the commands and man pages under $(DESTDIR)$(PREFIX)
 #                   (PREFIX defaults to /usr/local); make uninstall removes them
 # make gallery      render every example scene to docs/gallery/*.png
+# make samples      write README.md's samples of what the programs print
 # make bench        measure speed on generated scenes; writes docs/benchmarks.md
 #                   (BENCH_RUNS=N runs each, BENCH_ONLY="course ..." a subset)
 # make race         only its race against the exact Embree renderer, scaling
@@ -318,6 +319,12 @@ install: $(PROGRAMS:%=$(OUT)/%$(EXE))
 
 uninstall:
 	rm -f $(PROGRAMS:%='$(DESTDIR)$(BINDIR)'/%$(EXE)) $(MANPAGES:docs/%='$(DESTDIR)$(MANDIR)'/%)
+
+# The README's samples of what the programs print, printed by them
+# (docs/samples.sh; tests/cli.sh checks that they are today's).
+.PHONY: samples
+samples: raytrace raytrace-diff raytrace-merge
+	sh docs/samples.sh README.md
 
 # The README's pictures, rendered from the scenes so that they stay true
 # (tests/cli.sh checks that each has the pixels of its scene's render).

@@ -18,6 +18,10 @@ scene=scenes/course.txt
 grep -v '^#' tests/golden.sha256 >"$T/golden"
 printf '0 0 0\n-1 1 1\n1 1 1\n-1 -1 1\n8\n0 0 0\n0 5 0 255 255 255\nsphere: 0 0 5 1 200 100 50 0.25\n' >"$T/small.txt"
 
+# --- README's samples of what the programs print are what they print ---
+if sh docs/samples.sh --check README.md >"$T/out" 2>"$T/err"; then pass; else
+    fail "README.md's samples are stale: run make samples" "$(cat "$T/err")"; fi
+
 # --- help, version, usage errors ---
 expect_exit help 0 "$RT" --help
 expect_grep help 'Usage: raytrace [OPTIONS] SCENE OUTPUT' "$T/out"
