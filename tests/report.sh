@@ -90,7 +90,8 @@ words=$(awk '/^```/ { code = !code; next } !code && !/^\|/ && !/^!\[/' report/re
 grep -n '\.\./\|/work/\|/home/\|/tmp/' report/report.md >"$T/outside" && \
     fail "report/report.md names files outside the repository" "$(cat "$T/outside")" || pass
 bad=""
-for f in $(sed -n 's/.*!\[[^]]*\](\([^) ]*\).*/\1/p' report/report.md); do
+for f in $(sed -n 's/.*!\[[^]]*\](\([^) ]*\).*/\1/p' report/report.md) \
+    $(grep -o '\\includegraphics\(\[[^]]*\]\)\{0,1\}{[^}]*}' report/report.md | sed 's/.*{\(.*\)}/\1/'); do
     case $f in
     /* | *..* | http*) bad="$bad $f (not under report/)" ;;
     *) [ -f "report/$f" ] || bad="$bad $f (missing)" ;;
