@@ -344,11 +344,10 @@ static const BadKeyword keyword_bad[] = {
      "expected 9 numbers before the material of the triangle (x0 y0 z0 x1 y1 z1 x2 y2 z2 "
      "material), found 8"},
     {CAM MAT "mesh", 3, 5,
-     "expected the path of an OBJ file and a material for the mesh (path material), found "
+     "expected the path of a mesh file (OBJ, PLY or STL) for the mesh (path [material]), found "
      "the end of the line"},
-    {CAM MAT "mesh a.obj", 3, 11,
-     "expected a material name after the path for the mesh (path material), found the end of "
-     "the line"},
+    {CAM MAT "mesh a.obj", 3, 6, "cannot use the mesh 'a.obj': cannot open: No such file or "
+     "directory"},
     {CAM MAT "mesh no-such.obj m", 3, 6,
      "cannot use the mesh 'no-such.obj': cannot open: No such file or directory"},
     {CAM "light 0 0 0 1 1 1 1", 2, 7,

@@ -7,12 +7,13 @@
 #include "base/threads.h"
 #include "scenefile/load.h"
 #include "scenefile/course.h"
+#include "scenefile/mesh.h"
 #include "scenefile/obj.h"
 #include "shading.h"
 #include "test.h"
 
 /* Writes text (len bytes) to build/t.obj and loads it. */
-static int load(const char *text, size_t len, ObjMesh *m, Error *err)
+static int load(const char *text, size_t len, MeshFile *m, Error *err)
 {
     FILE *f = fopen("build/t.obj", "wb");
 
@@ -21,7 +22,7 @@ static int load(const char *text, size_t len, ObjMesh *m, Error *err)
         return -2;
     fwrite(text, 1, len, f);
     fclose(f);
-    return obj_load("build/t.obj", 0, m, err);
+    return mesh_read("build/t.obj", 0, m, err);
 }
 
 static void obj_reads_every_face_form(void)
@@ -39,7 +40,7 @@ static void obj_reads_every_face_form(void)
                                "f 1/1 2/2 3/3\n"
                                "l 1 2\np 3\n"
                                "f 2 3 4";
-    ObjMesh m;
+    MeshFile m;
     Error err;
 
     CHECK_INT(0, load(text, sizeof text - 1, &m, &err));
@@ -62,7 +63,7 @@ static void obj_reads_every_face_form(void)
         CHECK_INT(3, m.tri[4][2].v);
     }
     CHECK_NEAR(0, m.vt[3][1], 0); /* vt with u alone */
-    obj_free(&m);
+    mesh_file_free(&m);
 }
 
 static void obj_faults_name_line_and_column(void)
@@ -89,24 +90,24 @@ static void obj_faults_name_line_and_column(void)
         {"v 0 0 nan\n", 1, 7, "expected a number for a vertex (x y z), found 'nan'"},
         {"vn 0 0 1 1\n", 1, 10, "a normal has 3 numbers (x y z), found more"},
         {"v 0 0 0\nvp 0.5\n", 2, 1,
-         "unsupported OBJ record 'vp' (read: v, vt, vn, f; ignored: o, g, s, usemtl, mtllib, l, "
+         "unsupported OBJ record 'vp' (read: v, vt, vn, f, usemtl, mtllib; ignored: o, g, s, l, "
          "p)"},
         {"v 0 0 0\r\nv 1\r0 0\n", 2, 4, "carriage return inside a line"},
     };
 
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        ObjMesh m;
+        MeshFile m;
         Error err;
         if (load(bad[i].text, strlen(bad[i].text), &m, &err) == 0) {
             test_fail(__FILE__, __LINE__, "case %zu accepted", i);
-            obj_free(&m);
+            mesh_file_free(&m);
             continue;
         }
         CHECK(strcmp(err.file, "build/t.obj") == 0);
         CHECK_ERROR(bad[i].message, &err, bad[i].line, bad[i].column, bad[i].message);
     }
     {
-        ObjMesh m;
+        MeshFile m;
         Error err;
         CHECK_INT(-1, load("v 0 0 0\n\0v 1 0 0\n", 18, &m, &err));
         CHECK_INT(2, err.line);
@@ -205,7 +206,7 @@ static size_t big_obj(char *text, size_t cap, int degenerate)
 }
 
 /* Parses text on the given threads. */
-static int parse_on(int threads, const char *text, size_t len, size_t max_bytes, ObjMesh *m,
+static int parse_on(int threads, const char *text, size_t len, size_t max_bytes, MeshFile *m,
                     Error *err)
 {
     int rc;
@@ -217,12 +218,13 @@ static int parse_on(int threads, const char *text, size_t len, size_t max_bytes,
 
 /* Returns the bytes the serial reading's arrays take: each grown by
  * doubling from 16. */
-static size_t grown_bytes(const ObjMesh *m)
+static size_t grown_bytes(const MeshFile *m)
 {
-    size_t counts[4] = {m->v_count, m->vt_count, m->vn_count, m->tri_count};
-    size_t sizes[4] = {sizeof *m->v, sizeof *m->vt, sizeof *m->vn, sizeof *m->tri}, sum = 0;
+    size_t counts[5] = {m->v_count, m->vt_count, m->vn_count, m->tri_count, m->polygon_count};
+    size_t sizes[5] = {sizeof *m->v, sizeof *m->vt, sizeof *m->vn, sizeof *m->tri,
+                       sizeof *m->polygons}, sum = 0;
 
-    for (int a = 0; a < 4; a++) {
+    for (int a = 0; a < 5; a++) {
         size_t cap = 0;
         while (cap < counts[a])
             cap = cap ? 2 * cap : 16;
@@ -239,7 +241,7 @@ static void obj_reads_alike_on_every_thread(void)
     size_t cap = 4 << 20, len;
     char *text = malloc(cap), *bad = malloc(cap);
     int before = threads_count();
-    ObjMesh one, two;
+    MeshFile one, two;
     Error e1, e2;
 
     CHECK(text && bad);
@@ -266,15 +268,15 @@ static void obj_reads_alike_on_every_thread(void)
     /* The memory limit: the serial reading's arrays just fit, or not. */
     {
         size_t need = grown_bytes(&one);
-        ObjMesh m;
+        MeshFile m;
         CHECK_INT(0, parse_on(2, text, len, need, &m, &e2));
-        obj_free(&m);
+        mesh_file_free(&m);
         CHECK_INT(-1, parse_on(1, text, len, need - 1, &m, &e1));
         CHECK_INT(-1, parse_on(2, text, len, need - 1, &m, &e2));
         CHECK_ERROR("memory limit", &e2, e1.line, e1.column, e1.message);
     }
-    obj_free(&one);
-    obj_free(&two);
+    mesh_file_free(&one);
+    mesh_file_free(&two);
     /* A fault early, in the middle, near the end and on the last line: a
      * face naming a vertex not yet read, a malformed number, a face of two
      * corners, an unknown record. */
@@ -283,7 +285,7 @@ static void obj_reads_alike_on_every_thread(void)
         size_t at[] = {len / 50, len / 2, len - len / 40, len};
         for (int k = 0; k < 4; k++) {
             size_t cut = at[k], n;
-            ObjMesh m;
+            MeshFile m;
             while (cut > 0 && text[cut - 1] != '\n')
                 cut--;
             memcpy(bad, text, cut);
@@ -413,12 +415,12 @@ static void mesh_made_alike_on_every_thread(void)
                         cases[c].usual) != 0)
             return;
         if (cases[c].room > 0) {
-            ObjMesh m;
+            MeshFile m;
             Error err;
-            CHECK_INT(0, obj_load("build/big.obj", 0, &m, &err));
-            limit = obj_memory(&m) + cases[c].room * sizeof(Triangle) + 16384;
+            CHECK_INT(0, mesh_read("build/big.obj", 0, &m, &err));
+            limit = mesh_file_memory(&m) + cases[c].room * sizeof(Triangle) + 16384;
             CHECK(limit < 8192 * sizeof(Triangle));
-            obj_free(&m);
+            mesh_file_free(&m);
         }
         parse_on_both(mesh, limit, &one, &two);
         CHECK_INT(cases[c].count, (long long)scene_count_of(&two, SHAPE_TRIANGLE));

@@ -133,7 +133,7 @@ static void flat_spawned_rays_never_rehit_their_surface(void)
         }
         if (triangle_make(&tri, a, b, d) == 0 &&
             triangle_intersect(&tri, &ray, 0, INFINITY, &t)) {
-            sp = triangle_surface_at(&tri, NULL, &ray, uv);
+            sp = triangle_surface_at(&tri, NULL, &ray, uv, NULL);
             rehits += rehits_from(sp, ray_facing_normal(sp.normal, ray.dir), triangle_hit, &tri);
             tested++;
         }

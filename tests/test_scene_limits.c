@@ -187,7 +187,7 @@ static void limits_mesh_reading_keeps_to_its_budget(void)
 {
     char text[4096];
     size_t len = (size_t)snprintf(text, sizeof text, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf");
-    ObjMesh m;
+    MeshFile m;
     Error err;
 
     for (int i = 0; i < 300; i++)
@@ -195,8 +195,8 @@ static void limits_mesh_reading_keeps_to_its_budget(void)
     text[len++] = '\n';
     CHECK_INT(0, obj_parse("fan.obj", text, len, 0, &m, &err));
     CHECK_INT(298, (long long)m.tri_count);
-    CHECK(obj_memory(&m) >= 298 * sizeof *m.tri);
-    obj_free(&m);
+    CHECK(mesh_file_memory(&m) >= 298 * sizeof *m.tri);
+    mesh_file_free(&m);
     CHECK_INT(-1, obj_parse("fan.obj", text, len, 2000, &m, &err));
     CHECK_INT(4, err.line);
     CHECK_CONTAINS(err.message, "the mesh needs more memory than the 1.953 KiB the memory limit "

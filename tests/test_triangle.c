@@ -42,7 +42,7 @@ static void triangle_hit_gives_point_and_barycentric_uv(void)
 
     CHECK(triangle_intersect(&tri, &r, 0, INFINITY, &t));
     CHECK_NEAR(1, t, 1e-15);
-    sp = triangle_surface_at(&tri, NULL, &r, uv);
+    sp = triangle_surface_at(&tri, NULL, &r, uv, NULL);
     CHECK_NEAR(0.25, sp.point.x, 1e-15);
     CHECK_NEAR(0.5, sp.point.y, 1e-15);
     CHECK_NEAR(5, sp.point.z, 0);

@@ -13,6 +13,7 @@
 #include "render/irradiance.h"
 #include "render/render.h"
 #include "scene/scene.h"
+#include "scenefile/source.h"
 
 /* Seconds each step of a render took (accel: the hierarchy; buffers: the
  * light buffers; cache: the irradiance cache's pre-pass, 0 without one). */
@@ -26,9 +27,11 @@ typedef struct {
 const char *summary_samples_text(const RenderOptions *ropts);
 
 /* Prints -v's first line, "raytrace: read the scene in T s", as soon as
- * the scene is read: a render's first sign of life (and a test's sign that
- * an interrupt will be caught, which it is from the program's start). */
-void summary_read(double seconds);
+ * the scene is read (a render's first sign of life, and a test's sign that
+ * an interrupt will be caught, which it is from the program's start), then
+ * a line for each mesh the scene read from source: its triangles,
+ * materials and textures, and its faces of more than three corners. */
+void summary_read(double seconds, const SceneSource *source);
 
 /* Prints -v's statistics, after summary_read(), of the render of scene into img with ropts on
  * `threads` threads, which cast counts' rays (spp_map: --spp-map's file,

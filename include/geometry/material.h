@@ -72,6 +72,8 @@ typedef struct {
     int line;            /* line of its definition, for messages */
     char *texture;       /* MPL: its texture as the file names it, or NULL;
                             owned by the scene */
+    int from_mesh;       /* 1: a mesh file's material (mesh.h), nameless:
+                            not written back by --save */
 } NamedMaterial;
 
 /* Says whether m's colour is read over a pixel's footprint: a texture or

@@ -17,6 +17,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "math/colour.h"
 #include "math/vec3.h"
 
 /* What a triangle's surface holds beyond its plane, kept apart (in the
@@ -26,6 +27,8 @@ typedef struct {
     double uv[3][2];   /* texture coordinates of the vertices */
     Vec3 vn[3];        /* unit vertex normals, when smooth */
     int smooth;        /* 1: shade with the normal interpolated from vn */
+    int coloured;      /* 1: the surface's colour is rgb's, blended */
+    float rgb[3][3];   /* the vertices' colours, 0 to 255 a channel */
 } TriangleShading;
 
 #define TRIANGLE_PLAIN 0xffffffffu /* a triangle's shading when it has none */
@@ -55,9 +58,11 @@ int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax
 /* Returns the point where the ray meets the triangle's plane, computed from
  * its barycentric coordinates, with the normal (and, on a smooth triangle,
  * the shading normal interpolated from the vertex normals) and error bound;
- * stores in uv the interpolated texture coordinates. sh is the triangle's
- * shading, NULL for a plain one. The ray must cross the triangle. */
+ * stores in uv the interpolated texture coordinates, and in *rgb (unless
+ * NULL) on a coloured triangle its vertices' colours blended. sh is the
+ * triangle's shading, NULL for a plain one. The ray must cross the
+ * triangle. */
 SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh, const Ray *ray,
-                                 double uv[2]);
+                                 double uv[2], Colour *rgb);
 
 #endif

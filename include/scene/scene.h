@@ -327,14 +327,14 @@ long scene_add_material(Scene *scene, const Material *m);
 int scene_append_triangle(Scene *scene, const Triangle *t, size_t material,
                           const TriangleShading *sh);
 
-/* Appends up to n triangles at once, of material index material and each
- * with a shading entry when shaded is set: fill(tris, sh, ctx) writes them
- * into room for n (sh NULL when not shaded), on any threads, the kept ones
- * first, and returns how many it kept (at most n), or more than n when it
- * fails. Their positions among the objects, material and shading indices
- * are set here, and the arrays' capacities are those that adding the kept
- * ones one by one would make. Returns how many were added, or -1 or
- * SCENE_OVER_LIMIT with the scene as it was. */
+/* Appends up to n triangles at once, each with a shading entry when shaded
+ * is set: fill(tris, sh, ctx) writes them into room for n (sh NULL when
+ * not shaded), on any threads, the kept ones first, and returns how many
+ * it kept (at most n), or more than n when it fails. Their material
+ * indices are fill's plus `material`; their positions among the objects
+ * and shading indices are set here, and the arrays' capacities are those
+ * that adding the kept ones one by one would make. Returns how many were
+ * added, or -1 or SCENE_OVER_LIMIT with the scene as it was. */
 long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
                          size_t (*fill)(Triangle *tris, TriangleShading *sh, void *ctx),
                          void *ctx);

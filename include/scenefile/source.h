@@ -10,13 +10,24 @@
 
 #include "math/vec3.h"
 
-/* A mesh line: its path as written, the path it was read from, and the
- * scene's triangles it gave. */
+/* A mesh line: its path as written, the path it was read from, the
+ * scene's triangles it gave, and what the file held. */
 typedef struct {
-    char *path;   /* the OBJ path as written in the scene file */
-    char *opened; /* the path it was read from */
-    size_t first; /* its first triangle in the scene's triangles */
-    size_t count; /* how many triangles it gave */
+    char *path;          /* the mesh file's path as written in the scene file */
+    char *opened;        /* the path it was read from */
+    size_t first;        /* its first triangle in the scene's triangles */
+    size_t count;        /* how many triangles it gave */
+    int own_materials;   /* 1: drawn in the file's materials (the line named
+                            none) */
+    const char *format;  /* what it was read as: "OBJ", "PLY (ASCII)", ... */
+    size_t materials;    /* the materials and textures its triangles use */
+    size_t textures;
+    size_t polygons;     /* its faces of more than three corners, those cut
+                            by ear clipping, those not simple */
+    size_t polygons_cut;
+    size_t polygons_irregular;
+    char **libraries;    /* the material libraries it read (paths, owned) */
+    size_t library_count;
 } SceneMesh;
 
 typedef struct {

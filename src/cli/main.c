@@ -134,8 +134,7 @@ static int main_load(const Options *opts, Scene *scene, SceneSource *source)
         for (size_t i = 0; !opts->quiet && i < scene->warning_count; i++)
             main_report(&scene->warnings[i], "warning");
         if (!opts->quiet && scene->warnings_dropped > 0)
-            fprintf(stderr, "raytrace: %s: warning: %zu more lines read as the MPL ray tracer "
-                            "read them (--strict refuses them)\n",
+            fprintf(stderr, "raytrace: %s: warning: %zu more warnings of the same kinds\n",
                     file_display_name(opts->scene_path), scene->warnings_dropped);
         /* Textures read despite damage, as other readers read them. */
         for (size_t i = 0; !opts->quiet && i < scene->texture_count; i++)
@@ -166,12 +165,20 @@ static int main_check_target(const Options *opts, const Scene *scene, const Scen
                       "overwrite it", scene->textures[i].path);
             return -1;
         }
-    for (size_t i = 0; i < source->mesh_count; i++)
-        if (file_same(source->meshes[i].opened, path)) {
+    for (size_t i = 0; i < source->mesh_count; i++) {
+        const SceneMesh *m = &source->meshes[i];
+        if (file_same(m->opened, path)) {
             error_set(err, path, "the output is the scene's mesh '%s': refusing to overwrite it",
-                      source->meshes[i].opened);
+                      m->opened);
             return -1;
         }
+        for (size_t k = 0; k < m->library_count; k++)
+            if (file_same(m->libraries[k], path)) {
+                error_set(err, path, "the output is the material library '%s' of the scene's "
+                          "mesh: refusing to overwrite it", m->libraries[k]);
+                return -1;
+            }
+    }
     return 0;
 }
 
@@ -526,7 +533,7 @@ static int main_render(const Options *opts)
         return 1;
     times.read = process_seconds() - start;
     if (opts->verbose)
-        summary_read(times.read);
+        summary_read(times.read, &source);
     adjust_render(opts, &scene, &ropts);
     if (strcmp(opts->output_path, "-") == 0 && file_is_terminal(stdout)) {
         error_set(&err, "<stdout>", "refusing to write a binary image to a terminal");

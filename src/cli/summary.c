@@ -128,9 +128,25 @@ static void summary_noise(const RenderOptions *ropts, size_t n, const char *spp_
                 spp_map, ropts->noise.min_spp, ropts->noise.max_spp);
 }
 
-void summary_read(double seconds)
+void summary_read(double seconds, const SceneSource *source)
 {
     fprintf(stderr, "raytrace: read the scene in %.3f s\n", seconds);
+    for (size_t i = 0; i < source->mesh_count; i++) {
+        const SceneMesh *m = &source->meshes[i];
+        fprintf(stderr, "raytrace: mesh %s (%s): %zu triangle%s, ", m->path, m->format, m->count,
+                m->count == 1 ? "" : "s");
+        if (m->own_materials)
+            fprintf(stderr, "%zu material%s of its own, %zu texture%s", m->materials,
+                    m->materials == 1 ? "" : "s", m->textures, m->textures == 1 ? "" : "s");
+        else
+            fputs("the scene's material", stderr);
+        if (m->polygons > 0)
+            fprintf(stderr, "; %zu face%s of more than 3 corners: %zu cut around %s notches, %zu "
+                            "not simple",
+                    m->polygons, m->polygons == 1 ? "" : "s", m->polygons_cut,
+                    m->polygons_cut == 1 ? "its" : "their", m->polygons_irregular);
+        fputc('\n', stderr);
+    }
 }
 
 void summary_verbose(const Scene *scene, const Image *img, const RenderOptions *ropts,

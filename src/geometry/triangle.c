@@ -58,7 +58,8 @@ int triangle_make(Triangle *tri, Vec3 v0, Vec3 v1, Vec3 v2)
 
 TriangleShading triangle_plain_shading(const Triangle *tri)
 {
-    TriangleShading sh = {{{0, 0}, {1, 0}, {0, 1}}, {tri->normal, tri->normal, tri->normal}, 0};
+    TriangleShading sh = {{{0, 0}, {1, 0}, {0, 1}}, {tri->normal, tri->normal, tri->normal}, 0, 0,
+                          {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}};
 
     return sh;
 }
@@ -113,7 +114,7 @@ int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax
 }
 
 SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh, const Ray *ray,
-                                 double uv[2])
+                                 double uv[2], Colour *rgb)
 {
     TriangleShading plain;
     SurfacePoint sp;
@@ -146,5 +147,9 @@ SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh,
     sp.error = vec3_scale(m, g);
     uv[0] = b[0] * sh->uv[0][0] + b[1] * sh->uv[1][0] + b[2] * sh->uv[2][0];
     uv[1] = b[0] * sh->uv[0][1] + b[1] * sh->uv[1][1] + b[2] * sh->uv[2][1];
+    if (rgb && sh->coloured)
+        *rgb = colour(b[0] * sh->rgb[0][0] + b[1] * sh->rgb[1][0] + b[2] * sh->rgb[2][0],
+                      b[0] * sh->rgb[0][1] + b[1] * sh->rgb[1][1] + b[2] * sh->rgb[2][1],
+                      b[0] * sh->rgb[0][2] + b[1] * sh->rgb[1][2] + b[2] * sh->rgb[2][2]);
     return sp;
 }

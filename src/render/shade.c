@@ -57,7 +57,8 @@ static void shade_surface_near(const Scene *scene, const Hit *hit, const Surface
         const Triangle *tri = &scene_triangles(scene)[hit->index];
         Ray down = {vec3_add(p, sp0->normal), vec3_neg(sp0->normal)};
         double uv_[2];
-        *sp = triangle_surface_at(tri, scene_shading_of(scene, tri), &down, want_uv ? uv : uv_);
+        *sp = triangle_surface_at(tri, scene_shading_of(scene, tri), &down, want_uv ? uv : uv_,
+                                  NULL);
         sp->point = p;
         break;
     }
@@ -139,7 +140,8 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
 {
     Shade sh;
     double uv[2] = {0, 0}, stripe = 0;
-    int clamp_v = 0, want_uv, mpl, mapped, averages;
+    int clamp_v = 0, want_uv, mpl, mapped, averages, coloured = 0;
+    Colour rgb = {0, 0, 0};
 
     sh.material = scene_material(scene, hit->kind, hit->index);
     sh.ambient = 1;
@@ -166,7 +168,10 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     }
     case SHAPE_TRIANGLE: {
         const Triangle *tri = &scene_triangles(scene)[hit->index];
-        sh.sp = triangle_surface_at(tri, scene_shading_of(scene, tri), ray, uv);
+        const TriangleShading *ts = scene_shading_of(scene, tri);
+        sh.sp = triangle_surface_at(tri, ts, ray, uv, &rgb);
+        /* A coloured mesh's vertices give the colour a texture does not. */
+        coloured = ts && ts->coloured && sh.material.texture < 0;
         break;
     }
     case SHAPE_CUBE: {
@@ -203,7 +208,7 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     /* A colour averaged over the footprint is read there alone. */
     averages = diff && material_averages(&sh.material);
     if (!averages)
-        sh.colour = shade_colour(scene, &sh.material, uv, stripe, clamp_v);
+        sh.colour = coloured ? rgb : shade_colour(scene, &sh.material, uv, stripe, clamp_v);
     if (diff)
         shade_footprint(scene, ray, hit, diff, fp, &sh, uv, stripe, averages, mpl, clamp_v);
     return sh;

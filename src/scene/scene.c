@@ -486,7 +486,7 @@ long scene_add_triangles(Scene *scene, size_t n, size_t material, int shaded,
 #endif
     for (size_t k = 0; k < kept; k++) {
         tris[k].order = (unsigned)(others + k);
-        tris[k].material = (unsigned)material;
+        tris[k].material += (unsigned)material;
         tris[k].shading = shaded ? (unsigned)(shade + k) : TRIANGLE_PLAIN;
     }
     /* Give back the room of those without area: the capacities are those

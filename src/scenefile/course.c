@@ -17,7 +17,8 @@
  *   sphere     -> 'sphere:' cx cy cz radius material
  *   plane      -> 'plane:' px py pz nx ny nz material
  *   triangle   -> 'triangle:' x0 y0 z0 x1 y1 z1 x2 y2 z2 material
- *   mesh       -> 'mesh:' path material           (a Wavefront OBJ file)
+ *   mesh       -> 'mesh:' path [material]  (an OBJ, PLY or STL file;
+ *                                          without a material, its own)
  *   material   -> r g b reflection [transparency index]
  *   light      -> 'light:' x y z r g b            (a further light)
  *   ambient    -> 'ambient:' r g b                (at most once)

@@ -20,8 +20,8 @@ typedef struct {
     int samples_line;  /* line of the samples: record, 0 before it */
     int lens_line;     /* line of the lens: record, 0 before it */
     int has_last;      /* an object has been read */
-    int last_kind;     /* which shape the last object is (a ShapeKind, or
-                          COURSE_MESH) */
+    int last_kind;     /* which shape the last object is (a ShapeKind,
+                          COURSE_MESH or COURSE_MESH_OWN) */
     size_t last_index; /* its index among the scene's shapes of that kind (a
                           mesh: its first triangle's) */
 } CourseParser;
@@ -29,8 +29,10 @@ typedef struct {
 /* Records a fault at column of line. */
 #define course_fail(P, line, column, ...) lex_fail(&(P)->lex, line, column, __VA_ARGS__)
 
-/* last_kind after a mesh: record (its triangles, of one material). */
+/* last_kind after a mesh: record: its triangles of the one material it
+ * gives, or of its file's own (which a texture: record cannot change). */
 #define COURSE_MESH SHAPE_KINDS
+#define COURSE_MESH_OWN (SHAPE_KINDS + 1)
 
 /* light -> x y z r g b: the header's light and a light: record's numbers. */
 extern const RecordSpec course_light_spec;

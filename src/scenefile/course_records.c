@@ -93,7 +93,7 @@ static const RecordSpec course_sphere_texture_spec = {"the sphere's texture", "p
                                                 NULL, NULL};
 static const RecordSpec course_plane_texture_spec = {"the plane's texture", "path [filter] [tile_size]",
                                                0, 1, 0, course_tile_names, course_tile_kinds};
-static const RecordSpec course_mesh_spec = {"the mesh", "path r g b reflection [transparency index]",
+static const RecordSpec course_mesh_spec = {"the mesh", "path [r g b reflection [transparency index]]",
                                       4, 2, 0, course_material_names, course_material_kinds};
 static const RecordSpec course_mesh_texture_spec = {"the mesh's texture", "path [filter]", 0, 0, 0, NULL,
                                               NULL};
@@ -113,7 +113,7 @@ static const RecordSpec course_cone_texture_spec = {"the cone's texture", "path 
  * triangles share their material. */
 static ShapeKind course_last_kind(const CourseParser *P)
 {
-    return P->last_kind == COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind;
+    return P->last_kind >= COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind;
 }
 
 /* The numbers of each shape's record but the sphere's (course.c reads
@@ -219,14 +219,15 @@ static int course_load_texture(CourseParser *P, const Record *rec, const Token *
     return index < 0 ? -1 : index;
 }
 
-/* mesh -> 'mesh:' path r g b reflection [transparency index] */
+/* mesh -> 'mesh:' path [r g b reflection [transparency index]]: without
+ * a material, the mesh file's own */
 int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
 {
     double v[6];
     Material mat;
     char q[64];
     long added;
-    int n;
+    int n, own = rec->count == 2;
 
     if (rec->count < 2) {
         course_fail(P, &rec->line, rec->end_column,
@@ -235,10 +236,10 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
                    course_mesh_spec.syntax);
         return -1;
     }
-    n = lex_numbers(&P->lex, rec, 2, &course_mesh_spec, v);
-    if (n < 0 || course_material(P, rec, &course_mesh_spec, 2, 0, v, n, &mat) != 0)
+    if (!own && ((n = lex_numbers(&P->lex, rec, 2, &course_mesh_spec, v)) < 0 ||
+                 course_material(P, rec, &course_mesh_spec, 2, 0, v, n, &mat) != 0))
         return -1;
-    added = mesh_load(&P->lex, rec, &rec->tok[1], &mat, scene, P->source);
+    added = mesh_load(&P->lex, rec, &rec->tok[1], own ? NULL : &mat, scene, P->source);
     if (added == MESH_FAULT)
         return -1;
     if (added < 0)
@@ -249,7 +250,8 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
                    lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
     }
-    course_note_object(P, COURSE_MESH, scene_count_of(scene, SHAPE_TRIANGLE) - (size_t)added);
+    course_note_object(P, own ? COURSE_MESH_OWN : COURSE_MESH,
+                       scene_count_of(scene, SHAPE_TRIANGLE) - (size_t)added);
     return 0;
 }
 
@@ -272,6 +274,13 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
         course_fail(P, &rec->line, rec->tok[0].column,
                    "a texture: record must follow the object it covers, and no object comes "
                    "before it");
+        return -1;
+    }
+    if (P->last_kind == COURSE_MESH_OWN) {
+        course_fail(P, &rec->line, rec->tok[0].column,
+                    "the mesh before is drawn in its file's own materials, whose textures its "
+                    "MTL file names (map_Kd): a texture: record may follow a mesh: record that "
+                    "gives a material");
         return -1;
     }
     spec = specs[P->last_kind];

@@ -12,7 +12,8 @@
  *   square     -> 'square' xC yC zC nx ny nz half material
  *   cylinder   -> 'cylinder' x y z radius material   (infinite, along y)
  *   cone       -> 'cone' x y z radius height material (infinite, cone.h)
- *   mesh       -> 'mesh' path material               (a Wavefront OBJ file)
+ *   mesh       -> 'mesh' path [material]     (an OBJ, PLY or STL file;
+ *                                             without a material, its own)
  *   light      -> 'light' x y z r g b i              (distant, any number)
  *   ambient    -> 'ambient' r g b                    (at most once)
  *   background -> 'background' r g b                 (at most once)
@@ -261,25 +262,26 @@ static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, Sha
     return rc != 0 ? keyword_fail_store(K, rec, scene, rc) : 0;
 }
 
-/* mesh -> 'mesh' path material */
+/* mesh -> 'mesh' path [material]: without a material, the mesh file's
+ * own */
 static int keyword_mesh_record(Keyword *K, const Record *rec, Scene *scene)
 {
-    static const RecordSpec spec = {"the mesh", "path material", 0, 0, 0, NULL, NULL};
+    static const RecordSpec spec = {"the mesh", "path [material]", 0, 0, 0, NULL, NULL};
     const Token *path_tok = &rec->tok[1];
     Material m;
     char q[64];
     long added;
 
-    if (rec->count < 3) {
+    if (rec->count < 2) {
         keyword_fail(K, &rec->line, rec->end_column,
-                     "expected %s for the mesh (path material), found the end of the line",
-                     rec->count < 2 ? "the path of an OBJ file and a material"
-                                    : "a material name after the path");
+                     "expected the path of a mesh file (OBJ, PLY or STL) for the mesh (path "
+                     "[material]), found the end of the line");
         return -1;
     }
-    if (names_numbers_and_material(&K->lex, &K->names, rec, 2, &spec, scene, "a material line", NULL, &m) != 0)
+    if (rec->count > 2 && names_numbers_and_material(&K->lex, &K->names, rec, 2, &spec, scene,
+                                                      "a material line", NULL, &m) != 0)
         return -1;
-    added = mesh_load(&K->lex, rec, path_tok, &m, scene, K->source);
+    added = mesh_load(&K->lex, rec, path_tok, rec->count > 2 ? &m : NULL, scene, K->source);
     if (added == MESH_FAULT)
         return -1;
     if (added < 0)

@@ -112,6 +112,8 @@ static void save_materials(FILE *fp, const Scene *scene)
                        b->transparency};
         int n = b->transparency > 0 || b->ior != 1 ? 7 : b->reflection > 0 ? 5 : 4;
 
+        if (pm->from_mesh)
+            continue; /* its mesh file's: the mesh line reads it again */
         fprintf(fp, "material %s", pm->name);
         save_colour(fp, b->colour);
         save_numbers(fp, v, n);
@@ -139,7 +141,10 @@ static int save_objects(FILE *fp, const Scene *scene, const SceneSource *src,
             fputs("mesh ", fp);
             if (save_path(fp, m->path, m->opened, "mesh", scene_name, out_name, err) != 0)
                 return -1;
-            fprintf(fp, " %s\n", save_name(scene, kind, i));
+            if (m->own_materials)
+                fputc('\n', fp); /* drawn in its file's own */
+            else
+                fprintf(fp, " %s\n", save_name(scene, kind, i));
             /* The walk passes over the mesh's other triangles. */
             w.next[SHAPE_TRIANGLE] = i + m->count;
             continue;

@@ -17,6 +17,9 @@ void source_free(SceneSource *src)
     for (size_t i = 0; i < src->mesh_count; i++) {
         free(src->meshes[i].path);
         free(src->meshes[i].opened);
+        for (size_t k = 0; k < src->meshes[i].library_count; k++)
+            free(src->meshes[i].libraries[k]);
+        free(src->meshes[i].libraries);
     }
     free(src->meshes);
     source_init(src);
@@ -28,6 +31,9 @@ int source_add_mesh(SceneSource *src, SceneMesh *mesh)
         0) {
         free(mesh->path);
         free(mesh->opened);
+        for (size_t k = 0; k < mesh->library_count; k++)
+            free(mesh->libraries[k]);
+        free(mesh->libraries);
         return -1;
     }
     src->meshes[src->mesh_count++] = *mesh;

@@ -9,19 +9,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    ObjMesh mesh;
+    MeshFile mesh;
     Error err;
 
     if (obj_parse("fuzz.obj", (const char *)data, size, 0, &mesh, &err) != 0)
         return 0;
     for (size_t i = 0; i < mesh.tri_count; i++)
         for (int k = 0; k < 3; k++) {
-            const ObjCorner *c = &mesh.tri[i][k];
+            const MeshCorner *c = &mesh.tri[i][k];
             if (c->v < 0 || (size_t)c->v >= mesh.v_count ||
                 (c->vt >= 0 && (size_t)c->vt >= mesh.vt_count) ||
                 (c->vn >= 0 && (size_t)c->vn >= mesh.vn_count))
                 abort();
         }
-    obj_free(&mesh);
+    mesh_file_free(&mesh);
     return 0;
 }
