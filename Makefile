@@ -247,7 +247,7 @@ TEST_JOBS = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
 TEST_LEVEL ?= full
 # In the order make starts them: raytrace's objects and link first, then
 # the longest suites first.
-QUICK_SUITES := golden cli report unit jpeg faults hostile tiles noise install layers
+QUICK_SUITES := golden cli report unit jpeg faults meshes hostile tiles noise install layers
 FULL_SUITES := $(QUICK_SUITES) replay
 .PHONY: $(FULL_SUITES:%=test-%)
 
@@ -277,6 +277,8 @@ test-golden: raytrace raytrace-diff
 	$(SUITE_ENV) sh tests/golden.sh ./raytrace ./raytrace-diff || $(SUITE_FAILED)
 test-cli: raytrace raytrace-diff $(RT_FLOAT)
 	$(SUITE_ENV) RT_FLOAT=$(RT_FLOAT) sh tests/cli.sh ./raytrace ./raytrace-diff || $(SUITE_FAILED)
+test-meshes: raytrace raytrace-diff $(BUILD)/meshgen
+	$(SUITE_ENV) sh tests/meshes.sh ./raytrace ./raytrace-diff $(BUILD)/meshgen || $(SUITE_FAILED)
 test-hostile: raytrace
 	$(SUITE_ENV) sh tests/hostile.sh ./raytrace || $(SUITE_FAILED)
 test-install: raytrace raytrace-diff raytrace-merge
@@ -371,6 +373,11 @@ $(BUILD)/raytrace-float: $(FLOAT_OBJ)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ $^ $(RT_LDLIBS) $(LDLIBS)
 
 # The benchmark (not a test): generated scenes, medians, docs/benchmarks.md.
+# The meshes of tests/meshes.sh and the benchmark, in every mesh format.
+$(BUILD)/meshgen: tests/meshgen.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ tests/meshgen.c $(RT_LDLIBS) $(LDLIBS)
+
 $(BUILD)/scenegen: tests/bench/scenegen.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CFLAGS) $(CFLAGS) $(RT_LDFLAGS) $(LDFLAGS) -o $@ tests/bench/scenegen.c $(RT_LDLIBS) $(LDLIBS)

@@ -365,9 +365,9 @@ long mesh_load(Lexer *L, const Record *rec, const Token *t, const Material *mat,
         free(sm.opened);
         return MESH_FAULT;
     }
-    added = mesh_add(scene, &mesh, mat, &sm);
-    if (added > 0 && mesh_warnings(scene, &mesh) != 0)
-        added = -1;
+    /* The reader's warnings first: they come from the files mesh_add()'s
+     * textures are named in. */
+    added = mesh_warnings(scene, &mesh) != 0 ? -1 : mesh_add(scene, &mesh, mat, &sm);
     sm.libraries = mesh.libraries;
     sm.library_count = mesh.library_count;
     mesh.libraries = NULL;

@@ -59,6 +59,7 @@ typedef struct {
     int lineno;
     size_t max_bytes, used;
     Error *err;
+    const char *token;         /* ASCII: the last number's first byte */
     const PlyElement *element; /* the element being read, */
     size_t index;              /* which one of them */
     MeshCorner *corners;       /* a face's corners */
@@ -383,6 +384,7 @@ static int ply_value(PlyReader *r, PlyType t, double *out)
     }
     {
         const char *e = ply_ascii_token(r);
+        r->token = r->p;
         if (e == r->p)
             return ply_short(r);
         if (number_parse(r->p, (size_t)(e - r->p), out) != NUMBER_OK)
@@ -408,8 +410,11 @@ static int ply_count(PlyReader *r, PlyType t, int item_size, size_t *n)
         return -1;
     if (c < 0 || c > (double)(r->end - r->p) / (r->format == PLY_ASCII ? 2 : item_size) +
                          (r->format == PLY_ASCII)) {
-        r->p = at;
-        return ply_fail(r, "a list of %.0f items: more than the file holds", c);
+        r->p = r->format == PLY_ASCII ? r->token : at;
+        return ply_fail(r, "the file ends inside %s %zu of %zu (element '%s'): a list of %.0f "
+                        "items, more than the %zu bytes left hold",
+                        strcmp(r->element->name, "face") == 0 ? "face" : "item", r->index + 1,
+                        r->element->count, r->element->name, c, (size_t)(r->end - at));
     }
     *n = (size_t)c;
     return 0;
@@ -455,7 +460,7 @@ static int ply_face(PlyReader *r, const PlyProperty *p, size_t n, MeshFile *mesh
         if (ply_value(r, p->type, &v) != 0)
             return -1;
         if (!(v >= 0 && v < (double)vertices)) {
-            r->p = at;
+            r->p = r->format == PLY_ASCII ? r->token : at;
             return ply_fail(r, "vertex %.0f does not exist (the file has %zu vertices)", v,
                             vertices);
         }
@@ -541,6 +546,11 @@ static int ply_vertex(PlyReader *r, const PlyElement *e, size_t i, MeshFile *mes
 {
     double val[PLY_ROLES] = {0};
     const char *start = r->p;
+
+    if (r->format == PLY_ASCII) {
+        ply_ascii_token(r); /* the vertex's first number */
+        start = r->p;
+    }
 
     for (int k = 0; k < e->prop_count; k++) {
         const PlyProperty *p = &e->props[k];
