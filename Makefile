@@ -162,7 +162,7 @@ SUITES_H := $(BUILD)/tests/suites.h
 ifneq ($(shell cat $(SUITES_H) 2>/dev/null),$(UNIT_SUITES))
 $(shell mkdir -p $(BUILD)/tests && echo '$(UNIT_SUITES)' > $(SUITES_H))
 endif
-FUZZ_TARGETS := course keyword mpl obj ppm picture jpeg tile
+FUZZ_TARGETS := course keyword mpl obj ply stl mtl ppm picture jpeg tile
 TEST_OBJ := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%.o)
 
 PREFIX ?= /usr/local
@@ -460,10 +460,11 @@ $(BUILD)/fuzz/%.o: src/%.c $(wildcard include/*/*.h src/*/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
 
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_scene.h $(FUZZ_OBJ)
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_scene.h tests/fuzz/fuzz_mesh.h $(FUZZ_OBJ)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_OBJ) -lm
 
-$(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h $(LIB_OBJ) \
+$(BUILD)/replay/%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c tests/fuzz/fuzz_scene.h \
+		tests/fuzz/fuzz_mesh.h $(LIB_OBJ) \
 		$(wildcard include/*/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests/fuzz $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ \

@@ -310,8 +310,7 @@ static int ply_header(PlyReader *r, MeshFile *mesh)
             return -1;
         }
     }
-    r->line = r->end;
-    return ply_fail_at(r, r->end, "the header has no end_header line");
+    return ply_fail_at(r, r->line, "the header has no end_header line");
 }
 
 /* Says in *err that the data ends inside the element being read. */
@@ -448,8 +447,11 @@ static int ply_face(PlyReader *r, const PlyProperty *p, size_t n, MeshFile *mesh
     int uv = vertex && vertex->has[PLY_U] && vertex->has[PLY_V];
     int normals = vertex && vertex->has[PLY_NX] && vertex->has[PLY_NY] && vertex->has[PLY_NZ];
 
-    if (n < 3)
+    if (n < 3) {
+        if (r->format == PLY_ASCII)
+            r->p = r->token; /* at the count */
         return ply_fail(r, "a face needs at least 3 corners, found %zu", n);
+    }
     if (ply_room(r, (void **)&r->corners, &r->corner_capacity, 0, n, sizeof *r->corners) != 0 ||
         ply_room(r, (void **)&mesh->tri, &r->caps[0], mesh->tri_count, n - 2,
                  sizeof *mesh->tri) != 0)
@@ -638,9 +640,9 @@ static int ply_data(PlyReader *r, MeshFile *mesh)
         if (e->prop_count == 0)
             continue; /* nothing to read, however many */
         if (e->count > (size_t)(r->end - r->p) / ply_least(r, e) + (r->format == PLY_ASCII))
-            return ply_fail(r, "the header declares %zu items of the element '%s': more than "
-                            "the %zu bytes left hold", e->count, e->name,
-                            (size_t)(r->end - r->p));
+            return ply_fail(r, "the header declares %zu item%s of the element '%s': more than "
+                            "the %zu byte%s left hold", e->count, e->count == 1 ? "" : "s",
+                            e->name, (size_t)(r->end - r->p), r->end - r->p == 1 ? "" : "s");
         if (e == vertex && ply_vertex_arrays(r, e, mesh) != 0)
             return -1;
         for (r->index = 0; r->index < e->count; r->index++)
