@@ -22,6 +22,10 @@
 #     pixels, LightWave's ring keeping its hole, the invalid folder's files
 #     refused or read, never a crash.
 #
+# The quick suite (make test, RAYTRACE_TEST_LEVEL=quick) renders part 1 in
+# course scenes alone, part 2 from OBJ and little-endian PLY, and of part
+# 6's folders the invalid one.
+#
 # Usage: sh tests/meshes.sh RAYTRACE RAYTRACE-DIFF MESHGEN   (from the
 # repository root)
 
@@ -63,7 +67,9 @@ keyword() {
 # --- 1. the same triangles in every format, the same bytes ---
 formats="obj ply-ascii ply-le ply-be stl-ascii stl-binary"
 for f in $formats; do "$GEN" $f bumpy 3000 >"bumpy.$f" || fail "meshgen $f"; done
-for scene in course keyword; do
+scenes="course keyword"
+full || scenes=course
+for scene in $scenes; do
     first=
     for f in $formats; do
         # The name says nothing: the content tells the format.
@@ -91,8 +97,10 @@ course "mesh: mesh-stl-binary.dat"
 expect_grep "-v: binary STL" "raytrace: mesh mesh-stl-binary.dat (STL (binary)): " err
 
 # --- 2. concave faces cover what their true triangulations cover ---
+encodings="obj ply-ascii ply-le"
+full || encodings="obj ply-le"
 for s in star comb spiral ring; do
-    for f in obj ply-ascii ply-le; do
+    for f in $encodings; do
         "$GEN" $f $s >"face.$f" && "$GEN" $f $s cut >"cut.$f" || fail "meshgen $f $s"
         # Flat white: ambient light alone, so that every triangle is alike.
         printf 'camera 0 0 -10 0 0 0 0.9 120 120\nmaterial w 255 255 255 1 0 0 1\n' >scene.txt
@@ -262,14 +270,27 @@ if [ -d "$A/OBJ" ]; then
     done
     cmp -s mask-OBJ mask-PLY && cmp -s mask-OBJ mask-STL && pass ||
         fail "Wuson in OBJ, PLY and STL covers other pixels"
+    # The spider in ASCII and binary STL: the same pixels covered.
+    for f in ascii binary; do
+        printf 'camera 4 3 -3 1 0.8 0.5 0.8 96 96\nbackground 20 30 60\nlight -1 -1 1 255 255 255 1\nmesh %s\n' \
+            "$A/STL/Spider_$f.stl" >s.txt
+        "$RT" -q s.txt "spider-$f.ppm" 2>err || fail "the spider in $f STL" "$(cat err)"
+        mask "spider-$f.ppm" >"mask-spider-$f"
+    done
+    cmp -s mask-spider-ascii mask-spider-binary && pass || fail "the ASCII and binary STL spiders cover other pixels"
+    [ "$(grep -c 1 mask-spider-ascii)" -gt 300 ] && pass || fail "the STL spider is not in view"
     # The ring: one face of 66 corners, its hole kept.
     printf 'camera -6 2.4 2.35 -1.146 2.4 2.35 0.5 60 60\nbackground 20 30 60\nlight 1 -0.2 0.1 255 255 255 1\nmesh %s\n' \
         "$A/OBJ/concave_polygon.obj" >ring.txt
     "$RT" -q ring.txt ring.ppm 2>err || fail "the ring" "$(cat err)"
     [ "$(pixel ring.ppm 30 30)" = "20 30 60" ] && pass || fail "the ring's hole is filled: $(pixel ring.ppm 30 30)"
     [ "$(mask ring.ppm | grep -c 1)" -gt 40 ] && pass || fail "the ring itself is missing"
-    # The invalid folder: refused with a message, or read; never a crash.
-    for f in "$A"/invalid/*.obj "$A"/invalid/*.ply "$A"/OBJ/*.obj "$A"/PLY/*.ply "$A"/STL/*.stl "$A"/STL/*.STL; do
+    # The invalid folder, and in full every file: refused with a message,
+    # or read; never a crash.
+    files="$A/invalid/*.obj $A/invalid/*.ply"
+    full && files="$files $A/OBJ/*.obj $A/PLY/*.ply $A/STL/*.stl $A/STL/*.STL"
+    # shellcheck disable=SC2086 # the patterns are meant to expand
+    for f in $files; do
         course "mesh: $f"
         "$RT" -q scene.txt x.ppm 2>err
         code=$?
