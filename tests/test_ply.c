@@ -199,6 +199,9 @@ static void ply_faults_name_their_place(void)
         CHECK_INT(-1, ply_parse("bad.ply", bad[i].text, strlen(bad[i].text), 0, &m, &err));
         CHECK_ERROR(bad[i].text, &err, bad[i].line, bad[i].column, bad[i].message);
     }
+    /* An empty file (assimp's invalid/empty.ply) has no line to point at. */
+    CHECK_INT(-1, ply_parse("empty.ply", "", 0, 0, &m, &err));
+    CHECK_CONTAINS(err.message, "the file is empty");
 }
 
 /* A binary file cut short, or holding fewer items than its header says:

@@ -310,6 +310,10 @@ static int ply_header(PlyReader *r, MeshFile *mesh)
             return -1;
         }
     }
+    if (r->lineno == 0) {
+        error_set(r->err, r->name, "the file is empty: a PLY file starts with the line 'ply'");
+        return -1;
+    }
     return ply_fail_at(r, r->line, "the header has no end_header line");
 }
 
