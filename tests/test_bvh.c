@@ -85,12 +85,13 @@ static void random_scene(Scene *sc, int n, double s)
  * tests have no rays) with threads threads; returns bvh_build()'s answer. */
 static int build_over(Bvh *bvh, const Scene *sc, int threads)
 {
-    BvhShapes shapes = {scene_spheres(sc),   scene_count_of(sc, SHAPE_SPHERE),
-                        scene_triangles(sc), scene_count_of(sc, SHAPE_TRIANGLE),
-                        scene_cubes(sc),     scene_count_of(sc, SHAPE_CUBE),
-                        scene_squares(sc),   scene_count_of(sc, SHAPE_SQUARE),
-                        NULL};
+    BvhShapes shapes = {{NULL}, {0}, NULL};
 
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        if (SHAPE_BOUNDED >> k & 1) {
+            shapes.items[k] = scene_items(sc, (ShapeKind)k);
+            shapes.count[k] = scene_count_of(sc, (ShapeKind)k);
+        }
     return bvh_build(bvh, &shapes, 0, threads);
 }
 
@@ -133,35 +134,38 @@ static void check_subtree(const Bvh *bvh, const Scene *sc, size_t id, int depth,
             (*bad)++;
         for (uint32_t i = bvh_link_index(n->link[k]); bvh_link_count(n->link[k]) > 0 && i < bvh_link_index(n->link[k]) + bvh_link_count(n->link[k]); i++) {
             uint32_t ref = bvh_prim_ref(bvh, i);
-            size_t base[4] = {0, scene_count_of(sc, SHAPE_SPHERE),
-                              scene_count_of(sc, SHAPE_SPHERE) + scene_count_of(sc, SHAPE_TRIANGLE),
-                              scene_count_of(sc, SHAPE_SPHERE) +
-                                  scene_count_of(sc, SHAPE_TRIANGLE) +
-                                  scene_count_of(sc, SHAPE_CUBE)};
-            size_t slot = base[bvh_kind(ref)] + bvh_index(ref);
+            size_t slot = bvh_index(ref);
             Vec3 lo, hi;
+            for (unsigned kind = 0; kind < bvh_kind(ref); kind++)
+                slot += SHAPE_BOUNDED >> kind & 1 ? scene_count_of(sc, (ShapeKind)kind) : 0;
             seen[slot]++;
-            if (bvh_kind(ref) == BVH_TRIANGLE) {
+            if (bvh_kind(ref) == SHAPE_TRIANGLE) {
                 const Triangle *t = &scene_triangles(sc)[bvh_index(ref)];
                 lo = hi = t->v[0];
                 for (int j = 1; j < 3; j++) {
                     lo = vec3(fmin(lo.x, t->v[j].x), fmin(lo.y, t->v[j].y), fmin(lo.z, t->v[j].z));
                     hi = vec3(fmax(hi.x, t->v[j].x), fmax(hi.y, t->v[j].y), fmax(hi.z, t->v[j].z));
                 }
-            } else if (bvh_kind(ref) == BVH_CUBE) {
-                lo = scene_cubes(sc)[bvh_index(ref)].lo;
-                hi = scene_cubes(sc)[bvh_index(ref)].hi;
-            } else if (bvh_kind(ref) == BVH_SQUARE) {
-                const Square *q = &scene_squares(sc)[bvh_index(ref)];
+            } else if (bvh_kind(ref) == SHAPE_CUBE) {
+                lo = ((const Cube *)scene_items(sc, SHAPE_CUBE))[bvh_index(ref)].lo;
+                hi = ((const Cube *)scene_items(sc, SHAPE_CUBE))[bvh_index(ref)].hi;
+            } else if (bvh_kind(ref) == SHAPE_SQUARE) {
+                const Square *q = &((const Square *)scene_items(sc, SHAPE_SQUARE))[bvh_index(ref)];
                 Vec3 u = vec3_scale(q->axis_u, q->half), v = vec3_scale(q->axis_v, q->half);
                 Vec3 e = vec3_add(vec3_abs(u), vec3_abs(v));
                 lo = vec3_sub(q->centre, e);
                 hi = vec3_add(q->centre, e);
-            } else {
+            } else if (bvh_kind(ref) == SHAPE_SPHERE) {
                 const Sphere *s = &scene_spheres(sc)[bvh_index(ref)];
                 Vec3 r = vec3(s->radius, s->radius, s->radius);
                 lo = vec3_sub(s->centre, r);
                 hi = vec3_add(s->centre, r);
+            } else { /* the other bounded kinds: their own box */
+                real l[3], h[3], m;
+                ShapeKind kind = (ShapeKind)bvh_kind(ref);
+                m = shape_bounds(kind, scene_items(sc, kind), bvh_index(ref), 0, l, h);
+                lo = vec3(l[0] - m, l[1] - m, l[2] - m);
+                hi = vec3(h[0] + m, h[1] + m, h[2] + m);
             }
             if (!within_child(n, k, in_frame(bvh, lo), in_frame(bvh, hi)))
                 (*bad)++;

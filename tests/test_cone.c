@@ -32,7 +32,7 @@ static void cone_hits_its_nappe_only(void)
     sp = cone_surface_at(&c, vec3(0.5, 0.5, 0));
     CHECK_NEAR(sqrt(0.5), sp.normal.x, 1e-15); /* out and up, at 45 degrees */
     CHECK_NEAR(sqrt(0.5), sp.normal.y, 1e-15);
-    cone_uv(&c, vec3(0, 0.25, -0.75), uv);
+    cone_uv(&c, vec3(0, 0.25, -0.75), vec3(0, 0, -1), uv);
     CHECK_NEAR(0.5, uv[0], 1e-15);
     CHECK_NEAR(0.25, uv[1], 1e-15);
     /* Upside down: apex below, opening upwards. */

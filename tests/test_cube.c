@@ -42,7 +42,7 @@ static void cube_surface_points_lie_on_their_face(void)
 
     cube_make(&c, vec3(1e7, 2, 3), 0.5, solid_plain());
     CHECK(cube_intersect(&c, &down, 0, INFINITY, &t));
-    sp = cube_surface_at(&c, &down, t);
+    sp = cube_surface(&c, &down, t);
     CHECK(sp.normal.y == 1 && sp.normal.x == 0 && sp.normal.z == 0);
     CHECK(sp.point.y == c.hi.y);
     CHECK(sp.error.x > 0 && sp.error.y > 0 && sp.error.z > 0);
@@ -51,7 +51,7 @@ static void cube_surface_points_lie_on_their_face(void)
     CHECK_NEAR(0.6, uv[1], 1e-9);
     /* The -z face seen from in front: +x to the right, +y up. */
     CHECK(cube_intersect(&c, &ahead, 0, INFINITY, &t));
-    sp = cube_surface_at(&c, &ahead, t);
+    sp = cube_surface(&c, &ahead, t);
     CHECK(sp.normal.z == -1);
     cube_uv(&c, sp.point, sp.normal, uv);
     CHECK_NEAR(0.25, uv[0], 1e-9);
@@ -83,7 +83,7 @@ static void cube_edges_belong_to_the_face_the_ray_crosses(void)
             test_fail(__FILE__, __LINE__, "ray %zu misses the cube", i);
             continue;
         }
-        sp = cube_surface_at(&c, &rays[i], t);
+        sp = cube_surface(&c, &rays[i], t);
         if (!vec3_equal(sp.normal, want[i]))
             test_fail(__FILE__, __LINE__, "ray %zu: normal (%g, %g, %g), expected (%g, %g, %g)",
                       i, sp.normal.x, sp.normal.y, sp.normal.z, want[i].x, want[i].y, want[i].z);
@@ -92,7 +92,7 @@ static void cube_edges_belong_to_the_face_the_ray_crosses(void)
     {
         Ray out = ray_from(0, 0, 2, 0, 1, 1);
         CHECK(cube_intersect(&c, &out, 0, INFINITY, &t));
-        CHECK(vec3_equal(cube_surface_at(&c, &out, t).normal, vec3(0, 1, 0)));
+        CHECK(vec3_equal(cube_surface(&c, &out, t).normal, vec3(0, 1, 0)));
     }
 }
 

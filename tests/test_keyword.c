@@ -318,19 +318,19 @@ static const BadKeyword keyword_bad[] = {
     {CAM "material m 255 0 0 1 1 1 nan", 2, 26,
      "the material's alpha must be a finite number, found 'nan'"},
     {CAM MAT "sphere 0 0 5 1", 3, 15,
-     "expected the name of a material after the numbers of the sphere (xC yC zC radius "
+     "expected the name of a material after the numbers of the sphere (cx cy cz radius "
      "material), found the end of the line"},
     {CAM MAT "sphere 0 0 5 m", 3, 14,
-     "expected 4 numbers before the material of the sphere (xC yC zC radius material), found "
+     "expected 4 numbers before the material of the sphere (cx cy cz radius material), found "
      "3"},
     {CAM MAT "sphere 0 0 5 1 2 m", 3, 16,
-     "expected 4 numbers for the sphere (xC yC zC radius material), found 5"},
+     "expected 4 numbers for the sphere (cx cy cz radius material), found 5"},
     {CAM MAT "sphere 0 0 5 1 m x", 3, 18,
      "expected the end of the line after the material's name, found 'x'"},
     {CAM MAT "sphere 0 0 5 1 7", 3, 16,
-     "expected the name of a material for the sphere (xC yC zC radius material), found the "
+     "expected the name of a material for the sphere (cx cy cz radius material), found the "
      "number '7'"},
-    {CAM MAT "sphere 0 0,5 5 1 m", 3, 10, "expected a number for the sphere's yC, found '0,5'"},
+    {CAM MAT "sphere 0 0,5 5 1 m", 3, 10, "expected a number for the sphere's centre y, found '0,5'"},
     {CAM MAT "sphere 0 0 5 0 m", 3, 14, "the sphere's radius must be greater than 0, found '0'"},
     {CAM MAT "sphere 0 0 5 1 n", 3, 16,
      "unknown material 'n': a material line must define it before the sphere"},
@@ -363,7 +363,7 @@ static const BadKeyword keyword_bad[] = {
      "unknown element 'torus' (expected 'camera', 'material', 'sphere', 'plane', 'triangle', "
      "'cube', 'square', 'cylinder', 'cone', 'mesh', 'light', 'ambient' or 'background')"},
     {CAM "cube 1 2 3", 2, 11,
-     "expected the name of a material after the numbers of the cube (xC yC zC half material), "
+     "expected the name of a material after the numbers of the cube (cx cy cz half-edge material), "
      "found the end of the line"},
     {CAM "material m 1 2 3 0 1 0 0\ncone 0 0 0 1 0 m", 3, 14,
      "the cone's height must not be 0: its apex is that far above (or below) the centre of its "
@@ -566,25 +566,25 @@ static int same_scene(const Scene *a, const Scene *b)
                p->order == q->order;
     }
     for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CUBE); i++) {
-        const Cube *p = &scene_cubes(a)[i], *q = &scene_cubes(b)[i];
+        const Cube *p = &((Cube *)scene_items(a, SHAPE_CUBE))[i], *q = &((Cube *)scene_items(b, SHAPE_CUBE))[i];
         same = SAME(p->centre, q->centre) && SAME(p->half, q->half) && SAME(p->lo, q->lo) &&
                SAME(p->hi, q->hi) && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }
     for (size_t i = 0; same && i < scene_count_of(a, SHAPE_SQUARE); i++) {
-        const Square *p = &scene_squares(a)[i], *q = &scene_squares(b)[i];
+        const Square *p = &((Square *)scene_items(a, SHAPE_SQUARE))[i], *q = &((Square *)scene_items(b, SHAPE_SQUARE))[i];
         same = SAME(p->centre, q->centre) && SAME(p->given, q->given) &&
                SAME(p->normal, q->normal) && SAME(p->axis_u, q->axis_u) &&
                SAME(p->half, q->half) && same_material(&p->material, &q->material) &&
                p->order == q->order;
     }
     for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CYLINDER); i++) {
-        const Cylinder *p = &scene_cylinders(a)[i], *q = &scene_cylinders(b)[i];
+        const Cylinder *p = &((Cylinder *)scene_items(a, SHAPE_CYLINDER))[i], *q = &((Cylinder *)scene_items(b, SHAPE_CYLINDER))[i];
         same = SAME(p->centre, q->centre) && SAME(p->radius, q->radius) &&
                same_material(&p->material, &q->material) && p->order == q->order;
     }
     for (size_t i = 0; same && i < scene_count_of(a, SHAPE_CONE); i++) {
-        const Cone *p = &scene_cones(a)[i], *q = &scene_cones(b)[i];
+        const Cone *p = &((Cone *)scene_items(a, SHAPE_CONE))[i], *q = &((Cone *)scene_items(b, SHAPE_CONE))[i];
         same = SAME(p->base, q->base) && SAME(p->apex, q->apex) && SAME(p->radius, q->radius) &&
                SAME(p->height, q->height) && SAME(p->k, q->k) &&
                same_material(&p->material, &q->material) && p->order == q->order;

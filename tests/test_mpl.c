@@ -36,14 +36,14 @@ static void mpl_reads_the_example_verbatim(void)
     CHECK_INT(1, (long long)scene_count_of(&sc, SHAPE_SPHERE));
     CHECK_INT(1, (long long)sc.light_count);
     /* "p Cylinder -4.f, 0.f, 5.f 1.0f marble": commas and C literals. */
-    CHECK_NEAR(-4, scene_cylinders(&sc)[0].centre.x, 0);
-    CHECK_NEAR(5, scene_cylinders(&sc)[0].centre.z, 0);
-    CHECK_NEAR(1, scene_cylinders(&sc)[0].radius, 0);
+    CHECK_NEAR(-4, ((Cylinder *)scene_items(&sc, SHAPE_CYLINDER))[0].centre.x, 0);
+    CHECK_NEAR(5, ((Cylinder *)scene_items(&sc, SHAPE_CYLINDER))[0].centre.z, 0);
+    CHECK_NEAR(1, ((Cylinder *)scene_items(&sc, SHAPE_CYLINDER))[0].radius, 0);
     /* The MPL ray tracer's sizes are half-edges: the painting stands out of the
      * wall at z = 5 by 0.25. */
-    CHECK_NEAR(4.75, scene_cubes(&sc)[0].lo.z, 0);
-    CHECK_NEAR(6.75, scene_cubes(&sc)[0].hi.z, 0);
-    CHECK_NEAR(50, scene_squares(&sc)[1].half, 0);
+    CHECK_NEAR(4.75, ((Cube *)scene_items(&sc, SHAPE_CUBE))[0].lo.z, 0);
+    CHECK_NEAR(6.75, ((Cube *)scene_items(&sc, SHAPE_CUBE))[0].hi.z, 0);
+    CHECK_NEAR(50, ((Square *)scene_items(&sc, SHAPE_SQUARE))[1].half, 0);
     CHECK_INT(MODEL_METALLIC, sc.named[4].model);
     CHECK_INT(MODEL_MATTE, sc.named[0].model);
     /* "m marble MATTE 1.f 1.f 1.f 0 1.f 50.f marble.jpg": the index 7th,
@@ -55,9 +55,9 @@ static void mpl_reads_the_example_verbatim(void)
     CHECK_NEAR(0, sc.named[0].ks, 0);
     CHECK_NEAR(127.5, sc.named[4].base.colour.r, 0);
     /* The cone stands on its circle at y = -1.5, its apex 2.5 above. */
-    CHECK_NEAR(1, scene_cones(&sc)[0].apex.y, 0);
-    CHECK_NEAR(0.2 * 0.2, scene_cones(&sc)[0].k, 1e-16);
-    CHECK_INT(1, scene_cones(&sc)[0].finite); /* it ends at its circle */
+    CHECK_NEAR(1, ((Cone *)scene_items(&sc, SHAPE_CONE))[0].apex.y, 0);
+    CHECK_NEAR(0.2 * 0.2, ((Cone *)scene_items(&sc, SHAPE_CONE))[0].k, 1e-16);
+    CHECK_INT(1, ((Cone *)scene_items(&sc, SHAPE_CONE))[0].finite); /* it ends at its circle */
     CHECK_INT(1, sc.lights[0].distant);
     CHECK_NEAR(sqrt(0.5), sc.lights[0].to_light.y, 1e-15);
     CHECK_NEAR(-sqrt(0.5), sc.lights[0].to_light.z, 1e-15);
@@ -522,11 +522,11 @@ static void mpl_cone_ends_at_its_circle(void)
     real t = 0;
 
     CHECK_INT(0, mpl("m a MATTE 1 1 1 0 0 0 N\np Cone 0 0 0 1 2 a\n", &sc, &err));
-    CHECK_INT(0, cone_intersect(&scene_cones(&sc)[0], &below, 0, INFINITY, &t));
-    CHECK_INT(1, cone_intersect(&scene_cones(&sc)[0], &side, 0, INFINITY, &t));
+    CHECK_INT(0, cone_intersect(&((Cone *)scene_items(&sc, SHAPE_CONE))[0], &below, 0, INFINITY, &t));
+    CHECK_INT(1, cone_intersect(&((Cone *)scene_items(&sc, SHAPE_CONE))[0], &side, 0, INFINITY, &t));
     CHECK_NEAR(4.5, t, 1e-12);
-    scene_cones(&sc)[0].finite = 0; /* the keyword format's infinite cone */
-    CHECK_INT(1, cone_intersect(&scene_cones(&sc)[0], &below, 0, INFINITY, &t));
+    ((Cone *)scene_items(&sc, SHAPE_CONE))[0].finite = 0; /* the keyword format's infinite cone */
+    CHECK_INT(1, cone_intersect(&((Cone *)scene_items(&sc, SHAPE_CONE))[0], &below, 0, INFINITY, &t));
     scene_free(&sc);
 }
 

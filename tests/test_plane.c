@@ -47,7 +47,7 @@ static void plane_texture_axes_are_orthonormal(void)
     CHECK_NEAR(0, vec3_dot(pl.normal, pl.axis_v), 1e-15);
     CHECK_NEAR(0, vec3_dot(pl.axis_u, pl.axis_v), 1e-15);
     CHECK_NEAR(1, vec3_length(pl.axis_u), 1e-15);
-    plane_uv(&pl, vec3_add(pl.point, vec3_add(vec3_scale(pl.axis_u, 3), pl.axis_v)), uv);
+    plane_uv(&pl, vec3_add(pl.point, vec3_add(vec3_scale(pl.axis_u, 3), pl.axis_v)), pl.normal, uv);
     CHECK_NEAR(1.5, uv[0], 1e-15);
     CHECK_NEAR(0.5, uv[1], 1e-15);
 }

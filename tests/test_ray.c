@@ -81,7 +81,7 @@ static SurfacePoint solid_surface(const Solid *s, const Ray *r, real t)
 
     switch (s->kind) {
     case 0:
-        return cube_surface_at(&s->cube, r, t);
+        return cube_surface(&s->cube, r, t);
     case 1:
         return square_surface_at(&s->square, p);
     case 2:

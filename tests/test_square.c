@@ -24,7 +24,7 @@ static void square_hits_inside_its_edges_on_both_sides(void)
     CHECK_NEAR(7, t, 0);
     CHECK(!square_intersect(&s, &outside, 0, INFINITY, &t));
     CHECK(!square_intersect(&s, &flat, 0, INFINITY, &t));
-    square_uv(&s, vec3(0.5, -0.25, 0), uv); /* in units from the centre */
+    square_uv(&s, vec3(0.5, -0.25, 0), s.normal, uv); /* in units from the centre */
     CHECK_NEAR(0.5, uv[0], 1e-15);
     CHECK_NEAR(-0.25, uv[1], 1e-15);
     /* A floor: u along +x, v along +z. */

@@ -79,16 +79,16 @@ static void sphere_uv_at_known_points(void)
 {
     double uv[2];
 
-    sphere_uv(vec3(0, 0, -1), uv); /* facing a camera that looks along +z */
+    sphere_uv(NULL, vec3(0, 0, 0), vec3(0, 0, -1), uv); /* facing a camera that looks along +z */
     CHECK_NEAR(0.5, uv[0], 0);
     CHECK_NEAR(0.5, uv[1], 1e-15);
-    sphere_uv(vec3(0, 0, 1), uv); /* the seam, behind */
+    sphere_uv(NULL, vec3(0, 0, 0), vec3(0, 0, 1), uv); /* the seam, behind */
     CHECK_NEAR(1, uv[0], 0);
-    sphere_uv(vec3(1, 0, 0), uv);
+    sphere_uv(NULL, vec3(0, 0, 0), vec3(1, 0, 0), uv);
     CHECK_NEAR(0.75, uv[0], 1e-15);
-    sphere_uv(vec3(0, 1, 0), uv);
+    sphere_uv(NULL, vec3(0, 0, 0), vec3(0, 1, 0), uv);
     CHECK_NEAR(1, uv[1], 0);
-    sphere_uv(vec3(0, -1, 0), uv);
+    sphere_uv(NULL, vec3(0, 0, 0), vec3(0, -1, 0), uv);
     CHECK_NEAR(0, uv[1], 0);
 }
 

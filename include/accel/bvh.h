@@ -1,6 +1,6 @@
 /*
  * bvh.h: a bounding volume hierarchy over arrays of bounded shapes
- * (spheres, triangles, cubes and squares), built with the surface area
+ * (the kinds shape_list.h marks bounded), built with the surface area
  * heuristic on binned centroids.
  *
  * Unbounded shapes (planes, cylinders, cones) stay outside it. The binary
@@ -20,12 +20,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "geometry/cube.h"
 #include "geometry/frustum.h"
 #include "geometry/ray.h"
-#include "geometry/sphere.h"
-#include "geometry/square.h"
-#include "geometry/triangle.h"
+#include "geometry/shape_list.h"
 
 enum {
     BVH_WIDTH = 8,           /* children of a node */
@@ -62,13 +59,17 @@ static inline float bvh_float_above(double x)
     return isinf(x) ? (float)x : (float)(x + bvh_margin(x));
 }
 
-/* A primitive reference: its kind in the top two bits, its index in the
- * kind's array below them. The kinds' order (spheres, triangles, cubes,
- * squares) is the order crossings are sorted in. */
-enum { BVH_SPHERE = 0, BVH_TRIANGLE = 1, BVH_CUBE = 2, BVH_SQUARE = 3 };
-#define BVH_KIND_SHIFT 30
-#define BVH_INDEX_MASK 0x3fffffffu
+/* A primitive reference: its kind (a ShapeKind) in the top BVH_KIND_BITS
+ * bits, as few as hold every kind, its index in the kind's array below
+ * them. References sort as crossings are multiplied: by kind in
+ * ShapeKind's order, then by index. */
+#define BVH_KIND_BITS                                                                          \
+    (SHAPE_KINDS <= 2 ? 1 : SHAPE_KINDS <= 4 ? 2 : SHAPE_KINDS <= 8 ? 3 : SHAPE_KINDS <= 16 ? 4 : 5)
+#define BVH_KIND_SHIFT (32 - BVH_KIND_BITS)
+#define BVH_INDEX_MASK ((1u << BVH_KIND_SHIFT) - 1)
 #define BVH_MAX_OF_KIND (BVH_INDEX_MASK + 1u) /* shapes of one kind, at most */
+_Static_assert(SHAPE_KINDS <= 32, "a reference holds at most 32 kinds");
+_Static_assert(SHAPE_SPHERE == 0, "a reference to sphere k is k (bvh_prim_ref())");
 
 /* Returns the reference of the shape of kind and index. */
 static inline uint32_t bvh_ref(unsigned kind, size_t index)
@@ -127,16 +128,11 @@ static inline uint32_t bvh_link_count(uint32_t link)
  * which must stay where they are, unchanged, while it is in use. Each
  * shape's order (its position among all objects) settles exact ties. */
 typedef struct {
-    const Sphere *spheres;
-    size_t sphere_count;
-    const Triangle *triangles;
-    size_t triangle_count;
-    const Cube *cubes;
-    size_t cube_count;
-    const Square *squares;
-    size_t square_count;
-    Sphere *movable; /* NULL, or spheres itself, which bvh_build() may then
-                        reorder (see there) */
+    const void *items[SHAPE_KINDS]; /* each bounded kind's shapes (of its
+                                       type), NULL for the others */
+    size_t count[SHAPE_KINDS];      /* how many: 0 for unbounded kinds */
+    Sphere *movable; /* NULL, or items[SHAPE_SPHERE] itself, which
+                        bvh_build() may then reorder (see there) */
 } BvhShapes;
 
 typedef struct Bvh {
@@ -159,7 +155,7 @@ typedef struct Bvh {
 /* Returns the reference of the primitive at slot k of bvh's leaves. */
 static inline uint32_t bvh_prim_ref(const Bvh *bvh, size_t k)
 {
-    return bvh->prims ? bvh->prims[k] : bvh_ref(BVH_SPHERE, k);
+    return bvh->prims ? bvh->prims[k] : bvh_ref(SHAPE_SPHERE, k);
 }
 
 /* Builds the hierarchy of shapes' bounded shapes into *bvh in

@@ -20,6 +20,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/vec3.h"
 
 typedef struct {
@@ -53,9 +54,30 @@ int cone_crossings(const Cone *c, const Ray *ray, real tmin, real tmax);
  * error bound. */
 SurfacePoint cone_surface_at(const Cone *c, Vec3 p);
 
+/* The surface point where the ray crosses c at t (shape.h). */
+static inline SurfacePoint cone_surface(const Cone *c, const Ray *ray, real t)
+{
+    return cone_surface_at(c, ray_at(ray, t));
+}
+
+/* The surface point for p, near hit (shape.h): p put onto the cone. */
+static inline SurfacePoint cone_surface_near(const Cone *c, const SurfacePoint *hit, Vec3 p)
+{
+    (void)hit;
+    return cone_surface_at(c, p);
+}
+
 /* Returns in uv the texture coordinates of its point p: u around the axis
  * as on a cylinder, v = p.y - y of the circle's centre, the image
  * repeating every unit up the axis (as the MPL ray tracer shows it). */
-void cone_uv(const Cone *c, Vec3 p, double uv[2]);
+void cone_uv(const Cone *c, Vec3 p, Vec3 n, double uv[2]);
+
+/* Widens the box by its circle and apex (shape.h): the cone is unbounded. */
+void cone_box(const Cone *c, Vec3 *lo, Vec3 *hi);
+double cone_extent(const Cone *c);
+void cone_scale(Cone *c, int k);
+
+/* cone: x y z radius height (above) */
+extern const ShapeRecord cone_record;
 
 #endif

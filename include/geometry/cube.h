@@ -15,6 +15,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/vec3.h"
 
 typedef struct {
@@ -44,11 +45,30 @@ int cube_crossings(const Cube *c, const Ray *ray, real tmin, real tmax);
  * the lower axis (x, then y, then z) when it crosses two or three at once
  * (an edge or a corner), whatever face the rounded point lies nearest to;
  * for any other t, the face nearest to the point. */
-SurfacePoint cube_surface_at(const Cube *c, const Ray *ray, real t);
+SurfacePoint cube_surface(const Cube *c, const Ray *ray, real t);
 
 /* Returns in uv the texture coordinates of the surface point p of outward
  * normal n: each face holds the whole image, upright (v along +y on the
  * sides, along +z on the top and bottom) and unmirrored seen from outside. */
 void cube_uv(const Cube *c, Vec3 p, Vec3 n, double uv[2]);
+
+/* The surface point for p, near hit (shape.h): flat, hit's own at p. */
+static inline SurfacePoint cube_surface_near(const Cube *c, const SurfacePoint *hit, Vec3 p)
+{
+    SurfacePoint sp = *hit;
+
+    (void)c;
+    sp.point = p;
+    return sp;
+}
+
+/* The cube's box, its corners (shape.h). */
+real cube_bounds(const Cube *c, real ulps, real lo[3], real hi[3]);
+void cube_box(const Cube *c, Vec3 *lo, Vec3 *hi);
+double cube_extent(const Cube *c);
+void cube_scale(Cube *c, int k);
+
+/* cube: cx cy cz half (the edge is 2 half) */
+extern const ShapeRecord cube_record;
 
 #endif

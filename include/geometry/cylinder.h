@@ -16,6 +16,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/vec3.h"
 
 typedef struct {
@@ -37,10 +38,32 @@ int cylinder_crossings(const Cylinder *c, const Ray *ray, real tmin, real tmax);
  * returns it with its outward normal and error bound. */
 SurfacePoint cylinder_surface_at(const Cylinder *c, Vec3 p);
 
+/* The surface point where the ray crosses c at t (shape.h). */
+static inline SurfacePoint cylinder_surface(const Cylinder *c, const Ray *ray, real t)
+{
+    return cylinder_surface_at(c, ray_at(ray, t));
+}
+
+/* The surface point for p, near hit (shape.h): p put onto the cylinder. */
+static inline SurfacePoint cylinder_surface_near(const Cylinder *c, const SurfacePoint *hit,
+                                                 Vec3 p)
+{
+    (void)hit;
+    return cylinder_surface_at(c, p);
+}
+
 /* Returns in uv the texture coordinates of the point p of outward normal
  * n: u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the axis (as on a
  * sphere), v = p.y - cy, so that the image repeats every unit up the
  * axis (as the MPL ray tracer shows it). */
 void cylinder_uv(const Cylinder *c, Vec3 p, Vec3 n, double uv[2]);
+
+/* Widens the box by the circle's (shape.h): the cylinder is unbounded. */
+void cylinder_box(const Cylinder *c, Vec3 *lo, Vec3 *hi);
+double cylinder_extent(const Cylinder *c);
+void cylinder_scale(Cylinder *c, int k);
+
+/* cylinder: cx cy cz radius (infinite, along y) */
+extern const ShapeRecord cylinder_record;
 
 #endif

@@ -15,6 +15,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/vec3.h"
 
 /* A sphere: 48 bytes, as a scene may hold millions. Most spheres' material
@@ -125,7 +126,10 @@ static inline int sphere_hit(Vec3 centre, real radius, const Ray *ray, real tmin
 }
 
 /* sphere_hit() on sphere s. */
-int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t);
+static inline int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t)
+{
+    return sphere_hit(s->centre, s->radius, ray, tmin, tmax, t);
+}
 
 /* Returns how many times the ray crosses s's surface with tmin < t < tmax:
  * 0, 1 or 2. */
@@ -135,9 +139,32 @@ int sphere_crossings(const Sphere *s, const Ray *ray, real tmin, real tmax);
  * with its outward normal and error bound. */
 SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p);
 
-/* Returns in uv the texture coordinates of the point of outward normal n:
- * u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the y axis (0.5 facing -z), and
- * v = 1 - acos(n.y) / pi from the south pole (v = 0) to the north (v = 1). */
-void sphere_uv(Vec3 n, double uv[2]);
+/* The surface point where the ray crosses s at t (shape.h). */
+static inline SurfacePoint sphere_surface(const Sphere *s, const Ray *ray, real t)
+{
+    return sphere_surface_at(s, ray_at(ray, t));
+}
+
+/* The surface point for p, near hit (shape.h): p put onto the sphere. */
+static inline SurfacePoint sphere_surface_near(const Sphere *s, const SurfacePoint *hit, Vec3 p)
+{
+    (void)hit;
+    return sphere_surface_at(s, p);
+}
+
+/* Returns in uv the texture coordinates of the point of outward normal n
+ * (any sphere's, p aside): u = 0.5 + atan2(n.x, -n.z) / (2 pi) around the
+ * y axis (0.5 facing -z), and v = 1 - acos(n.y) / pi from the south pole
+ * (v = 0) to the north (v = 1). */
+void sphere_uv(const Sphere *s, Vec3 p, Vec3 n, double uv[2]);
+
+/* The sphere's box, its centre widened by its radius (shape.h). */
+real sphere_bounds(const Sphere *s, real ulps, real lo[3], real hi[3]);
+void sphere_box(const Sphere *s, Vec3 *lo, Vec3 *hi);
+double sphere_extent(const Sphere *s);
+void sphere_scale(Sphere *s, int k);
+
+/* sphere: cx cy cz radius */
+extern const ShapeRecord sphere_record;
 
 #endif

@@ -15,6 +15,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/vec3.h"
 
 typedef struct {
@@ -37,14 +38,47 @@ int square_make(Square *s, Vec3 centre, Vec3 n, real half, Material m);
  * and stores t, or returns 0 (a ray in its plane never crosses it). */
 int square_intersect(const Square *s, const Ray *ray, real tmin, real tmax, real *t);
 
+/* Crossings of the square (shape.h): once or never. */
+static inline int square_crossings(const Square *s, const Ray *ray, real tmin, real tmax)
+{
+    real t;
+
+    return square_intersect(s, ray, tmin, tmax, &t);
+}
+
 /* Re-projects p, a point near the square, onto its plane and returns it
  * with the normal and the point's error bound. */
 SurfacePoint square_surface_at(const Square *s, Vec3 p);
+
+/* The surface point where the ray crosses s at t (shape.h). */
+static inline SurfacePoint square_surface(const Square *s, const Ray *ray, real t)
+{
+    return square_surface_at(s, ray_at(ray, t));
+}
+
+/* The surface point for p, near hit (shape.h): flat, hit's own at p. */
+static inline SurfacePoint square_surface_near(const Square *s, const SurfacePoint *hit, Vec3 p)
+{
+    SurfacePoint sp = *hit;
+
+    (void)s;
+    sp.point = p;
+    return sp;
+}
 
 /* Returns in uv the texture coordinates of its point p: its distances
  * from the centre along axis_u and axis_v, in scene units, so that the
  * image repeats every unit (as the MPL ray tracer shows textures on
  * squares). */
-void square_uv(const Square *s, Vec3 p, double uv[2]);
+void square_uv(const Square *s, Vec3 p, Vec3 n, double uv[2]);
+
+/* The square's box, its corners (shape.h). */
+real square_bounds(const Square *s, real ulps, real lo[3], real hi[3]);
+void square_box(const Square *s, Vec3 *lo, Vec3 *hi);
+double square_extent(const Square *s);
+void square_scale(Square *s, int k);
+
+/* square: cx cy cz nx ny nz half (the edge is 2 half) */
+extern const ShapeRecord square_record;
 
 #endif

@@ -17,6 +17,7 @@
 
 #include "geometry/material.h"
 #include "geometry/ray.h"
+#include "geometry/shape.h"
 #include "math/colour.h"
 #include "math/vec3.h"
 
@@ -54,6 +55,23 @@ TriangleShading triangle_plain_shading(const Triangle *tri);
 /* Finds where the ray crosses the triangle with tmin < t < tmax; returns 1
  * and stores t, or returns 0. */
 int triangle_intersect(const Triangle *tri, const Ray *ray, real tmin, real tmax, real *t);
+
+/* Crossings of the triangle (shape.h): once or never. */
+static inline int triangle_crossings(const Triangle *tri, const Ray *ray, real tmin, real tmax)
+{
+    real t;
+
+    return triangle_intersect(tri, ray, tmin, tmax, &t);
+}
+
+/* The triangle's box, its vertices' (shape.h). */
+real triangle_bounds(const Triangle *tri, real ulps, real lo[3], real hi[3]);
+void triangle_box(const Triangle *tri, Vec3 *lo, Vec3 *hi);
+double triangle_extent(const Triangle *tri);
+void triangle_scale(Triangle *tri, int k);
+
+/* triangle: x0 y0 z0 x1 y1 z1 x2 y2 z2 (its material is the scene's) */
+extern const ShapeRecord triangle_record;
 
 /* Returns the point where the ray meets the triangle's plane, computed from
  * its barycentric coordinates, with the normal (and, on a smooth triangle,

@@ -55,12 +55,10 @@ typedef struct {
                                  when the ray carries no differentials */
 } Shade;
 
-/* Returns the shading record of hit, crossed by ray, in scene. */
-Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit);
-
-/* shade_at() for a ray with differentials diff (NULL: none, as shade_at()):
- * fills *fp with the footprint they give and points the record at it, and
- * reads a texture or stripes whose filter averages over it (texture.h). */
+/* Returns the shading record of hit, crossed by ray, in scene; with
+ * differentials diff (NULL: none), fills *fp with the footprint they give
+ * and points the record at it, and reads a texture or stripes whose
+ * filter averages over it (texture.h). */
 Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
                          ShadeFootprint *fp);
 

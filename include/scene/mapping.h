@@ -50,6 +50,10 @@
  * the seam where the image repeats); else 0.
  */
 int mapping_mpl(const Scene *scene, ShapeKind kind, size_t index, const SurfacePoint *sp,
-                    double uv[2], double *stripe);
+                double uv[2], double *stripe);
+
+/* Says whether the MPL ray tracer had a rule for shapes of kind (those it
+ * drew); mapping_mpl() takes only those, the others keep their own. */
+int mapping_mpl_covers(ShapeKind kind);
 
 #endif

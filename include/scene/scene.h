@@ -14,13 +14,7 @@
 #include <stdint.h>
 
 #include "base/error.h"
-#include "geometry/cone.h"
-#include "geometry/cube.h"
-#include "geometry/cylinder.h"
-#include "geometry/plane.h"
-#include "geometry/sphere.h"
-#include "geometry/square.h"
-#include "geometry/triangle.h"
+#include "geometry/shape_list.h"
 #include "math/colour.h"
 #include "math/vec3.h"
 #include "scene/camera.h"
@@ -45,19 +39,6 @@ static inline Light light_point(Vec3 position, Colour c)
     Light light = {position, c, 0, 0, {0, 0, 0}, 0, 0};
     return light;
 }
-
-/* The kinds of shape a scene holds, in the order of its arrays (and the
- * order in which a shadow ray's transmittance multiplies crossings). */
-typedef enum {
-    SHAPE_SPHERE,
-    SHAPE_PLANE,
-    SHAPE_TRIANGLE,
-    SHAPE_CUBE,
-    SHAPE_SQUARE,
-    SHAPE_CYLINDER,
-    SHAPE_CONE,
-    SHAPE_KINDS
-} ShapeKind;
 
 /* A scene's shapes of one kind: count of them, room for capacity, of the
  * kind's type (Sphere, Plane, ...: scene_spheres() and the like read
@@ -115,9 +96,9 @@ typedef struct Scene {
     size_t light_count;     /* lights in use, >= 1 once a course scene is
                                parsed */
     size_t light_capacity;  /* lights allocated */
-    ShapeArray shapes[SHAPE_KINDS]; /* each kind's, in file order (but
-                               scene_build_accel()'s spheres): the typed
-                               views below read them */
+    ShapeArray shapes[SHAPE_KINDS]; /* each kind's (shape_list.h), in
+                               file order (but scene_build_accel()'s
+                               spheres) */
     Material *materials;    /* the triangles' (spheres and planes hold
                                their own) */
     size_t material_count;
@@ -143,9 +124,9 @@ typedef struct Scene {
                                others' SCENE_MODEL_PHYSICAL */
     SceneMapping mapping;   /* its texture coordinates: the MPL format's
                                are the MPL ray tracer's */
-    struct Bvh *accel;      /* hierarchy over the bounded shapes (spheres,
-                               triangles, cubes, squares), or NULL: every ray
-                               then tests every object */
+    struct Bvh *accel;      /* hierarchy over the bounded shapes
+                               (shape_list.h), or NULL: every ray then
+                               tests every object */
     struct LightBuffer *eye_buffer; /* the primary rays' light buffer
                                (light_buffer.h) around a pinhole eye, or
                                NULL: they walk the hierarchy */
@@ -190,34 +171,23 @@ typedef struct Scene {
                                (load.h), its text and format */
 } Scene;
 
-/* The scene's shapes of each kind, as their own type. */
+/* The scene's spheres and triangles, and its shapes of each kind (of the
+ * kind's type), as arrays. */
 static inline Sphere *scene_spheres(const Scene *scene)
 {
     return (Sphere *)scene->shapes[SHAPE_SPHERE].items;
-}
-static inline Plane *scene_planes(const Scene *scene)
-{
-    return (Plane *)scene->shapes[SHAPE_PLANE].items;
 }
 static inline Triangle *scene_triangles(const Scene *scene)
 {
     return (Triangle *)scene->shapes[SHAPE_TRIANGLE].items;
 }
-static inline Cube *scene_cubes(const Scene *scene)
+static inline Plane *scene_planes(const Scene *scene)
 {
-    return (Cube *)scene->shapes[SHAPE_CUBE].items;
+    return (Plane *)scene->shapes[SHAPE_PLANE].items;
 }
-static inline Square *scene_squares(const Scene *scene)
+static inline void *scene_items(const Scene *scene, ShapeKind kind)
 {
-    return (Square *)scene->shapes[SHAPE_SQUARE].items;
-}
-static inline Cylinder *scene_cylinders(const Scene *scene)
-{
-    return (Cylinder *)scene->shapes[SHAPE_CYLINDER].items;
-}
-static inline Cone *scene_cones(const Scene *scene)
-{
-    return (Cone *)scene->shapes[SHAPE_CONE].items;
+    return scene->shapes[kind].items;
 }
 
 /* Returns how many shapes of kind the scene holds. */
@@ -247,9 +217,13 @@ int scene_add_light(Scene *scene, const Light *light);
 int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m);
 int scene_add_triangle(Scene *scene, const Triangle *t, const Material *m);
 
-/* Appends a copy of *shape, a shape of kind that holds its material (a
- * Plane, Cube, Square, Cylinder or Cone), as scene_add_*() do. */
+/* Appends a copy of *shape, a shape of kind that holds its material
+ * (shape_list.h), as scene_add_*() do. */
 int scene_add_shape(Scene *scene, ShapeKind kind, const void *shape);
+
+/* Appends a copy of *shape, of any kind, with material *m (a kind that
+ * holds its material has it already), as scene_add_*() do. */
+int scene_add_any(Scene *scene, ShapeKind kind, const void *shape, const Material *m);
 
 /* Appends n >= 1 spheres of plain materials (sphere_plain()) at once, as n
  * calls of scene_add_sphere() would (the same room; their positions among

@@ -2,16 +2,9 @@
  * shapes.h: the shapes every scene format describes, made from the numbers
  * their records give, checked the same way whatever the format.
  *
- * A record gives a shape's geometry as numbers, in this order:
- *   sphere    cx cy cz radius
- *   plane     px py pz nx ny nz          (a point and a normal, any length)
- *   triangle  x0 y0 z0 x1 y1 z1 x2 y2 z2
- *   cube      cx cy cz half              (the edge is 2 half)
- *   square    cx cy cz nx ny nz half     (the edge is 2 half)
- *   cylinder  cx cy cz radius            (infinite, along y)
- *   cone      x y z radius height        (cone.h)
- * shapes_names and shapes_kinds give each number's name and kind (lex.h)
- * for the readers' messages and checks.
+ * A kind's record (its word, shape_list.h, then its numbers, shape.h, then
+ * the format's material) is read by each format with the spec
+ * shapes_spec() makes of the kind's record and the format's material.
  */
 #ifndef RAYTRACE_SHAPES_H
 #define RAYTRACE_SHAPES_H
@@ -19,35 +12,37 @@
 #include "scene/scene.h"
 #include "scenefile/lex.h"
 
-enum { SHAPES_NUMBERS_MAX = 9 }; /* the most numbers a shape takes */
-
 /* What shapes_add() returns when the numbers make no shape (a zero normal,
  * three vertices on a line, a cone of height 0). */
 #define SHAPES_INVALID (-3)
 
-/* The numbers each kind takes, their names and kinds. */
-extern const int shapes_count[SHAPE_KINDS];
-extern const char *const *const shapes_names[SHAPE_KINDS];
-extern const FieldKind *const shapes_kinds[SHAPE_KINDS];
+enum { SHAPES_MORE_MAX = 6 }; /* the most numbers a format adds (a material) */
 
-/* The names and kinds of some shapes' numbers, for the readers' own
- * record specs (lex.h): cylinders take the sphere's, cubes the sphere's
- * kinds. */
-extern const char *const shapes_sphere_names[];
-extern const FieldKind shapes_sphere_kinds[];
-extern const char *const shapes_cube_names[];
-extern const char *const shapes_square_names[];
-extern const FieldKind shapes_square_kinds[];
-extern const char *const shapes_cone_names[];
-extern const FieldKind shapes_cone_kinds[];
+/* The spec of a kind's record in one format, and what it points to. */
+typedef struct {
+    RecordSpec spec;
+    char what[40];    /* "the cone" */
+    char syntax[160]; /* "x y z radius height r g b reflection ..." */
+    const char *names[SHAPE_NUMBERS_MAX + SHAPES_MORE_MAX];
+    FieldKind kinds[SHAPE_NUMBERS_MAX + SHAPES_MORE_MAX];
+} ShapesSpec;
 
-/* The name of each kind, for messages ("sphere", "cone", ...). */
-extern const char *const shapes_word[SHAPE_KINDS];
+/* Makes *s the spec of a record of kind: the kind's numbers, then `more`
+ * (at most SHAPES_MORE_MAX) of the format's own, of names and kinds, the
+ * last `optional` of which may be left out together; tail ends the syntax
+ * ("r g b reflection [transparency index]", "material"). */
+void shapes_spec(ShapesSpec *s, ShapeKind kind, const char *tail, int more, int optional,
+                 const char *const *names, const FieldKind *kinds);
 
-/* Adds the shape of kind made from the numbers v (as above) and material m
- * to scene (a plane's texture tiles every unit); returns 0, -1 or
- * SCENE_OVER_LIMIT as scene_add_*() does, or SHAPES_INVALID with *fault
- * saying why and *field the number at fault. */
+/* Finds the kind whose word is the len bytes at text less suffix (":" in
+ * the course format, "" in the keyword format); returns 1 with *kind, or
+ * 0. */
+int shapes_kind_of(const char *text, size_t len, const char *suffix, ShapeKind *kind);
+
+/* Adds the shape of kind made from the numbers v (its record's) and
+ * material m to scene; returns 0, -1 or SCENE_OVER_LIMIT as scene_add_*()
+ * does, or SHAPES_INVALID with *fault saying why and *field the number at
+ * fault (-1: the whole record). */
 int shapes_add(Scene *scene, ShapeKind kind, const double *v, const Material *m,
                const char **fault, int *field);
 

@@ -28,81 +28,33 @@ static inline real bvh_farther(real m, Vec3 p)
 real bvh_padding(const BvhShapes *shapes, real reach, int threads)
 {
     real m = reach;
-    size_t spheres = shapes->sphere_count, triangles = shapes->triangle_count;
 
     (void)threads;
-    /* The largest of finite values, whatever the order: the same on any
-     * number of threads. */
+    for (int k = 0; k < SHAPE_KINDS; k++) {
+        size_t n = shapes->count[k];
+        const void *items = shapes->items[k];
+        /* The largest of finite values, whatever the order: the same on
+         * any number of threads. */
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) reduction(max : m) if (spheres >= BVH_TASK_MIN)
+#pragma omp parallel for num_threads(threads) reduction(max : m) if (n >= BVH_TASK_MIN)
 #endif
-    for (size_t i = 0; i < spheres; i++) {
-        const Sphere *sp = &shapes->spheres[i];
-        real r = bvh_farther(0, sp->centre) + sp->radius;
-        m = r > m ? r : m;
-    }
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) reduction(max : m) if (triangles >= BVH_TASK_MIN)
-#endif
-    for (size_t i = 0; i < triangles; i++)
-        for (int k = 0; k < 3; k++)
-            m = bvh_farther(m, shapes->triangles[i].v[k]);
-    for (size_t i = 0; i < shapes->cube_count; i++)
-        m = bvh_farther(bvh_farther(m, shapes->cubes[i].lo), shapes->cubes[i].hi);
-    for (size_t i = 0; i < shapes->square_count; i++) {
-        const Square *sq = &shapes->squares[i];
-        real r = bvh_farther(0, sq->centre) + 2 * sq->half;
-        m = r > m ? r : m;
+        for (size_t i = 0; i < n; i++) {
+            real lo[3], hi[3];
+            real r = shape_bounds((ShapeKind)k, items, i, BVH_PAD_ULPS, lo, hi);
+            Vec3 l = vec3(lo[0], lo[1], lo[2]), h = vec3(hi[0], hi[1], hi[2]);
+            r += bvh_farther(bvh_farther(0, l), h);
+            m = r > m ? r : m;
+        }
     }
     return m * (REAL_EPSILON * BVH_PAD_ULPS);
 }
 
-/* Grows lo and hi by the corner p. */
-static void bvh_bounds_grow(real lo[3], real hi[3], Vec3 p)
-{
-    real c[3] = {p.x, p.y, p.z};
-
-    for (int a = 0; a < 3; a++) {
-        lo[a] = c[a] < lo[a] ? c[a] : lo[a];
-        hi[a] = c[a] > hi[a] ? c[a] : hi[a];
-    }
-}
-
 void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3], real hi[3])
 {
-    size_t i = bvh_index(ref);
-    real r = pad; /* the margin every side gets */
+    ShapeKind kind = (ShapeKind)bvh_kind(ref);
+    /* The margin every side gets: the padding, and the shape's own. */
+    real r = pad + shape_bounds(kind, shapes->items[kind], bvh_index(ref), BVH_PAD_ULPS, lo, hi);
 
-    for (int a = 0; a < 3; a++) {
-        lo[a] = INFINITY;
-        hi[a] = -INFINITY;
-    }
-    switch (bvh_kind(ref)) {
-    case BVH_TRIANGLE:
-        for (int k = 0; k < 3; k++)
-            bvh_bounds_grow(lo, hi, shapes->triangles[i].v[k]);
-        break;
-    case BVH_CUBE:
-        bvh_bounds_grow(lo, hi, shapes->cubes[i].lo);
-        bvh_bounds_grow(lo, hi, shapes->cubes[i].hi);
-        break;
-    case BVH_SQUARE: {
-        /* Its four corners; the plane test rounds like a triangle's. */
-        const Square *sq = &shapes->squares[i];
-        Vec3 u = vec3_scale(sq->axis_u, sq->half), v = vec3_scale(sq->axis_v, sq->half);
-        for (int k = 0; k < 4; k++)
-            bvh_bounds_grow(lo, hi, vec3_add(vec3_add(sq->centre, k & 1 ? u : vec3_neg(u)),
-                                             k & 2 ? v : vec3_neg(v)));
-        /* The corners round by a few ulps of the square's size too. */
-        r += 2 * sq->half * REAL_EPSILON * BVH_PAD_ULPS;
-        break;
-    }
-    default: {
-        const Sphere *s = &shapes->spheres[i];
-        bvh_bounds_grow(lo, hi, s->centre);
-        r += s->radius * (1 + REAL_EPSILON * (BVH_PAD_ULPS / 16));
-    }
-    }
     for (int a = 0; a < 3; a++) {
         lo[a] -= r;
         hi[a] += r;
@@ -111,28 +63,12 @@ void bvh_prim_bounds(const BvhShapes *shapes, uint32_t ref, real pad, real lo[3]
 
 void bvh_prim_prefetch(const BvhShapes *shapes, uint32_t ref)
 {
-    size_t i = bvh_index(ref);
-    const char *at, *end; /* the first and last bytes bvh_prim_bounds() reads */
+    ShapeKind kind = (ShapeKind)bvh_kind(ref);
+    size_t size = shape_size(kind);
+    const char *at = (const char *)shapes->items[kind] + bvh_index(ref) * size;
 
-    switch (bvh_kind(ref)) {
-    case BVH_TRIANGLE:
-        at = (const char *)&shapes->triangles[i].v;
-        end = at + sizeof shapes->triangles[i].v - 1;
-        break;
-    case BVH_CUBE:
-        at = (const char *)&shapes->cubes[i];
-        end = at + sizeof shapes->cubes[i] - 1;
-        break;
-    case BVH_SQUARE:
-        at = (const char *)&shapes->squares[i];
-        end = at + sizeof shapes->squares[i] - 1;
-        break;
-    default:
-        at = (const char *)&shapes->spheres[i].centre;
-        end = (const char *)&shapes->spheres[i].radius + sizeof shapes->spheres[i].radius - 1;
-    }
     __builtin_prefetch(at);
-    __builtin_prefetch(end);
+    __builtin_prefetch(at + size - 1);
 }
 
 void bvh_prim_box(const Bvh *bvh, uint32_t ref, real pad, BuildPrim *p)

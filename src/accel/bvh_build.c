@@ -26,14 +26,13 @@ static int bvh_real_order(const void *a, const void *b)
 }
 
 /* Returns the reference of the i-th primitive, first[k] the first of kind
- * k. */
-static uint32_t bvh_ref_at(const size_t first[4], size_t i)
+ * k (first[SHAPE_KINDS] past the last). */
+static uint32_t bvh_ref_at(const size_t first[SHAPE_KINDS + 1], size_t i)
 {
-    unsigned kind = i >= first[3]   ? BVH_SQUARE
-                    : i >= first[2] ? BVH_CUBE
-                    : i >= first[1] ? BVH_TRIANGLE
-                                    : BVH_SPHERE;
+    unsigned kind = 0;
 
+    while (i >= first[kind + 1])
+        kind++;
     return bvh_ref(kind, i - first[kind]);
 }
 
@@ -45,7 +44,8 @@ static uint32_t bvh_ref_at(const size_t first[4], size_t i)
  * sphere of radius 10^5); and the power of two that brings the boxes'
  * half-extent within [1, 2) (within 2^+-1000). The boxes are bvh's shapes'
  * (first[k] the first of kind k) padded by pad, in scene coordinates. */
-static void bvh_frame(Bvh *bvh, const size_t first[4], size_t n, real pad, int threads)
+static void bvh_frame(Bvh *bvh, const size_t first[SHAPE_KINDS + 1], size_t n, real pad,
+                      int threads)
 {
     real lo0 = INFINITY, lo1 = INFINITY, lo2 = INFINITY;
     real hi0 = -INFINITY, hi1 = -INFINITY, hi2 = -INFINITY;
@@ -188,7 +188,7 @@ static int bvh_move_spheres(Sphere *spheres, const uint32_t *from, size_t n,
  * out. */
 static int bvh_move_into_leaves(Bvh *bvh, Sphere *spheres, int threads)
 {
-    size_t n = bvh->shapes.sphere_count, next = 0;
+    size_t n = bvh->shapes.count[SHAPE_SPHERE], next = 0;
     uint32_t *from = malloc(n * sizeof *from); /* from[j]: the sphere to move to j */
     unsigned char *moved = calloc(n + 1, 1);
 
@@ -198,7 +198,7 @@ static int bvh_move_into_leaves(Bvh *bvh, Sphere *spheres, int threads)
         return -1;
     }
     for (size_t k = 0; k < bvh->prim_count; k++)
-        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE)
+        if (bvh_kind(bvh->prims[k]) == SHAPE_SPHERE)
             from[next++] = (uint32_t)bvh_index(bvh->prims[k]);
     if (bvh_move_spheres(spheres, from, n, moved, threads) != 0) {
         free(from);
@@ -207,11 +207,11 @@ static int bvh_move_into_leaves(Bvh *bvh, Sphere *spheres, int threads)
     }
     next = 0;
     for (size_t k = 0; k < bvh->prim_count; k++)
-        if (bvh_kind(bvh->prims[k]) == BVH_SPHERE)
-            bvh->prims[k] = bvh_ref(BVH_SPHERE, next++);
+        if (bvh_kind(bvh->prims[k]) == SHAPE_SPHERE)
+            bvh->prims[k] = bvh_ref(SHAPE_SPHERE, next++);
     free(from);
     free(moved);
-    bvh->shapes.spheres = spheres;
+    bvh->shapes.items[SHAPE_SPHERE] = spheres;
     if (n == bvh->prim_count) { /* slot k holds sphere k */
         free(bvh->prims);
         bvh->prims = NULL;
@@ -232,10 +232,8 @@ static int bvh_has_avx2(void)
 
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 {
-    size_t n = shapes->sphere_count + shapes->triangle_count + shapes->cube_count +
-               shapes->square_count;
-    size_t first[4] = {0, shapes->sphere_count, shapes->sphere_count + shapes->triangle_count,
-                       n - shapes->square_count};
+    size_t n = 0, first[SHAPE_KINDS + 1];
+    int over = 0;
     BuildPrim *prims;
     BuildNode *nodes;
     real pad = bvh_padding(shapes, reach, threads);
@@ -243,11 +241,15 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     memset(bvh, 0, sizeof *bvh);
     bvh->shapes = *shapes;
     bvh->avx2 = bvh_has_avx2();
+    for (int k = 0; k < SHAPE_KINDS; k++) {
+        first[k] = n;
+        n += shapes->count[k];
+        over |= shapes->count[k] >= BVH_MAX_OF_KIND;
+    }
+    first[SHAPE_KINDS] = n;
     /* Binary nodes are numbered below 2n in 32 bits; wide nodes and
      * primitives below BVH_MAX_LINK. */
-    if (shapes->sphere_count >= BVH_MAX_OF_KIND || shapes->triangle_count >= BVH_MAX_OF_KIND ||
-        shapes->cube_count >= BVH_MAX_OF_KIND || shapes->square_count >= BVH_MAX_OF_KIND ||
-        n == 0 || n >= BVH_MAX_LINK / 2)
+    if (over || n == 0 || n >= BVH_MAX_LINK / 2)
         return -1;
     prims = malloc(n * sizeof *prims);
     nodes = malloc((2 * n - 1) * sizeof *nodes);

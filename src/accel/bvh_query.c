@@ -320,33 +320,24 @@ static inline int bvh_prim_hit(const Bvh *bvh, uint32_t k, const Ray *ray,
                                real tmin, real tmax, real *t)
 {
     uint32_t ref = bvh_prim_ref(bvh, k);
-    unsigned kind = bvh_kind(ref);
+    ShapeKind kind = (ShapeKind)bvh_kind(ref);
+    const void *items = bvh->shapes.items[kind];
 
-    if (kind == BVH_SPHERE) {
-        const Sphere *s = &bvh->shapes.spheres[bvh_index(ref)];
+    /* Spheres and triangles inline: the hottest. */
+    if (kind == SHAPE_SPHERE) {
+        const Sphere *s = &((const Sphere *)items)[bvh_index(ref)];
         return sphere_hit(s->centre, s->radius, ray, tmin, tmax, t);
     }
-    if (kind == BVH_TRIANGLE)
-        return triangle_intersect(&bvh->shapes.triangles[bvh_index(ref)], ray, tmin, tmax, t);
-    if (kind == BVH_CUBE)
-        return cube_intersect(&bvh->shapes.cubes[bvh_index(ref)], ray, tmin, tmax, t);
-    return square_intersect(&bvh->shapes.squares[bvh_index(ref)], ray, tmin, tmax, t);
+    if (kind == SHAPE_TRIANGLE)
+        return triangle_intersect(&((const Triangle *)items)[bvh_index(ref)], ray, tmin, tmax, t);
+    return shape_intersect(kind, items, bvh_index(ref), ray, tmin, tmax, t);
 }
 
 static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
 {
-    size_t i = bvh_index(ref);
+    ShapeKind kind = (ShapeKind)bvh_kind(ref);
 
-    switch (bvh_kind(ref)) {
-    case BVH_SPHERE:
-        return bvh->shapes.spheres[i].order;
-    case BVH_TRIANGLE:
-        return bvh->shapes.triangles[i].order;
-    case BVH_CUBE:
-        return bvh->shapes.cubes[i].order;
-    default:
-        return bvh->shapes.squares[i].order;
-    }
+    return shape_order(kind, bvh->shapes.items[kind], bvh_index(ref));
 }
 
 /* Asks for node's cache lines ahead of its visit: a large hierarchy's
@@ -515,27 +506,14 @@ int BVH_QUERY(bvh_crossings)(const Bvh *bvh, const Ray *ray, real tmax, BvhVisit
     BvhRay r = bvh_ray(bvh, ray);
     BvhWalk w;
     uint32_t first, count;
-    real t;
 
     bvh_walk_start(&w);
     while (bvh_next_leaf(bvh, &r, bvh_limit(&r, tmax), &w, &first, &count)) {
         for (uint32_t k = first; k < first + count; k++) {
             uint32_t ref = bvh_prim_ref(bvh, k);
-            size_t i = bvh_index(ref);
-            int c, rc;
-            switch (bvh_kind(ref)) {
-            case BVH_SPHERE:
-                c = sphere_crossings(&bvh->shapes.spheres[i], ray, 0, tmax);
-                break;
-            case BVH_TRIANGLE:
-                c = triangle_intersect(&bvh->shapes.triangles[i], ray, 0, tmax, &t);
-                break;
-            case BVH_CUBE:
-                c = cube_crossings(&bvh->shapes.cubes[i], ray, 0, tmax);
-                break;
-            default:
-                c = square_intersect(&bvh->shapes.squares[i], ray, 0, tmax, &t);
-            }
+            ShapeKind kind = (ShapeKind)bvh_kind(ref);
+            int rc, c = shape_crossings(kind, bvh->shapes.items[kind], bvh_index(ref), ray, 0,
+                                        tmax);
             if (c != 0 && (rc = visit(ctx, ref, c)) != 0)
                 return rc;
         }

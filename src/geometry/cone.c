@@ -109,10 +109,59 @@ SurfacePoint cone_surface_at(const Cone *c, Vec3 p)
     return sp;
 }
 
-void cone_uv(const Cone *c, Vec3 p, double uv[2])
+void cone_uv(const Cone *c, Vec3 p, Vec3 n, double uv[2])
 {
+    (void)n;
     Vec3 d = vec3_sub(p, c->apex);
 
     uv[0] = 0.5 + angle_atan2(d.x, -d.z) / (2 * ANGLE_PI);
     uv[1] = p.y - c->base.y;
 }
+
+void cone_box(const Cone *c, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, c->base, c->radius);
+    shape_widen(lo, hi, c->apex, 0);
+}
+
+double cone_extent(const Cone *c)
+{
+    return fmax(fmax(vec3_max_abs(c->base), vec3_max_abs(c->apex)),
+                fmax(c->radius, fabs(c->height)));
+}
+
+/* The apex scales exactly with what it was made from; the angle stays. */
+void cone_scale(Cone *c, int k)
+{
+    c->base = vec3_ldexp(c->base, k);
+    c->apex = vec3_ldexp(c->apex, k);
+    c->radius = ldexp(c->radius, k);
+    c->height = ldexp(c->height, k);
+}
+
+static const char *const cone_names[] = {"x", "y", "z", "radius", "height"};
+static const ShapeNumber cone_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD, SHAPE_LENGTH,
+                                         SHAPE_COORD};
+
+static const char *cone_record_make(void *shape, const double *v, const Material *m, int *field)
+{
+    if (v[4] == 0) {
+        *field = 4;
+        return "the cone's height must not be 0: its apex is that far above (or below) the "
+               "centre of its circle";
+    }
+    cone_make(shape, shape_point(v, 0), v[3], v[4], *m);
+    return NULL;
+}
+
+static void cone_record_numbers(const void *shape, int k, double *v)
+{
+    const Cone *c = shape;
+
+    shape_put(v, 0, c->base, k);
+    v[3] = ldexp(c->radius, -k);
+    v[4] = ldexp(c->height, -k);
+}
+
+const ShapeRecord cone_record = {5, "x y z radius height", cone_names, cone_kinds,
+                                 cone_record_make, cone_record_numbers};

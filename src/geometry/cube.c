@@ -105,7 +105,7 @@ int cube_crossings(const Cube *c, const Ray *ray, real tmin, real tmax)
     return (s.t0 > tmin && s.t0 < tmax) + (s.t1 != s.t0 && s.t1 > tmin && s.t1 < tmax);
 }
 
-SurfacePoint cube_surface_at(const Cube *c, const Ray *ray, real t)
+SurfacePoint cube_surface(const Cube *c, const Ray *ray, real t)
 {
     Vec3 p = ray_at(ray, t);
     real q[3] = {p.x, p.y, p.z}, lo[3] = {c->lo.x, c->lo.y, c->lo.z};
@@ -171,3 +171,53 @@ void cube_uv(const Cube *c, Vec3 p, Vec3 n, double uv[2])
         uv[1] = z;
     }
 }
+
+real cube_bounds(const Cube *c, real ulps, real lo[3], real hi[3])
+{
+    (void)ulps;
+    shape_empty(lo, hi);
+    shape_grow(lo, hi, c->lo);
+    shape_grow(lo, hi, c->hi);
+    return 0;
+}
+
+void cube_box(const Cube *c, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, c->lo, 0);
+    shape_widen(lo, hi, c->hi, 0);
+}
+
+double cube_extent(const Cube *c)
+{
+    return fmax(vec3_max_abs(c->centre), c->half);
+}
+
+/* Its corners scale exactly with what they were made from. */
+void cube_scale(Cube *c, int k)
+{
+    c->centre = vec3_ldexp(c->centre, k);
+    c->lo = vec3_ldexp(c->lo, k);
+    c->hi = vec3_ldexp(c->hi, k);
+    c->half = ldexp(c->half, k);
+}
+
+static const char *const cube_names[] = {"centre x", "centre y", "centre z", "half-edge"};
+static const ShapeNumber cube_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD, SHAPE_LENGTH};
+
+static const char *cube_record_make(void *shape, const double *v, const Material *m, int *field)
+{
+    (void)field;
+    cube_make(shape, shape_point(v, 0), v[3], *m);
+    return NULL;
+}
+
+static void cube_record_numbers(const void *shape, int k, double *v)
+{
+    const Cube *c = shape;
+
+    shape_put(v, 0, c->centre, k);
+    v[3] = ldexp(c->half, -k);
+}
+
+const ShapeRecord cube_record = {4, "cx cy cz half-edge", cube_names, cube_kinds,
+                                 cube_record_make, cube_record_numbers};

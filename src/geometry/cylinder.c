@@ -89,3 +89,44 @@ void cylinder_uv(const Cylinder *c, Vec3 p, Vec3 n, double uv[2])
     uv[0] = 0.5 + angle_atan2(n.x, -n.z) / (2 * ANGLE_PI);
     uv[1] = p.y - c->centre.y;
 }
+
+void cylinder_box(const Cylinder *c, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, c->centre, c->radius);
+}
+
+double cylinder_extent(const Cylinder *c)
+{
+    return fmax(vec3_max_abs(c->centre), c->radius);
+}
+
+void cylinder_scale(Cylinder *c, int k)
+{
+    c->centre = vec3_ldexp(c->centre, k);
+    c->radius = ldexp(c->radius, k);
+}
+
+static const char *const cylinder_names[] = {"centre x", "centre y", "centre z", "radius"};
+static const ShapeNumber cylinder_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD,
+                                             SHAPE_LENGTH};
+
+static const char *cylinder_record_make(void *shape, const double *v, const Material *m,
+                                        int *field)
+{
+    Cylinder c = {shape_point(v, 0), v[3], *m, 0};
+
+    (void)field;
+    *(Cylinder *)shape = c;
+    return NULL;
+}
+
+static void cylinder_record_numbers(const void *shape, int k, double *v)
+{
+    const Cylinder *c = shape;
+
+    shape_put(v, 0, c->centre, k);
+    v[3] = ldexp(c->radius, -k);
+}
+
+const ShapeRecord cylinder_record = {4, "cx cy cz radius", cylinder_names, cylinder_kinds,
+                                     cylinder_record_make, cylinder_record_numbers};

@@ -61,10 +61,51 @@ SurfacePoint plane_surface_at(const Plane *pl, Vec3 p)
     return sp;
 }
 
-void plane_uv(const Plane *pl, Vec3 p, double uv[2])
+void plane_uv(const Plane *pl, Vec3 p, Vec3 n, double uv[2])
 {
+    (void)n;
     Vec3 r = vec3_sub(p, pl->point);
 
     uv[0] = vec3_dot(r, pl->axis_u) / pl->tile;
     uv[1] = vec3_dot(r, pl->axis_v) / pl->tile;
 }
+
+void plane_box(const Plane *pl, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, pl->point, 0);
+}
+
+double plane_extent(const Plane *pl)
+{
+    return fmax(vec3_max_abs(pl->point), pl->material.texture >= 0 ? pl->tile : 0);
+}
+
+void plane_scale(Plane *pl, int k)
+{
+    pl->point = vec3_ldexp(pl->point, k);
+    pl->tile = ldexp(pl->tile, k);
+}
+
+static const char *const plane_names[] = {"point x",  "point y",  "point z",
+                                          "normal x", "normal y", "normal z"};
+static const ShapeNumber plane_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD,
+                                          SHAPE_COORD, SHAPE_COORD, SHAPE_COORD};
+
+static const char *plane_record_make(void *shape, const double *v, const Material *m, int *field)
+{
+    if (plane_make(shape, shape_point(v, 0), shape_point(v, 3), 1, *m) == 0)
+        return NULL;
+    *field = 3;
+    return "the plane's normal is the zero vector: it must give a direction";
+}
+
+static void plane_record_numbers(const void *shape, int k, double *v)
+{
+    const Plane *pl = shape;
+
+    shape_put(v, 0, pl->point, k);
+    shape_put(v, 3, pl->given, 0);
+}
+
+const ShapeRecord plane_record = {6, "px py pz nx ny nz", plane_names, plane_kinds,
+                                  plane_record_make, plane_record_numbers};

@@ -27,11 +27,6 @@ static real sphere_gamma(real n)
     return n * u / (1 - n * u);
 }
 
-int sphere_intersect(const Sphere *s, const Ray *ray, real tmin, real tmax, real *t)
-{
-    return sphere_hit(s->centre, s->radius, ray, tmin, tmax, t);
-}
-
 int sphere_crossings(const Sphere *s, const Ray *ray, real tmin, real tmax)
 {
     real t, t2;
@@ -58,8 +53,60 @@ SurfacePoint sphere_surface_at(const Sphere *s, Vec3 p)
     return sp;
 }
 
-void sphere_uv(Vec3 n, double uv[2])
+void sphere_uv(const Sphere *s, Vec3 p, Vec3 n, double uv[2])
 {
+    (void)s;
+    (void)p;
     uv[0] = 0.5 + angle_atan2(n.x, -n.z) / (2 * ANGLE_PI);
     uv[1] = 1 - angle_acos(n.y) / ANGLE_PI;
 }
+
+real sphere_bounds(const Sphere *s, real ulps, real lo[3], real hi[3])
+{
+    shape_empty(lo, hi);
+    shape_grow(lo, hi, s->centre);
+    /* The radius, and the rounding of sphere_hit()'s discriminant. */
+    return s->radius * (1 + REAL_EPSILON * (ulps / 16));
+}
+
+void sphere_box(const Sphere *s, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, s->centre, s->radius);
+}
+
+double sphere_extent(const Sphere *s)
+{
+    return fmax(vec3_max_abs(s->centre), s->radius);
+}
+
+void sphere_scale(Sphere *s, int k)
+{
+    s->centre = vec3_ldexp(s->centre, k);
+    s->radius = ldexp(s->radius, k);
+}
+
+static const char *const sphere_names[] = {"centre x", "centre y", "centre z", "radius"};
+static const ShapeNumber sphere_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD, SHAPE_LENGTH};
+
+/* ShapeRecord.make: the material goes with the sphere into the scene. */
+static const char *sphere_record_make(void *shape, const double *v, const Material *m, int *field)
+{
+    Sphere *s = shape;
+
+    (void)m;
+    (void)field;
+    s->centre = shape_point(v, 0);
+    s->radius = v[3];
+    return NULL;
+}
+
+static void sphere_record_numbers(const void *shape, int k, double *v)
+{
+    const Sphere *s = shape;
+
+    shape_put(v, 0, s->centre, k);
+    v[3] = ldexp(s->radius, -k);
+}
+
+const ShapeRecord sphere_record = {4, "cx cy cz radius", sphere_names, sphere_kinds,
+                                   sphere_record_make, sphere_record_numbers};

@@ -56,10 +56,65 @@ SurfacePoint square_surface_at(const Square *s, Vec3 p)
     return sp;
 }
 
-void square_uv(const Square *s, Vec3 p, double uv[2])
+void square_uv(const Square *s, Vec3 p, Vec3 n, double uv[2])
 {
+    (void)n;
     Vec3 r = vec3_sub(p, s->centre);
 
     uv[0] = vec3_dot(r, s->axis_u);
     uv[1] = vec3_dot(r, s->axis_v);
 }
+
+real square_bounds(const Square *s, real ulps, real lo[3], real hi[3])
+{
+    Vec3 u = vec3_scale(s->axis_u, s->half), v = vec3_scale(s->axis_v, s->half);
+
+    shape_empty(lo, hi);
+    for (int k = 0; k < 4; k++)
+        shape_grow(lo, hi, vec3_add(vec3_add(s->centre, k & 1 ? u : vec3_neg(u)),
+                                    k & 2 ? v : vec3_neg(v)));
+    /* The corners round by a few ulps of the square's size; the plane
+     * test rounds as a triangle's. */
+    return 2 * s->half * REAL_EPSILON * ulps;
+}
+
+void square_box(const Square *s, Vec3 *lo, Vec3 *hi)
+{
+    shape_widen(lo, hi, s->centre, s->half * (real)1.5);
+}
+
+double square_extent(const Square *s)
+{
+    return fmax(vec3_max_abs(s->centre), s->half);
+}
+
+void square_scale(Square *s, int k)
+{
+    s->centre = vec3_ldexp(s->centre, k);
+    s->half = ldexp(s->half, k);
+}
+
+static const char *const square_names[] = {"centre x", "centre y", "centre z", "normal x",
+                                           "normal y", "normal z", "half-edge"};
+static const ShapeNumber square_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD, SHAPE_COORD,
+                                           SHAPE_COORD, SHAPE_COORD, SHAPE_LENGTH};
+
+static const char *square_record_make(void *shape, const double *v, const Material *m, int *field)
+{
+    if (square_make(shape, shape_point(v, 0), shape_point(v, 3), v[6], *m) == 0)
+        return NULL;
+    *field = 3;
+    return "the square's normal is the zero vector: it must give a direction";
+}
+
+static void square_record_numbers(const void *shape, int k, double *v)
+{
+    const Square *s = shape;
+
+    shape_put(v, 0, s->centre, k);
+    shape_put(v, 3, s->given, 0);
+    v[6] = ldexp(s->half, -k);
+}
+
+const ShapeRecord square_record = {7, "cx cy cz nx ny nz half-edge", square_names, square_kinds,
+                                   square_record_make, square_record_numbers};

@@ -153,3 +153,62 @@ SurfacePoint triangle_surface_at(const Triangle *tri, const TriangleShading *sh,
                       b[0] * sh->rgb[0][2] + b[1] * sh->rgb[1][2] + b[2] * sh->rgb[2][2]);
     return sp;
 }
+
+real triangle_bounds(const Triangle *tri, real ulps, real lo[3], real hi[3])
+{
+    (void)ulps;
+    shape_empty(lo, hi);
+    for (int k = 0; k < 3; k++)
+        shape_grow(lo, hi, tri->v[k]);
+    return 0;
+}
+
+void triangle_box(const Triangle *tri, Vec3 *lo, Vec3 *hi)
+{
+    for (int k = 0; k < 3; k++)
+        shape_widen(lo, hi, tri->v[k], 0);
+}
+
+double triangle_extent(const Triangle *tri)
+{
+    double m = 0;
+
+    for (int k = 0; k < 3; k++)
+        m = fmax(m, vec3_max_abs(tri->v[k]));
+    return m;
+}
+
+void triangle_scale(Triangle *tri, int k)
+{
+    for (int j = 0; j < 3; j++)
+        tri->v[j] = vec3_ldexp(tri->v[j], k);
+}
+
+static const char *const triangle_names[] = {"x0", "y0", "z0", "x1", "y1",
+                                             "z1", "x2", "y2", "z2"};
+static const ShapeNumber triangle_kinds[] = {SHAPE_COORD, SHAPE_COORD, SHAPE_COORD,
+                                             SHAPE_COORD, SHAPE_COORD, SHAPE_COORD,
+                                             SHAPE_COORD, SHAPE_COORD, SHAPE_COORD};
+
+/* ShapeRecord.make: the material goes with the triangle into the scene. */
+static const char *triangle_record_make(void *shape, const double *v, const Material *m,
+                                        int *field)
+{
+    (void)m;
+    if (triangle_make(shape, shape_point(v, 0), shape_point(v, 3), shape_point(v, 6)) == 0)
+        return NULL;
+    *field = -1; /* the record itself */
+    return "the triangle's three vertices lie on one line: it has no area";
+}
+
+static void triangle_record_numbers(const void *shape, int k, double *v)
+{
+    const Triangle *tri = shape;
+
+    for (int j = 0; j < 3; j++)
+        shape_put(v, 3 * j, tri->v[j], k);
+}
+
+const ShapeRecord triangle_record = {9, "x0 y0 z0 x1 y1 z1 x2 y2 z2", triangle_names,
+                                     triangle_kinds, triangle_record_make,
+                                     triangle_record_numbers};

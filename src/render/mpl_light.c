@@ -46,7 +46,7 @@ static int mpl_light_nearest(const Scene *scene, const Ray *ray, real tmax, Hit 
         return visibility_nearest(scene, ray, tmax, hit);
     found = visibility_nearest_among(scene, ray, tmax, ~(1u << SHAPE_CYLINDER), hit);
     for (size_t k = 0; k < scene_count_of(scene, SHAPE_CYLINDER); k++) {
-        const Cylinder *c = &scene_cylinders(scene)[k];
+        const Cylinder *c = &((const Cylinder *)scene_items(scene, SHAPE_CYLINDER))[k];
         real t = mpl_light_cylinder_t(c, ray);
         if (t > 0 && t < tmax && (!found || t < hit->t || (t == hit->t && c->order < hit->order))) {
             hit->t = t;
@@ -74,7 +74,7 @@ static Shade mpl_light_shade(const Scene *scene, const Ray *ray, const Hit *hit,
 
     if (hit->kind != SHAPE_CYLINDER)
         return shade_at_footprint(scene, ray, hit, diff, fp);
-    c = &scene_cylinders(scene)[hit->index];
+    c = &((const Cylinder *)scene_items(scene, SHAPE_CYLINDER))[hit->index];
     sh.material = c->material;
     sh.ambient = 1;
     sh.footprint = NULL;

@@ -40,19 +40,7 @@ static inline Colour shade_colour(const Scene *scene, const Material *m, const d
 static void shade_surface_near(const Scene *scene, const Hit *hit, const SurfacePoint *sp0,
                                Vec3 p, int want_uv, SurfacePoint *sp, double uv[2])
 {
-    *sp = *sp0;
-    sp->point = p;
-    switch (hit->kind) {
-    case SHAPE_SPHERE:
-        *sp = sphere_surface_at(&scene_spheres(scene)[hit->index], p);
-        if (want_uv)
-            sphere_uv(sp->normal, uv);
-        break;
-    case SHAPE_PLANE:
-        if (want_uv)
-            plane_uv(&scene_planes(scene)[hit->index], p, uv);
-        break;
-    case SHAPE_TRIANGLE: {
+    if (hit->kind == SHAPE_TRIANGLE) {
         /* The barycentric weights of p, seen along the normal. */
         const Triangle *tri = &scene_triangles(scene)[hit->index];
         Ray down = {vec3_add(p, sp0->normal), vec3_neg(sp0->normal)};
@@ -60,27 +48,10 @@ static void shade_surface_near(const Scene *scene, const Hit *hit, const Surface
         *sp = triangle_surface_at(tri, scene_shading_of(scene, tri), &down, want_uv ? uv : uv_,
                                   NULL);
         sp->point = p;
-        break;
+        return;
     }
-    case SHAPE_CUBE: /* flat faces: the normal stays */
-        if (want_uv)
-            cube_uv(&scene_cubes(scene)[hit->index], p, sp->normal, uv);
-        break;
-    case SHAPE_SQUARE:
-        if (want_uv)
-            square_uv(&scene_squares(scene)[hit->index], p, uv);
-        break;
-    case SHAPE_CYLINDER:
-        *sp = cylinder_surface_at(&scene_cylinders(scene)[hit->index], p);
-        if (want_uv)
-            cylinder_uv(&scene_cylinders(scene)[hit->index], p, sp->normal, uv);
-        break;
-    default:
-        *sp = cone_surface_at(&scene_cones(scene)[hit->index], p);
-        if (want_uv)
-            cone_uv(&scene_cones(scene)[hit->index], p, uv);
-        break;
-    }
+    *sp = shape_surface_near(hit->kind, scene_items(scene, hit->kind), hit->index, sp0, p,
+                             want_uv ? uv : NULL);
 }
 
 /* Returns d brought into [-1/2, 1/2) by whole periods of 1: the change of
@@ -130,11 +101,6 @@ static void shade_footprint(const Scene *scene, const Ray *ray, const Hit *hit,
                                   texture_stripe_cover(stripe, fmax(fabs(ds[0]), fabs(ds[1]))));
 }
 
-Shade shade_at(const Scene *scene, const Ray *ray, const Hit *hit)
-{
-    return shade_at_footprint(scene, ray, hit, NULL, NULL);
-}
-
 Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, const RayDiff *diff,
                          ShadeFootprint *fp)
 {
@@ -148,60 +114,19 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
     sh.footprint = NULL;
     /* Stripes are the MPL ray tracer's, laid as its program laid them. */
     mapped = sh.material.texture >= 0 || sh.material.stripes;
-    mpl = mapped && (sh.material.stripes || scene->mapping == SCENE_MAPPING_MPL);
+    mpl = mapped && (sh.material.stripes || scene->mapping == SCENE_MAPPING_MPL) &&
+          mapping_mpl_covers(hit->kind);
     want_uv = mapped && !mpl;
-    switch (hit->kind) {
-    case SHAPE_SPHERE: {
-        const Sphere *s = &scene_spheres(scene)[hit->index];
-        sh.sp = sphere_surface_at(s, ray_at(ray, hit->t));
-        if (want_uv)
-            sphere_uv(sh.sp.normal, uv);
-        clamp_v = 1;
-        break;
-    }
-    case SHAPE_PLANE: {
-        const Plane *pl = &scene_planes(scene)[hit->index];
-        sh.sp = plane_surface_at(pl, ray_at(ray, hit->t));
-        if (want_uv)
-            plane_uv(pl, sh.sp.point, uv);
-        break;
-    }
-    case SHAPE_TRIANGLE: {
+    if (hit->kind == SHAPE_TRIANGLE) {
         const Triangle *tri = &scene_triangles(scene)[hit->index];
         const TriangleShading *ts = scene_shading_of(scene, tri);
         sh.sp = triangle_surface_at(tri, ts, ray, uv, &rgb);
         /* A coloured mesh's vertices give the colour a texture does not. */
         coloured = ts && ts->coloured && sh.material.texture < 0;
-        break;
-    }
-    case SHAPE_CUBE: {
-        const Cube *c = &scene_cubes(scene)[hit->index];
-        sh.sp = cube_surface_at(c, ray, hit->t);
-        if (want_uv)
-            cube_uv(c, sh.sp.point, sh.sp.normal, uv);
-        break;
-    }
-    case SHAPE_SQUARE: {
-        const Square *q = &scene_squares(scene)[hit->index];
-        sh.sp = square_surface_at(q, ray_at(ray, hit->t));
-        if (want_uv)
-            square_uv(q, sh.sp.point, uv);
-        break;
-    }
-    case SHAPE_CYLINDER: {
-        const Cylinder *c = &scene_cylinders(scene)[hit->index];
-        sh.sp = cylinder_surface_at(c, ray_at(ray, hit->t));
-        if (want_uv)
-            cylinder_uv(c, sh.sp.point, sh.sp.normal, uv);
-        break;
-    }
-    default: {
-        const Cone *c = &scene_cones(scene)[hit->index];
-        sh.sp = cone_surface_at(c, ray_at(ray, hit->t));
-        if (want_uv)
-            cone_uv(c, sh.sp.point, uv);
-        break;
-    }
+    } else {
+        sh.sp = shape_surface(hit->kind, scene_items(scene, hit->kind), hit->index, ray, hit->t,
+                              want_uv ? uv : NULL);
+        clamp_v = SHAPE_CLAMPS_V >> hit->kind & 1;
     }
     if (mpl && mapping_mpl(scene, hit->kind, hit->index, &sh.sp, uv, &stripe))
         clamp_v = 1;

@@ -7,52 +7,19 @@
 #include "accel/bvh.h"
 #include "accel/light_buffer.h"
 
-/* The hierarchy's kinds of shape, as ShapeKinds. */
-static const ShapeKind visibility_of_bvh[4] = {SHAPE_SPHERE, SHAPE_TRIANGLE, SHAPE_CUBE,
-                                               SHAPE_SQUARE};
-
 /* Finds where the ray first crosses shape k of kind with 0 < t < tmax;
  * returns 1 with *t, or 0. */
 static int visibility_hit(const Scene *scene, ShapeKind kind, size_t k, const Ray *ray, real tmax,
                           real *t)
 {
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return sphere_hit(scene_spheres(scene)[k].centre, scene_spheres(scene)[k].radius, ray, 0,
-                          tmax, t);
-    case SHAPE_PLANE:
-        return plane_intersect(&scene_planes(scene)[k], ray, 0, tmax, t);
-    case SHAPE_TRIANGLE:
-        return triangle_intersect(&scene_triangles(scene)[k], ray, 0, tmax, t);
-    case SHAPE_CUBE:
-        return cube_intersect(&scene_cubes(scene)[k], ray, 0, tmax, t);
-    case SHAPE_SQUARE:
-        return square_intersect(&scene_squares(scene)[k], ray, 0, tmax, t);
-    case SHAPE_CYLINDER:
-        return cylinder_intersect(&scene_cylinders(scene)[k], ray, 0, tmax, t);
-    default:
-        return cone_intersect(&scene_cones(scene)[k], ray, 0, tmax, t);
-    }
+    return shape_intersect(kind, scene_items(scene, kind), k, ray, 0, tmax, t);
 }
 
 /* Returns how many times the ray crosses shape k of kind at 0 < t < tmax. */
 static int visibility_crossings(const Scene *scene, ShapeKind kind, size_t k, const Ray *ray,
                                 real tmax)
 {
-    real t;
-
-    switch (kind) {
-    case SHAPE_SPHERE:
-        return sphere_crossings(&scene_spheres(scene)[k], ray, 0, tmax);
-    case SHAPE_CUBE:
-        return cube_crossings(&scene_cubes(scene)[k], ray, 0, tmax);
-    case SHAPE_CYLINDER:
-        return cylinder_crossings(&scene_cylinders(scene)[k], ray, 0, tmax);
-    case SHAPE_CONE:
-        return cone_crossings(&scene_cones(scene)[k], ray, 0, tmax);
-    default: /* flat: once or never */
-        return visibility_hit(scene, kind, k, ray, tmax, &t);
-    }
+    return shape_crossings(kind, scene_items(scene, kind), k, ray, 0, tmax);
 }
 
 /* Stores in *hit the object of kind, index and order crossed at t. */
@@ -93,8 +60,8 @@ static int visibility_nearest_of(const Scene *scene, ShapeKind kind, const Ray *
 
 /* The unbounded kinds, which the hierarchy leaves to the loops, and the
  * bounded ones, as masks of Scene.kinds. */
-#define VISIBILITY_UNBOUNDED (1u << SHAPE_PLANE | 1u << SHAPE_CYLINDER | 1u << SHAPE_CONE)
-#define VISIBILITY_BOUNDED ((1u << SHAPE_KINDS) - 1 - VISIBILITY_UNBOUNDED)
+#define VISIBILITY_BOUNDED SHAPE_BOUNDED
+#define VISIBILITY_UNBOUNDED ((1u << SHAPE_KINDS) - 1 - VISIBILITY_BOUNDED)
 
 /* Returns the first kind of mask (not 0), which the caller then clears. */
 static inline ShapeKind visibility_first(unsigned mask)
@@ -111,8 +78,7 @@ visibility_nearest_accel(const Scene *scene, const Ray *ray, real tmax, unsigned
     int found = bvh_nearest(scene->accel, ray, tmax, &bh);
 
     if (found)
-        visibility_set_hit(hit, bh.t, visibility_of_bvh[bvh_kind(bh.prim)], bvh_index(bh.prim),
-                           bh.order);
+        visibility_set_hit(hit, bh.t, (ShapeKind)bvh_kind(bh.prim), bvh_index(bh.prim), bh.order);
     for (unsigned m = scene->kinds & VISIBILITY_UNBOUNDED & mask; m != 0; m &= m - 1)
         found = visibility_nearest_of(scene, visibility_first(m), ray, tmax, hit, found);
     return found;
@@ -328,7 +294,7 @@ typedef struct {
 /* Returns the transparency of the hierarchy's primitive prim. */
 static double visibility_transparency_of(const Scene *scene, uint32_t prim)
 {
-    return scene_material(scene, visibility_of_bvh[bvh_kind(prim)], bvh_index(prim)).transparency;
+    return scene_material(scene, (ShapeKind)bvh_kind(prim), bvh_index(prim)).transparency;
 }
 
 /* bvh_crossings()'s visit: keeps the crossing; returns -2 at an opaque
@@ -376,20 +342,20 @@ static double visibility_transmittance_accel(const Scene *scene, const Ray *ray,
         }
         tc.c[k] = c;
     }
-    for (; i < n && bvh_kind(tc.c[i].prim) == BVH_SPHERE; i++)
-        if (!visibility_attenuate(&share, visibility_transparency_of(scene, tc.c[i].prim),
-                                  tc.c[i].crossings))
-            return 0;
-    if (!visibility_attenuate_by(scene, SHAPE_PLANE, ray, tmax, &share))
-        return 0;
-    for (; i < n; i++)
-        if (!visibility_attenuate(&share, visibility_transparency_of(scene, tc.c[i].prim),
-                                  tc.c[i].crossings))
-            return 0;
-    return visibility_attenuate_by(scene, SHAPE_CYLINDER, ray, tmax, &share) &&
-                   visibility_attenuate_by(scene, SHAPE_CONE, ray, tmax, &share)
-               ? share
-               : 0;
+    /* Kind by kind, in ShapeKind's order: the bounded ones' crossings
+     * from the list, the unbounded ones' by their loops. */
+    for (int kind = 0; kind < SHAPE_KINDS; kind++) {
+        if (!(VISIBILITY_BOUNDED >> kind & 1)) {
+            if (!visibility_attenuate_by(scene, (ShapeKind)kind, ray, tmax, &share))
+                return 0;
+            continue;
+        }
+        for (; i < n && bvh_kind(tc.c[i].prim) == (unsigned)kind; i++)
+            if (!visibility_attenuate(&share, visibility_transparency_of(scene, tc.c[i].prim),
+                                      tc.c[i].crossings))
+                return 0;
+    }
+    return share;
 }
 
 double visibility_transmittance(const Scene *scene, const Ray *ray, real tmax)

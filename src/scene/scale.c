@@ -3,16 +3,6 @@
 
 #include <math.h>
 
-/* Returns the largest magnitude of the components of the n points at p. */
-static double scene_points_max(const Vec3 *p, size_t n)
-{
-    double m = 0;
-
-    for (size_t i = 0; i < n; i++)
-        m = fmax(m, vec3_max_abs(p[i]));
-    return m;
-}
-
 /* Returns the largest magnitude of every length in the scene, or some
  * magnitude of SCENE_TINY or more when there is one (the objects are then
  * not looked at: a scene of 10^6 triangles is seldom tiny). */
@@ -28,31 +18,9 @@ static double scene_max_length(const Scene *scene)
     for (size_t i = 0; i < scene->light_count; i++)
         if (!scene->lights[i].distant) /* a direction, not a place */
             m = fmax(m, vec3_max_abs(scene->lights[i].position));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++) {
-        const Sphere *sp = &scene_spheres(scene)[i];
-        m = fmax(m, fmax(vec3_max_abs(sp->centre), sp->radius));
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++) {
-        const Plane *pl = &scene_planes(scene)[i];
-        m = fmax(m, fmax(vec3_max_abs(pl->point), pl->material.texture >= 0 ? pl->tile : 0));
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_TRIANGLE); i++)
-        m = fmax(m, scene_points_max(scene_triangles(scene)[i].v, 3));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++)
-        m = fmax(m, fmax(vec3_max_abs(scene_cubes(scene)[i].centre), scene_cubes(scene)[i].half));
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++) {
-        const Square *sq = &scene_squares(scene)[i];
-        m = fmax(m, fmax(vec3_max_abs(sq->centre), sq->half));
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++) {
-        const Cylinder *cy = &scene_cylinders(scene)[i];
-        m = fmax(m, fmax(vec3_max_abs(cy->centre), cy->radius));
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++) {
-        const Cone *c = &scene_cones(scene)[i];
-        m = fmax(m, fmax(fmax(vec3_max_abs(c->base), vec3_max_abs(c->apex)),
-                         fmax(c->radius, fabs(c->height))));
-    }
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        for (size_t i = 0; i < scene_count_of(scene, (ShapeKind)k); i++)
+            m = fmax(m, shape_extent((ShapeKind)k, scene_items(scene, (ShapeKind)k), i));
     return m;
 }
 
@@ -83,40 +51,10 @@ void scene_fit_scale(Scene *scene)
             l->range = ldexp(l->range, k);
         }
     }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SPHERE); i++) {
-        scene_spheres(scene)[i].centre = vec3_ldexp(scene_spheres(scene)[i].centre, k);
-        scene_spheres(scene)[i].radius = ldexp(scene_spheres(scene)[i].radius, k);
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++) {
-        scene_planes(scene)[i].point = vec3_ldexp(scene_planes(scene)[i].point, k);
-        scene_planes(scene)[i].tile = ldexp(scene_planes(scene)[i].tile, k);
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_TRIANGLE); i++)
-        for (int j = 0; j < 3; j++)
-            scene_triangles(scene)[i].v[j] = vec3_ldexp(scene_triangles(scene)[i].v[j], k);
     /* Corners, apexes and the rest scale exactly with what they were made
      * from; angles and unit vectors do not change. */
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++) {
-        Cube *c = &scene_cubes(scene)[i];
-        c->centre = vec3_ldexp(c->centre, k);
-        c->lo = vec3_ldexp(c->lo, k);
-        c->hi = vec3_ldexp(c->hi, k);
-        c->half = ldexp(c->half, k);
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++) {
-        scene_squares(scene)[i].centre = vec3_ldexp(scene_squares(scene)[i].centre, k);
-        scene_squares(scene)[i].half = ldexp(scene_squares(scene)[i].half, k);
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++) {
-        scene_cylinders(scene)[i].centre = vec3_ldexp(scene_cylinders(scene)[i].centre, k);
-        scene_cylinders(scene)[i].radius = ldexp(scene_cylinders(scene)[i].radius, k);
-    }
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++) {
-        Cone *c = &scene_cones(scene)[i];
-        c->base = vec3_ldexp(c->base, k);
-        c->apex = vec3_ldexp(c->apex, k);
-        c->radius = ldexp(c->radius, k);
-        c->height = ldexp(c->height, k);
-    }
+    for (int kind = 0; kind < SHAPE_KINDS; kind++)
+        for (size_t i = 0; i < scene_count_of(scene, (ShapeKind)kind); i++)
+            shape_scale((ShapeKind)kind, scene_items(scene, (ShapeKind)kind), i, k);
     scene->length_exponent = k;
 }

@@ -12,28 +12,10 @@
 #include "base/grow.h"
 #include "base/hash.h"
 
-/* What the storage needs to know of each kind's type: its size, where its
- * position among the objects is, and where its material is (-1: not in
- * the shape; spheres and triangles keep an index). */
-static const struct {
-    size_t size;
-    size_t order;
-    long material;
-} scene_kinds[SHAPE_KINDS] = {
-    [SHAPE_SPHERE] = {sizeof(Sphere), offsetof(Sphere, order), -1},
-    [SHAPE_PLANE] = {sizeof(Plane), offsetof(Plane, order), (long)offsetof(Plane, material)},
-    [SHAPE_TRIANGLE] = {sizeof(Triangle), offsetof(Triangle, order), -1},
-    [SHAPE_CUBE] = {sizeof(Cube), offsetof(Cube, order), (long)offsetof(Cube, material)},
-    [SHAPE_SQUARE] = {sizeof(Square), offsetof(Square, order), (long)offsetof(Square, material)},
-    [SHAPE_CYLINDER] = {sizeof(Cylinder), offsetof(Cylinder, order),
-                        (long)offsetof(Cylinder, material)},
-    [SHAPE_CONE] = {sizeof(Cone), offsetof(Cone, order), (long)offsetof(Cone, material)},
-};
-
 /* Returns where shape k of kind is held. */
 static char *scene_item(const Scene *scene, ShapeKind kind, size_t k)
 {
-    return (char *)scene->shapes[kind].items + k * scene_kinds[kind].size;
+    return (char *)scene->shapes[kind].items + k * shape_size(kind);
 }
 
 void scene_init(Scene *scene)
@@ -99,7 +81,7 @@ size_t scene_memory(const Scene *scene)
 
     scene_sum(&m, scene->light_capacity * sizeof *scene->lights);
     for (int k = 0; k < SHAPE_KINDS; k++)
-        scene_sum(&m, scene->shapes[k].capacity * scene_kinds[k].size);
+        scene_sum(&m, scene->shapes[k].capacity * shape_size((ShapeKind)k));
     scene_sum(&m, scene->material_capacity * sizeof *scene->materials);
     scene_sum(&m, scene->shading_capacity * sizeof *scene->shading);
     scene_sum(&m, scene->texture_capacity * sizeof *scene->textures);
@@ -161,7 +143,7 @@ unsigned scene_order_of(const Scene *scene, ShapeKind kind, size_t k)
 {
     unsigned order;
 
-    memcpy(&order, scene_item(scene, kind, k) + scene_kinds[kind].order, sizeof order);
+    memcpy(&order, scene_item(scene, kind, k) + shape_order_offset(kind), sizeof order);
     return order;
 }
 
@@ -195,7 +177,7 @@ Material *scene_shape_material(const Scene *scene, ShapeKind kind, size_t k)
 {
     if (kind == SHAPE_TRIANGLE)
         return scene_material_of(scene, &scene_triangles(scene)[k]);
-    return (Material *)(void *)(scene_item(scene, kind, k) + scene_kinds[kind].material);
+    return (Material *)(void *)(scene_item(scene, kind, k) + shape_material_offset(kind));
 }
 
 Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
@@ -217,46 +199,18 @@ Material *scene_material_edit(Scene *scene, ShapeKind kind, size_t k, int *rc)
     return &scene->materials[at];
 }
 
-/* Widens the box [lo, hi] to hold p, grown by r on each axis. */
-static void scene_widen(Vec3 *lo, Vec3 *hi, Vec3 p, real r)
-{
-    lo->x = fmin(lo->x, p.x - r);
-    lo->y = fmin(lo->y, p.y - r);
-    lo->z = fmin(lo->z, p.z - r);
-    hi->x = fmax(hi->x, p.x + r);
-    hi->y = fmax(hi->y, p.y + r);
-    hi->z = fmax(hi->z, p.z + r);
-}
-
 double scene_size(const Scene *scene)
 {
     Vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3(-INFINITY, -INFINITY, -INFINITY);
     const Camera *cam = &scene->camera;
 
-    for (size_t i = 0; i < scene->shapes[SHAPE_SPHERE].count; i++)
-        scene_widen(&lo, &hi, scene_spheres(scene)[i].centre, scene_spheres(scene)[i].radius);
-    for (size_t i = 0; i < scene->shapes[SHAPE_TRIANGLE].count; i++)
-        for (int k = 0; k < 3; k++)
-            scene_widen(&lo, &hi, scene_triangles(scene)[i].v[k], 0);
-    for (size_t i = 0; i < scene->shapes[SHAPE_CUBE].count; i++) {
-        scene_widen(&lo, &hi, scene_cubes(scene)[i].lo, 0);
-        scene_widen(&lo, &hi, scene_cubes(scene)[i].hi, 0);
-    }
-    for (size_t i = 0; i < scene->shapes[SHAPE_SQUARE].count; i++)
-        scene_widen(&lo, &hi, scene_squares(scene)[i].centre,
-                    scene_squares(scene)[i].half * (real)1.5);
-    for (size_t i = 0; i < scene->shapes[SHAPE_PLANE].count; i++)
-        scene_widen(&lo, &hi, scene_planes(scene)[i].point, 0);
-    for (size_t i = 0; i < scene->shapes[SHAPE_CYLINDER].count; i++)
-        scene_widen(&lo, &hi, scene_cylinders(scene)[i].centre, scene_cylinders(scene)[i].radius);
-    for (size_t i = 0; i < scene->shapes[SHAPE_CONE].count; i++) {
-        scene_widen(&lo, &hi, scene_cones(scene)[i].base, scene_cones(scene)[i].radius);
-        scene_widen(&lo, &hi, scene_cones(scene)[i].apex, 0);
-    }
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        for (size_t i = 0; i < scene->shapes[k].count; i++)
+            shape_box((ShapeKind)k, scene->shapes[k].items, i, &lo, &hi);
     if (!(lo.x < hi.x || lo.y < hi.y || lo.z < hi.z)) {
-        scene_widen(&lo, &hi, cam->eye, 0);
-        scene_widen(&lo, &hi, cam->top_left, 0);
-        scene_widen(&lo, &hi, vec3_add(cam->top_left, vec3_add(cam->u, cam->v)), 0);
+        shape_widen(&lo, &hi, cam->eye, 0);
+        shape_widen(&lo, &hi, cam->top_left, 0);
+        shape_widen(&lo, &hi, vec3_add(cam->top_left, vec3_add(cam->u, cam->v)), 0);
     }
     return vec3_length(vec3_sub(hi, lo));
 }
@@ -287,7 +241,7 @@ int scene_add_light(Scene *scene, const Light *light)
 static int scene_push_shape(Scene *scene, ShapeKind kind, const void *item, const Material *m)
 {
     ShapeArray *a = &scene->shapes[kind];
-    size_t size = scene_kinds[kind].size;
+    size_t size = shape_size(kind);
     int rc = scene_reserve(scene, &a->items, &a->capacity, a->count, size);
     unsigned position = (unsigned)scene_object_count(scene);
     char *at;
@@ -296,7 +250,7 @@ static int scene_push_shape(Scene *scene, ShapeKind kind, const void *item, cons
         return rc;
     at = (char *)a->items + a->count * size;
     memcpy(at, item, size);
-    memcpy(at + scene_kinds[kind].order, &position, sizeof position);
+    memcpy(at + shape_order_offset(kind), &position, sizeof position);
     a->count++;
     scene->kinds |= 1u << kind;
     scene->has_transparency |= m->transparency > 0;
@@ -327,9 +281,20 @@ int scene_add_sphere(Scene *scene, Vec3 centre, real radius, const Material *m)
 int scene_add_shape(Scene *scene, ShapeKind kind, const void *shape)
 {
     const Material *m =
-        (const Material *)(const void *)((const char *)shape + scene_kinds[kind].material);
+        (const Material *)(const void *)((const char *)shape + shape_material_offset(kind));
 
     return scene_push_shape(scene, kind, shape, m);
+}
+
+int scene_add_any(Scene *scene, ShapeKind kind, const void *shape, const Material *m)
+{
+    const Sphere *s = shape;
+
+    if (kind == SHAPE_SPHERE)
+        return scene_add_sphere(scene, s->centre, s->radius, m);
+    if (kind == SHAPE_TRIANGLE)
+        return scene_add_triangle(scene, shape, m);
+    return scene_add_shape(scene, kind, shape);
 }
 
 long scene_add_material(Scene *scene, const Material *m)

@@ -28,19 +28,23 @@ static real scene_reach(const Scene *scene)
 
     for (size_t i = 0; i < scene->light_count; i++)
         m = scene_farther(m, scene->lights[i].position);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++)
-        m = scene_farther(m, scene_planes(scene)[i].point);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++)
-        m = scene_farther(m, scene_cylinders(scene)[i].centre);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++)
-        m = scene_farther(scene_farther(m, scene_cones(scene)[i].base), scene_cones(scene)[i].apex);
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        for (size_t i = 0; !(SHAPE_BOUNDED >> k & 1) && i < scene_count_of(scene, (ShapeKind)k);
+             i++) {
+            Vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3_neg(lo);
+            shape_box((ShapeKind)k, scene_items(scene, (ShapeKind)k), i, &lo, &hi);
+            m = scene_farther(scene_farther(m, lo), hi);
+        }
     return m;
 }
 
 size_t scene_bounded_count(const Scene *scene)
 {
-    return scene_count_of(scene, SHAPE_SPHERE) + scene_count_of(scene, SHAPE_TRIANGLE) +
-           scene_count_of(scene, SHAPE_CUBE) + scene_count_of(scene, SHAPE_SQUARE);
+    size_t n = 0;
+
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        n += SHAPE_BOUNDED >> k & 1 ? scene_count_of(scene, (ShapeKind)k) : 0;
+    return n;
 }
 
 enum { SCENE_BUFFER_FLOOR = 4 << 20 }; /* bytes any light buffer may take */
@@ -117,14 +121,15 @@ int scene_build_hierarchy(Scene *scene, int threads)
 {
     Bvh *bvh;
     size_t n = scene_bounded_count(scene);
-    BvhShapes shapes = {scene_spheres(scene),   scene_count_of(scene, SHAPE_SPHERE),
-                        scene_triangles(scene), scene_count_of(scene, SHAPE_TRIANGLE),
-                        scene_cubes(scene),     scene_count_of(scene, SHAPE_CUBE),
-                        scene_squares(scene),   scene_count_of(scene, SHAPE_SQUARE),
-                        NULL};
+    BvhShapes shapes = {{NULL}, {0}, NULL};
 
     if (scene->accel || n < BVH_MIN_PRIMITIVES)
         return 0;
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        if (SHAPE_BOUNDED >> k & 1) {
+            shapes.items[k] = scene_items(scene, (ShapeKind)k);
+            shapes.count[k] = scene_count_of(scene, (ShapeKind)k);
+        }
     if (scene->memory_limit && bvh_build_memory(n) > scene_memory_left(scene))
         return SCENE_OVER_LIMIT;
     /* Spheres in the leaves' order are read from neighbouring memory. A

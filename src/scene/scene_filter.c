@@ -12,16 +12,9 @@ static void scene_filter_each(Scene *scene, void (*visit)(Material *m, void *ctx
 {
     for (size_t i = 0; i < scene->material_count; i++)
         visit(&scene->materials[i], ctx);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_PLANE); i++)
-        visit(&scene_planes(scene)[i].material, ctx);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CUBE); i++)
-        visit(&scene_cubes(scene)[i].material, ctx);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_SQUARE); i++)
-        visit(&scene_squares(scene)[i].material, ctx);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CYLINDER); i++)
-        visit(&scene_cylinders(scene)[i].material, ctx);
-    for (size_t i = 0; i < scene_count_of(scene, SHAPE_CONE); i++)
-        visit(&scene_cones(scene)[i].material, ctx);
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        for (size_t i = 0; (SHAPE_HOLDS >> k & 1) && i < scene_count_of(scene, (ShapeKind)k); i++)
+            visit(scene_shape_material(scene, (ShapeKind)k, i), ctx);
     for (size_t i = 0; i < scene->named_count; i++)
         visit(&scene->named[i].base, ctx);
 }

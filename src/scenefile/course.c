@@ -30,6 +30,7 @@
  */
 #include "scenefile/course.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "course_bulk.h"
@@ -37,6 +38,7 @@
 #include "course_records.h"
 #include "math/number.h"
 #include "scene/scale.h"
+#include "scenefile/shapes.h"
 
 static const char *const course_xyz_names[] = {"x", "y", "z"};
 static const FieldKind course_xyz_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD};
@@ -211,54 +213,66 @@ static int course_sphere_record(CourseParser *P, const Record *rec, Scene *scene
     course_note_object(P, SHAPE_SPHERE, scene_count_of(scene, SHAPE_SPHERE) - 1);
     return 0;
 }
-/* A record that may follow the header, and what reads it. */
+/* A record that may follow the header, other than a shape's (but the
+ * sphere's, which the course reads its own way), and what reads it. */
 typedef struct {
     const char *keyword; /* with its colon */
-    int (*parse)(CourseParser *P, const Record *rec, Scene *scene); /* NULL: a shape's */
-    int shape;           /* that shape's ShapeKind, for course_shape_record() */
+    int (*parse)(CourseParser *P, const Record *rec, Scene *scene);
 } RecordKind;
 
 static const RecordKind course_record_kinds[] = {
-    {"sphere:", course_sphere_record, 0},     {"plane:", NULL, SHAPE_PLANE},
-    {"triangle:", NULL, SHAPE_TRIANGLE},      {"light:", course_extra_light_record, 0},
-    {"ambient:", course_ambient_record, 0},   {"samples:", course_samples_record, 0},
-    {"lens:", course_lens_record, 0},         {"texture:", course_texture_record, 0},
-    {"mesh:", course_mesh_record, 0},         {"cube:", NULL, SHAPE_CUBE},
-    {"square:", NULL, SHAPE_SQUARE},          {"cylinder:", NULL, SHAPE_CYLINDER},
-    {"cone:", NULL, SHAPE_CONE},
+    {"sphere:", course_sphere_record},   {"light:", course_extra_light_record},
+    {"ambient:", course_ambient_record}, {"samples:", course_samples_record},
+    {"lens:", course_lens_record},       {"texture:", course_texture_record},
+    {"mesh:", course_mesh_record},
 };
 
 enum { COURSE_RECORD_KINDS = sizeof course_record_kinds / sizeof course_record_kinds[0] };
 
+#define COURSE_SHAPE_WORD(K, T, name, ...) "'" #name ":', "
 #define COURSE_KEYWORD_LIST                                                                    \
-    "'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', 'cylinder:', 'cone:', 'mesh:', "    \
-    "'light:', 'ambient:', 'samples:', 'lens:' or 'texture:'"
+    SHAPE_LIST(COURSE_SHAPE_WORD)                                                              \
+    "'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:'"
+
+/* Records why t, the first token of rec, is not the record keyword kw (a
+ * word and its colon) that it nearly is, and returns 1; or returns 0. */
+static int course_near_keyword(CourseParser *P, const Record *rec, const char *kw)
+{
+    const Token *t = &rec->tok[0];
+    size_t n = strlen(kw);
+    char q[64], bare[16];
+
+    lex_quote(q, sizeof q, t);
+    memcpy(bare, kw, n - 1);
+    bare[n - 1] = '\0';
+    if (number_word_is(t->text, t->len, kw)) {
+        course_fail(P, &rec->line, t->column, "unknown record %s: keywords are lower case ('%s')",
+                    q, kw);
+        return 1;
+    }
+    if (t->len == n - 1 && number_word_is(t->text, t->len, bare)) {
+        course_fail(P, &rec->line, t->column, "expected '%s' with its colon attached, found %s",
+                    kw, q);
+        return 1;
+    }
+    return 0;
+}
 
 /* Records why the first token of rec is not a known record keyword. */
 static void course_fail_keyword(CourseParser *P, const Record *rec)
 {
     const Token *t = &rec->tok[0];
-    char q[64];
+    char q[64], kw[16];
     double ignored;
 
     lex_quote(q, sizeof q, t);
-    for (int k = 0; k < COURSE_RECORD_KINDS; k++) {
-        const char *kw = course_record_kinds[k].keyword;
-        size_t n = strlen(kw);
-        char bare[16];
-
-        memcpy(bare, kw, n - 1);
-        bare[n - 1] = '\0';
-        if (number_word_is(t->text, t->len, kw)) {
-            course_fail(P, &rec->line, t->column,
-                       "unknown record %s: keywords are lower case ('%s')", q, kw);
+    for (int k = 0; k < COURSE_RECORD_KINDS; k++)
+        if (course_near_keyword(P, rec, course_record_kinds[k].keyword))
             return;
-        }
-        if (t->len == n - 1 && number_word_is(t->text, t->len, bare)) {
-            course_fail(P, &rec->line, t->column,
-                       "expected '%s' with its colon attached, found %s", kw, q);
+    for (int k = 0; k < SHAPE_KINDS; k++) {
+        snprintf(kw, sizeof kw, "%s:", shape_words[k]);
+        if (course_near_keyword(P, rec, kw))
             return;
-        }
     }
     if (number_parse(t->text, t->len, &ignored) != NUMBER_SYNTAX)
         course_fail(P, &rec->line, t->column,
@@ -280,16 +294,19 @@ static int course_objects(CourseParser *P, Scene *scene)
         return 0;
     while ((rc = lex_next_record(&P->lex, &rec)) == 1) {
         int k = 0;
+        ShapeKind kind;
         while (k < COURSE_RECORD_KINDS && !lex_token_is(&rec.tok[0], course_record_kinds[k].keyword))
             k++;
-        if (k == COURSE_RECORD_KINDS) {
+        if (k < COURSE_RECORD_KINDS) {
+            if (course_record_kinds[k].parse(P, &rec, scene) != 0)
+                return -1;
+        } else if (shapes_kind_of(rec.tok[0].text, rec.tok[0].len, ":", &kind)) {
+            if (course_shape_record(P, &rec, scene, kind) != 0)
+                return -1;
+        } else {
             course_fail_keyword(P, &rec);
             return -1;
         }
-        if (course_record_kinds[k].parse ? course_record_kinds[k].parse(P, &rec, scene) != 0
-                                         : course_shape_record(P, &rec, scene,
-                                                               (ShapeKind)course_record_kinds[k].shape) != 0)
-            return -1;
     }
     return rc;
 }

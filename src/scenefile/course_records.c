@@ -2,6 +2,7 @@
  * docs/scene-format.md). */
 #include "course_records.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,20 +18,6 @@ static const FieldKind course_material_kinds[] = {FIELD_COLOUR,   FIELD_COLOUR, 
                                                   FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 static const char *const course_rgb_names[] = {"red", "green", "blue"};
 static const FieldKind course_rgb_kinds[] = {FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR};
-static const char *const course_plane_names[] = {
-    "point x", "point y", "point z", "normal x",   "normal y",     "normal z",
-    "red",     "green",   "blue",    "reflection", "transparency", "refractive index"};
-static const FieldKind course_plane_kinds[] = {
-    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
-static const char *const course_triangle_names[] = {
-    "x0",  "y0",    "z0",   "x1",         "y1",           "z1",
-    "x2",  "y2",    "z2",   "red",        "green",        "blue",
-    "reflection", "transparency", "refractive index"};
-static const FieldKind course_triangle_kinds[] = {
-    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COORD,
-    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
 static const char *const course_lens_names[] = {"aperture", "focal distance"};
 static const FieldKind course_lens_kinds[] = {FIELD_NONNEGATIVE, FIELD_POSITIVE};
 static const char *const course_tile_names[] = {"tile size"};
@@ -38,59 +25,10 @@ static const FieldKind course_tile_kinds[] = {FIELD_POSITIVE};
 static const char *const course_uv_names[] = {"u0", "v0", "u1", "v1", "u2", "v2"};
 static const FieldKind course_uv_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
                                            FIELD_COORD, FIELD_COORD, FIELD_COORD};
-static const RecordSpec course_plane_spec = {"the plane",
-                                       "px py pz nx ny nz r g b reflection"
-                                       " [transparency index]",
-                                       10, 2, 0, course_plane_names, course_plane_kinds};
-static const RecordSpec course_triangle_spec = {"the triangle",
-                                          "x0 y0 z0 x1 y1 z1 x2 y2 z2 r g b reflection"
-                                          " [transparency index]",
-                                          13, 2, 0, course_triangle_names, course_triangle_kinds};
-static const char *const course_cube_names[] = {
-    "centre x", "centre y", "centre z",     "half-edge",       "red",
-    "green",    "blue",     "reflection", "transparency", "refractive index"};
-static const FieldKind course_cube_kinds[] = {
-    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR, FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
-static const char *const course_square_names[] = {
-    "centre x", "centre y", "centre z",   "normal x",     "normal y",        "normal z",
-    "half-edge", "red",     "green",      "blue",         "reflection", "transparency",
-    "refractive index"};
-static const FieldKind course_square_kinds[] = {
-    FIELD_COORD,    FIELD_COORD,  FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
-    FIELD_COORD,    FIELD_POSITIVE, FIELD_COLOUR, FIELD_COLOUR, FIELD_COLOUR,
-    FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
-static const char *const course_cylinder_names[] = {
-    "axis x", "axis y", "axis z",     "radius",       "red",
-    "green",  "blue",   "reflection", "transparency", "refractive index"};
-static const char *const course_cone_names[] = {
-    "x",   "y",    "z",          "radius",       "height", "red",
-    "green", "blue", "reflection", "transparency", "refractive index"};
-static const FieldKind course_cone_kinds[] = {
-    FIELD_COORD,  FIELD_COORD,    FIELD_COORD,    FIELD_POSITIVE, FIELD_COORD, FIELD_COLOUR,
-    FIELD_COLOUR, FIELD_COLOUR,   FIELD_FRACTION, FIELD_FRACTION, FIELD_POSITIVE};
-static const RecordSpec course_cube_spec = {"the cube",
-                                            "cx cy cz half-edge r g b reflection"
-                                            " [transparency index]",
-                                            8, 2, 0, course_cube_names, course_cube_kinds};
-static const RecordSpec course_square_spec = {"the square",
-                                              "cx cy cz nx ny nz half-edge r g b reflection"
-                                              " [transparency index]",
-                                              11, 2, 0, course_square_names, course_square_kinds};
-static const RecordSpec course_cylinder_spec = {"the cylinder",
-                                                "x y z radius r g b reflection"
-                                                " [transparency index]",
-                                                8, 2, 0, course_cylinder_names, course_cube_kinds};
-static const RecordSpec course_cone_spec = {"the cone",
-                                            "x y z radius height r g b reflection"
-                                            " [transparency index]",
-                                            9, 2, 0, course_cone_names, course_cone_kinds};
 static const RecordSpec course_ambient_spec = {"the ambient light", "r g b", 3, 0, 0, course_rgb_names,
                                          course_rgb_kinds};
 static const RecordSpec course_lens_spec = {"the lens", "aperture focal_distance", 2, 0, 0,
                                       course_lens_names, course_lens_kinds};
-static const RecordSpec course_sphere_texture_spec = {"the sphere's texture", "path [filter]", 0, 0, 0,
-                                                NULL, NULL};
 static const RecordSpec course_plane_texture_spec = {"the plane's texture", "path [filter] [tile_size]",
                                                0, 1, 0, course_tile_names, course_tile_kinds};
 static const RecordSpec course_mesh_spec = {"the mesh", "path [r g b reflection [transparency index]]",
@@ -100,14 +38,6 @@ static const RecordSpec course_mesh_texture_spec = {"the mesh's texture", "path 
 static const RecordSpec course_triangle_texture_spec = {"the triangle's texture",
                                                   "path [filter] [u0 v0 u1 v1 u2 v2]", 0, 6, 0,
                                                   course_uv_names, course_uv_kinds};
-static const RecordSpec course_cube_texture_spec = {"the cube's texture", "path [filter]", 0, 0, 0,
-                                                    NULL, NULL};
-static const RecordSpec course_square_texture_spec = {"the square's texture", "path [filter]", 0, 0,
-                                                      0, NULL, NULL};
-static const RecordSpec course_cylinder_texture_spec = {"the cylinder's texture", "path [filter]",
-                                                        0, 0, 0, NULL, NULL};
-static const RecordSpec course_cone_texture_spec = {"the cone's texture", "path [filter]", 0, 0, 0,
-                                                    NULL, NULL};
 
 /* Returns the kind of the last object read (there must be one): a mesh's
  * triangles share their material. */
@@ -116,23 +46,19 @@ static ShapeKind course_last_kind(const CourseParser *P)
     return P->last_kind >= COURSE_MESH ? SHAPE_TRIANGLE : (ShapeKind)P->last_kind;
 }
 
-/* The numbers of each shape's record but the sphere's (course.c reads
- * it), by ShapeKind. */
-static const RecordSpec *const course_shape_specs[SHAPE_KINDS] = {
-    [SHAPE_PLANE] = &course_plane_spec,       [SHAPE_TRIANGLE] = &course_triangle_spec,
-    [SHAPE_CUBE] = &course_cube_spec,         [SHAPE_SQUARE] = &course_square_spec,
-    [SHAPE_CYLINDER] = &course_cylinder_spec, [SHAPE_CONE] = &course_cone_spec,
-};
-
 int course_shape_record(CourseParser *P, const Record *rec, Scene *scene, ShapeKind kind)
 {
-    const RecordSpec *spec = course_shape_specs[kind];
-    double v[SHAPES_NUMBERS_MAX + 6];
-    int n = lex_numbers(&P->lex, rec, 1, spec, v), rc, field = 0;
+    ShapesSpec shape;
+    const RecordSpec *spec = &shape.spec;
+    double v[SHAPE_NUMBERS_MAX + SHAPES_MORE_MAX];
+    int n, rc, field = 0;
     const char *fault = NULL;
     Material m;
 
-    if (n < 0 || course_material(P, rec, spec, 1, shapes_count[kind], v, n, &m) != 0)
+    shapes_spec(&shape, kind, "r g b reflection [transparency index]", 6, 2,
+                course_material_names, course_material_kinds);
+    n = lex_numbers(&P->lex, rec, 1, spec, v);
+    if (n < 0 || course_material(P, rec, spec, 1, shape_records[kind]->count, v, n, &m) != 0)
         return -1;
     rc = shapes_add(scene, kind, v, &m, &fault, &field);
     if (rc == SHAPES_INVALID) {
@@ -260,10 +186,8 @@ int course_mesh_record(CourseParser *P, const Record *rec, Scene *scene)
  * triangle, none for the others. */
 int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
 {
-    static const RecordSpec *const specs[] = {
-        &course_sphere_texture_spec, &course_plane_texture_spec,    &course_triangle_texture_spec,
-        &course_cube_texture_spec,   &course_square_texture_spec,   &course_cylinder_texture_spec,
-        &course_cone_texture_spec,   &course_mesh_texture_spec};
+    RecordSpec any = {NULL, "path [filter]", 0, 0, 0, NULL, NULL};
+    char what[48];
     const RecordSpec *spec;
     int first = 2, n, index, rc = 0;
     double v[6];
@@ -283,7 +207,17 @@ int course_texture_record(CourseParser *P, const Record *rec, Scene *scene)
                     "gives a material");
         return -1;
     }
-    spec = specs[P->last_kind];
+    if (P->last_kind == COURSE_MESH) {
+        spec = &course_mesh_texture_spec;
+    } else if (P->last_kind == SHAPE_PLANE) {
+        spec = &course_plane_texture_spec;
+    } else if (P->last_kind == SHAPE_TRIANGLE) {
+        spec = &course_triangle_texture_spec;
+    } else {
+        snprintf(what, sizeof what, "the %s's texture", shape_words[P->last_kind]);
+        any.what = what;
+        spec = &any;
+    }
     if (scene_material(scene, course_last_kind(P), P->last_index).texture >= 0) {
         course_fail(P, &rec->line, rec->tok[0].column,
                    "%s is already set: an object takes one texture: record", spec->what);

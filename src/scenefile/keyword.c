@@ -56,15 +56,6 @@ static const char *const keyword_material_names[] = {
 static const FieldKind keyword_material_kinds[] = {
     FIELD_COLOUR,      FIELD_COLOUR,      FIELD_COLOUR,   FIELD_NONNEGATIVE, FIELD_NONNEGATIVE,
     FIELD_NONNEGATIVE, FIELD_NONNEGATIVE, FIELD_FRACTION, FIELD_POSITIVE,    FIELD_FRACTION};
-static const char *const keyword_sphere_names[] = {"xC", "yC", "zC", "radius"};
-static const FieldKind keyword_sphere_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
-                                                 FIELD_POSITIVE};
-static const char *const keyword_plane_names[] = {"px", "py", "pz", "nx", "ny", "nz"};
-static const char *const keyword_triangle_names[] = {"x0", "y0", "z0", "x1", "y1",
-                                                     "z1", "x2", "y2", "z2"};
-static const FieldKind keyword_coord_kinds[] = {FIELD_COORD, FIELD_COORD, FIELD_COORD,
-                                                FIELD_COORD, FIELD_COORD, FIELD_COORD,
-                                                FIELD_COORD, FIELD_COORD, FIELD_COORD};
 static const char *const keyword_light_names[] = {"x", "y", "z", "red", "green", "blue",
                                                   "intensity"};
 static const FieldKind keyword_light_kinds[] = {FIELD_COORD,  FIELD_COORD,  FIELD_COORD,
@@ -79,21 +70,6 @@ static const RecordSpec keyword_camera = {
 static const RecordSpec keyword_material = {
     "the material", "name r g b ka kd ks alpha [rho_r [eta_r [tau]]]", 7, 3, 1,
     keyword_material_names, keyword_material_kinds};
-static const RecordSpec keyword_sphere = {"the sphere", "xC yC zC radius material", 4, 0, 0,
-                                          keyword_sphere_names, keyword_sphere_kinds};
-static const RecordSpec keyword_plane = {"the plane", "px py pz nx ny nz material", 6, 0, 0,
-                                         keyword_plane_names, keyword_coord_kinds};
-static const RecordSpec keyword_triangle = {"the triangle",
-                                            "x0 y0 z0 x1 y1 z1 x2 y2 z2 material", 9, 0, 0,
-                                            keyword_triangle_names, keyword_coord_kinds};
-static const RecordSpec keyword_cube = {"the cube", "xC yC zC half material", 4, 0, 0,
-                                        shapes_cube_names, shapes_sphere_kinds};
-static const RecordSpec keyword_square = {"the square", "xC yC zC nx ny nz half material", 7, 0,
-                                          0, shapes_square_names, shapes_square_kinds};
-static const RecordSpec keyword_cylinder = {"the cylinder", "x y z radius material", 4, 0, 0,
-                                            shapes_sphere_names, shapes_sphere_kinds};
-static const RecordSpec keyword_cone = {"the cone", "x y z radius height material", 5, 0, 0,
-                                        shapes_cone_names, shapes_cone_kinds};
 static const RecordSpec keyword_light = {"the light", "x y z r g b i", 7, 0, 0,
                                          keyword_light_names, keyword_light_kinds};
 static const RecordSpec keyword_ambient = {"the ambient light", "r g b", 3, 0, 0,
@@ -232,27 +208,21 @@ static int keyword_material_record(Keyword *K, const Record *rec, Scene *scene)
     return names_add(&K->names, scene, (size_t)index) != 0 ? keyword_fail_memory(K) : 0;
 }
 
-/* The numbers of each shape's element, by ShapeKind. */
-static const RecordSpec *const keyword_shape_specs[SHAPE_KINDS] = {
-    [SHAPE_SPHERE] = &keyword_sphere, [SHAPE_PLANE] = &keyword_plane,
-    [SHAPE_TRIANGLE] = &keyword_triangle, [SHAPE_CUBE] = &keyword_cube,
-    [SHAPE_SQUARE] = &keyword_square, [SHAPE_CYLINDER] = &keyword_cylinder,
-    [SHAPE_CONE] = &keyword_cone,
-};
-
 /* shape -> KEYWORD numbers material (sphere: xC yC zC radius; plane: px py
  * pz nx ny nz; triangle: three corners; cube: xC yC zC half; square: xC
  * yC zC nx ny nz half; cylinder: x y z radius; cone: x y z radius
  * height): reads rec, an element of a shape of kind, into the scene. */
 static int keyword_shape_record(Keyword *K, const Record *rec, Scene *scene, ShapeKind kind)
 {
-    const RecordSpec *spec = keyword_shape_specs[kind];
-    double v[SHAPES_NUMBERS_MAX];
+    ShapesSpec shape;
+    double v[SHAPE_NUMBERS_MAX];
     const char *fault = NULL;
     int rc, field = 0;
     Material m;
 
-    if (names_numbers_and_material(&K->lex, &K->names, rec, 1, spec, scene, "a material line", v, &m) != 0)
+    shapes_spec(&shape, kind, "material", 0, 0, NULL, NULL);
+    if (names_numbers_and_material(&K->lex, &K->names, rec, 1, &shape.spec, scene,
+                                   "a material line", v, &m) != 0)
         return -1;
     rc = shapes_add(scene, kind, v, &m, &fault, &field);
     if (rc == SHAPES_INVALID) {
@@ -391,29 +361,49 @@ static int keyword_gicache_record(Keyword *K, const Record *rec, Scene *scene)
     return 0;
 }
 
-/* An element and what reads it. */
+/* An element other than a shape's, and what reads it. */
 typedef struct {
     const char *keyword;
-    int (*parse)(Keyword *K, const Record *rec, Scene *scene); /* NULL: a shape's */
-    int shape;           /* that shape's ShapeKind, for keyword_shape_record() */
+    int (*parse)(Keyword *K, const Record *rec, Scene *scene);
 } KeywordKind;
 
 static const KeywordKind keyword_kinds[] = {
-    {"camera", keyword_camera_record, 0},   {"material", keyword_material_record, 0},
-    {"sphere", NULL, SHAPE_SPHERE},         {"plane", NULL, SHAPE_PLANE},
-    {"triangle", NULL, SHAPE_TRIANGLE},     {"mesh", keyword_mesh_record, 0},
-    {"light", keyword_light_record, 0},     {"ambient", keyword_ambient_record, 0},
-    {"background", keyword_background_record, 0}, {"cube", NULL, SHAPE_CUBE},
-    {"square", NULL, SHAPE_SQUARE},         {"cylinder", NULL, SHAPE_CYLINDER},
-    {"cone", NULL, SHAPE_CONE},             {"gi", keyword_gi_record, 0},
-    {"gicache", keyword_gicache_record, 0},
+    {"camera", keyword_camera_record},         {"material", keyword_material_record},
+    {"mesh", keyword_mesh_record},             {"light", keyword_light_record},
+    {"ambient", keyword_ambient_record},       {"background", keyword_background_record},
+    {"gi", keyword_gi_record},                 {"gicache", keyword_gicache_record},
 };
 
 enum { KEYWORD_KINDS = sizeof keyword_kinds / sizeof keyword_kinds[0] };
 
+#define KEYWORD_SHAPE_WORD(K, T, name, ...) "'" #name "', "
 #define KEYWORD_LIST                                                                          \
-    "'camera', 'material', 'sphere', 'plane', 'triangle', 'cube', 'square', 'cylinder', "     \
-    "'cone', 'mesh', 'light', 'ambient' or 'background'"
+    "'camera', 'material', " SHAPE_LIST(KEYWORD_SHAPE_WORD) "'mesh', 'light', 'ambient' or "    \
+    "'background'"
+
+/* Records why t, the first token of rec, is not the keyword kw that it
+ * nearly is, and returns 1; or returns 0. */
+static int keyword_near(Keyword *K, const Record *rec, const char *kw)
+{
+    const Token *t = &rec->tok[0];
+    size_t n = strlen(kw);
+    char q[64];
+
+    lex_quote(q, sizeof q, t);
+    if (number_word_is(t->text, t->len, kw)) {
+        keyword_fail(K, &rec->line, t->column, "unknown element %s: keywords are lower case "
+                                               "('%s')", q, kw);
+        return 1;
+    }
+    if (t->len == n + 1 && t->text[n] == ':' && number_word_is(t->text, n, kw)) {
+        keyword_fail(K, &rec->line, t->column,
+                     "unknown element %s: this is a keyword-format scene (its first "
+                     "element is a keyword), where keywords take no colon ('%s')",
+                     q, kw);
+        return 1;
+    }
+    return 0;
+}
 
 /* Records why the first token of rec is not a known keyword. */
 static void keyword_fail_keyword(Keyword *K, const Record *rec)
@@ -422,22 +412,12 @@ static void keyword_fail_keyword(Keyword *K, const Record *rec)
     char q[64];
 
     lex_quote(q, sizeof q, t);
-    for (int k = 0; k < KEYWORD_KINDS; k++) {
-        const char *kw = keyword_kinds[k].keyword;
-        size_t n = strlen(kw);
-        if (number_word_is(t->text, t->len, kw)) {
-            keyword_fail(K, &rec->line, t->column, "unknown element %s: keywords are lower case "
-                                                   "('%s')", q, kw);
+    for (int k = 0; k < KEYWORD_KINDS; k++)
+        if (keyword_near(K, rec, keyword_kinds[k].keyword))
             return;
-        }
-        if (t->len == n + 1 && t->text[n] == ':' && number_word_is(t->text, n, kw)) {
-            keyword_fail(K, &rec->line, t->column,
-                         "unknown element %s: this is a keyword-format scene (its first "
-                         "element is a keyword), where keywords take no colon ('%s')",
-                         q, kw);
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        if (keyword_near(K, rec, shape_words[k]))
             return;
-        }
-    }
     if (keyword_is_number(t))
         keyword_fail(K, &rec->line, t->column,
                      "expected an element such as 'sphere', found the number %s: every line "
@@ -456,16 +436,19 @@ static int keyword_elements(Keyword *K, Scene *scene)
 
     while ((rc = lex_next_record(&K->lex, &rec)) == 1) {
         int k = 0;
+        ShapeKind kind;
         while (k < KEYWORD_KINDS && !lex_token_is(&rec.tok[0], keyword_kinds[k].keyword))
             k++;
-        if (k == KEYWORD_KINDS) {
+        if (k < KEYWORD_KINDS) {
+            if (keyword_kinds[k].parse(K, &rec, scene) != 0)
+                return -1;
+        } else if (shapes_kind_of(rec.tok[0].text, rec.tok[0].len, "", &kind)) {
+            if (keyword_shape_record(K, &rec, scene, kind) != 0)
+                return -1;
+        } else {
             keyword_fail_keyword(K, &rec);
             return -1;
         }
-        if (keyword_kinds[k].parse ? keyword_kinds[k].parse(K, &rec, scene) != 0
-                                   : keyword_shape_record(K, &rec, scene,
-                                                          (ShapeKind)keyword_kinds[k].shape) != 0)
-            return -1;
     }
     if (rc == 0 && !K->camera_line) {
         lex_fail_eof(&K->lex, "a camera line", "camera x0 y0 z0 xA yA zA alpha width height");

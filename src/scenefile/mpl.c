@@ -54,29 +54,23 @@ static const RecordSpec mpl_direction = {"the directional light", "dx dy dz r g 
                                          0, 0, mpl_light_names, mpl_light_kinds};
 static const RecordSpec mpl_point = {"the point light", "x y z r g b intensity [range]", 7, 1, 0,
                                      mpl_light_names, mpl_light_kinds};
-/* The shapes a primitive line names, and the numbers each takes. */
+/* The shapes a primitive line names, and the numbers each takes: the
+ * kind's own (shape.h), but the Tri's. */
 typedef struct {
     const char *word; /* as the MPL ray tracer writes it; any case */
     ShapeKind kind;
-    RecordSpec spec;
+    const char *syntax; /* its numbers and material, for messages */
 } MplShape;
 
 static const MplShape mpl_shapes[] = {
-    {"Sphere", SHAPE_SPHERE, {"the sphere", "cx cy cz radius material", 4, 0, 0,
-                              shapes_sphere_names, shapes_sphere_kinds}},
-    {"Plane", SHAPE_PLANE, {"the plane", "px py pz nx ny nz material", 6, 0, 0, NULL, NULL}},
-    {"Triangle", SHAPE_TRIANGLE, {"the triangle",
-                                  "x1 y1 z1 x2 y2 z2 x3 y3 z3 material", 9, 0, 0, NULL, NULL}},
-    {"Tri", SHAPE_TRIANGLE, {"the triangle", "size x y z material", 4, 0, 0, mpl_tri_names,
-                             mpl_tri_kinds}},
-    {"Cube", SHAPE_CUBE, {"the cube", "cx cy cz size material", 4, 0, 0, shapes_cube_names,
-                          shapes_sphere_kinds}},
-    {"Square", SHAPE_SQUARE, {"the square", "cx cy cz nx ny nz size material", 7, 0, 0,
-                              shapes_square_names, shapes_square_kinds}},
-    {"Cylinder", SHAPE_CYLINDER, {"the cylinder", "cx cy cz radius material", 4, 0, 0,
-                                  shapes_sphere_names, shapes_sphere_kinds}},
-    {"Cone", SHAPE_CONE, {"the cone", "x y z radius height material", 5, 0, 0,
-                          shapes_cone_names, shapes_cone_kinds}},
+    {"Sphere", SHAPE_SPHERE, "cx cy cz radius material"},
+    {"Plane", SHAPE_PLANE, "px py pz nx ny nz material"},
+    {"Triangle", SHAPE_TRIANGLE, "x1 y1 z1 x2 y2 z2 x3 y3 z3 material"},
+    {"Tri", SHAPE_TRIANGLE, "size x y z material"},
+    {"Cube", SHAPE_CUBE, "cx cy cz size material"},
+    {"Square", SHAPE_SQUARE, "cx cy cz nx ny nz size material"},
+    {"Cylinder", SHAPE_CYLINDER, "cx cy cz radius material"},
+    {"Cone", SHAPE_CONE, "x y z radius height material"},
 };
 
 enum { MPL_SHAPES = sizeof mpl_shapes / sizeof mpl_shapes[0] };
@@ -302,8 +296,9 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
 {
     Record copy = *line, *rec = &copy;
     const MplShape *shape = NULL;
+    ShapesSpec numbers;
     RecordSpec spec;
-    double v[SHAPES_NUMBERS_MAX];
+    double v[SHAPE_NUMBERS_MAX];
     const char *fault = NULL;
     int rc, field = 0, n;
     Material m;
@@ -322,10 +317,13 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
                  lex_quote(q, sizeof q, &rec->tok[1]));
         return -1;
     }
-    spec = shape->spec;
-    if (!spec.names) { /* the planes' and triangles' numbers are the shapes' own */
-        spec.names = shapes_names[shape->kind];
-        spec.kinds = shapes_kinds[shape->kind];
+    shapes_spec(&numbers, shape->kind, "material", 0, 0, NULL, NULL);
+    spec = numbers.spec;
+    spec.syntax = shape->syntax;
+    if (strcmp(shape->word, "Tri") == 0) { /* size x y z: a triangle below */
+        spec.count = 4;
+        spec.names = mpl_tri_names;
+        spec.kinds = mpl_tri_kinds;
     }
     n = spec.count;
     if (mpl_number_prefixes(M, scene, rec, 2, n) != 0 || mpl_lenient_material(M, scene, rec, 2 + n))
@@ -349,7 +347,7 @@ static int mpl_primitive_record(Mpl *M, const Record *line, Scene *scene)
         return mpl_fail_memory(M, rec, scene, rc);
     /* The MPL ray tracer's cone ends at its circle (cone.h). */
     if (shape->kind == SHAPE_CONE)
-        scene_cones(scene)[scene_count_of(scene, SHAPE_CONE) - 1].finite = 1;
+        ((Cone *)scene_items(scene, SHAPE_CONE))[scene_count_of(scene, SHAPE_CONE) - 1].finite = 1;
     return 0;
 }
 

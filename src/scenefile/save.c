@@ -133,7 +133,7 @@ static int save_objects(FILE *fp, const Scene *scene, const SceneSource *src,
 
     scene_walk_start(&w);
     while (scene_walk_next(scene, &w, &kind, &i)) {
-        double v[SHAPES_NUMBERS_MAX];
+        double v[SHAPE_NUMBERS_MAX];
         int n;
 
         if (kind == SHAPE_TRIANGLE && mesh < src->mesh_count && src->meshes[mesh].first == i) {
@@ -150,7 +150,7 @@ static int save_objects(FILE *fp, const Scene *scene, const SceneSource *src,
             continue;
         }
         n = shapes_numbers(scene, kind, i, v);
-        fputs(shapes_word[kind], fp);
+        fputs(shape_words[kind], fp);
         save_numbers(fp, v, n);
         fprintf(fp, " %s\n", save_name(scene, kind, i));
     }
@@ -218,16 +218,41 @@ static void save_mpl_colour(FILE *fp, Colour c)
     save_numbers(fp, v, 3);
 }
 
+/* Writes the objects of scene, an MPL-format scene, as its primitive
+ * lines, in the scene's order. */
+static int save_mpl_shapes(FILE *fp, const Scene *scene, const char *scene_name, Error *err)
+{
+    /* The kinds the MPL ray tracer drew, as it wrote them. */
+    static const char *const words[SHAPE_KINDS] = {
+        [SHAPE_SPHERE] = "Sphere", [SHAPE_PLANE] = "Plane",       [SHAPE_TRIANGLE] = "Triangle",
+        [SHAPE_CUBE] = "Cube",     [SHAPE_SQUARE] = "Square",     [SHAPE_CYLINDER] = "Cylinder",
+        [SHAPE_CONE] = "Cone"};
+    SceneWalk w;
+    ShapeKind kind;
+    size_t i;
+
+    scene_walk_start(&w);
+    while (scene_walk_next(scene, &w, &kind, &i)) {
+        double v[SHAPE_NUMBERS_MAX];
+        int n = shapes_numbers(scene, kind, i, v);
+        if (!words[kind]) {
+            error_set(err, scene_name, "--save cannot write a %s in the MPL format, which has "
+                                       "none", shape_words[kind]);
+            return -1;
+        }
+        fprintf(fp, "p %s", words[kind]);
+        save_numbers(fp, v, n);
+        fprintf(fp, " %s\n", save_name(scene, kind, i));
+    }
+    return 0;
+}
+
 /* Writes scene in the MPL format (save_scene()). */
 static int save_mpl(FILE *fp, const Scene *scene, const SceneSource *src, const char *scene_name,
                     const char *out_name, Error *err)
 {
     static const char *const kinds[] = {"MATTE", "PLASTIC", "METALLIC", "DIELECTRIC"};
-    static const char *const words[SHAPE_KINDS] = {"Sphere", "Plane",    "Triangle", "Cube",
-                                                   "Square", "Cylinder", "Cone"};
     int k = scene->length_exponent;
-    SceneWalk w;
-    ShapeKind kind;
     size_t i;
 
     fputs("# An MPL-format scene (the MPL ray tracer's), written by raytrace --save.\n", fp);
@@ -307,15 +332,7 @@ static int save_mpl(FILE *fp, const Scene *scene, const SceneSource *src, const 
         save_numbers(fp, v, l->distant || l->range == 0 ? 1 : 2);
         fputc('\n', fp);
     }
-    scene_walk_start(&w);
-    while (scene_walk_next(scene, &w, &kind, &i)) {
-        double v[SHAPES_NUMBERS_MAX];
-        int n = shapes_numbers(scene, kind, i, v);
-        fprintf(fp, "p %s", words[kind]);
-        save_numbers(fp, v, n);
-        fprintf(fp, " %s\n", save_name(scene, kind, i));
-    }
-    return 0;
+    return save_mpl_shapes(fp, scene, scene_name, err);
 }
 
 int save_scene(FILE *fp, const Scene *scene, const SceneSource *source, const char *scene_name,
