@@ -7,6 +7,7 @@
 #include "geometry/cone.h"
 #include "geometry/cube.h"
 #include "geometry/cylinder.h"
+#include "geometry/disk.h"
 #include "geometry/plane.h"
 #include "geometry/ray.h"
 #include "geometry/square.h"
@@ -51,15 +52,25 @@ static int triangle_hit(const void *tri, const Ray *r)
     return triangle_intersect(tri, r, 0, INFINITY, &t);
 }
 
-/* One of the four shapes, made at a scale and a place, for the re-hit
+/* One of the five shapes, made at a scale and a place, for the re-hit
  * test. */
 typedef struct {
-    int kind; /* 0 cube, 1 square, 2 cylinder, 3 cone */
+    int kind; /* 0 cube, 1 square, 2 cylinder, 3 cone, 4 disk */
     Cube cube;
     Square square;
     Cylinder cylinder;
     Cone cone;
+    Disk disk;
 } Solid;
+
+enum { SOLID_KINDS = 5 };
+
+/* Says whether solid kind k is flat (a square, a disk): a ray through
+ * it from either side crosses nothing more. */
+static int solid_flat(int k)
+{
+    return k == 1 || k == 4;
+}
 
 static int solid_hit(const Solid *s, const Ray *r, real *t)
 {
@@ -70,8 +81,10 @@ static int solid_hit(const Solid *s, const Ray *r, real *t)
         return square_intersect(&s->square, r, 0, INFINITY, t);
     case 2:
         return cylinder_intersect(&s->cylinder, r, 0, INFINITY, t);
-    default:
+    case 3:
         return cone_intersect(&s->cone, r, 0, INFINITY, t);
+    default:
+        return disk_intersect(&s->disk, r, 0, INFINITY, t);
     }
 }
 
@@ -86,8 +99,10 @@ static SurfacePoint solid_surface(const Solid *s, const Ray *r, real t)
         return square_surface_at(&s->square, p);
     case 2:
         return cylinder_surface_at(&s->cylinder, p);
-    default:
+    case 3:
         return cone_surface_at(&s->cone, p);
+    default:
+        return disk_surface(&s->disk, r, t);
     }
 }
 
@@ -147,12 +162,12 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
     /* As for spheres (test_sphere.c): hit a shape at a random scale and
      * place from outside or inside, spawn rays from the hit as shading
      * does, at cosines down to 10^-12, and check that none meets the
-     * surface again at the scale of the offset. The four shapes are
+     * surface again at the scale of the offset. The five shapes are
      * convex (or flat), so a ray leaving a surface on the side it came
      * from outside crosses nothing. */
-    int tested[4] = {0}, rehits = 0, close = 0;
+    int tested[SOLID_KINDS] = {0}, rehits = 0, close = 0;
 
-    for (int i = 0; i < 8000; i++) {
+    for (int i = 0; i < 10000; i++) {
         double r = rng_log_scale(-6, 8);
         Vec3 c = vec3_scale(rng_unit_vector(), rng_log_scale(-6, 8));
         Vec3 from, aim;
@@ -163,7 +178,7 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         Vec3 n;
         int inside = i % 8 == 4;
 
-        s.kind = i % 4;
+        s.kind = i % SOLID_KINDS;
         switch (s.kind) {
         case 0:
             cube_make(&s.cube, c, r, solid_plain());
@@ -174,8 +189,11 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         case 2:
             s.cylinder = (Cylinder){c, r, solid_plain(), 0};
             break;
-        default:
+        case 3:
             cone_make(&s.cone, c, r, r * rng_range(0.3, 3) * (i % 8 < 4 ? 1 : -1), solid_plain());
+            break;
+        default:
+            CHECK_INT(0, disk_make(&s.disk, c, rng_unit_vector(), r, solid_plain()));
             break;
         }
         aim = vec3_add(c, vec3_scale(rng_unit_vector(), 0.6 * r * rng_uniform()));
@@ -192,7 +210,7 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         n = ray_facing_normal(sp.normal, ray.dir);
         /* Where the ray really came from: the cylinder and cone are
          * infinite, so an origin picked outside may be inside. */
-        inside = s.kind != 1 && vec3_dot(ray.dir, sp.normal) > 0;
+        inside = !solid_flat(s.kind) && vec3_dot(ray.dir, sp.normal) > 0;
         for (int j = 0; j < 8; j++) {
             double cosine = j < 4 ? pow(10, -4.0 * j) : fmax(rng_uniform(), 1e-12);
             Vec3 w = rng_direction_at_cosine(n, cosine);
@@ -204,15 +222,15 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
             if (solid_hit(&s, &away, &t) && (!inside || (cosine > 1e-3 && t < 1e-9 * r)))
                 inside ? close++ : rehits++;
             /* Through the surface: from inside nothing is crossed; from
-             * outside a far wall (or, for a square, nothing), a chord away
+             * outside a far wall (or, for a square or a disk, nothing), a chord away
              * (near an edge of a cube a short one: only rays at cosines
              * above 10^-3 are held to it). */
             if (solid_hit(&s, &into, &t) &&
-                (inside || s.kind == 1 || (cosine > 1e-3 && t < 1e-9 * r)))
-                inside || s.kind == 1 ? rehits++ : close++;
+                (inside || solid_flat(s.kind) || (cosine > 1e-3 && t < 1e-9 * r)))
+                inside || solid_flat(s.kind) ? rehits++ : close++;
         }
     }
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < SOLID_KINDS; k++)
         CHECK(tested[k] > 1000);
     CHECK_INT(0, rehits);
     CHECK_INT(0, close);

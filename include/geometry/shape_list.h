@@ -31,6 +31,7 @@
 #include "geometry/cone.h"
 #include "geometry/cube.h"
 #include "geometry/cylinder.h"
+#include "geometry/disk.h"
 #include "geometry/plane.h"
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
@@ -44,7 +45,8 @@
     X(CUBE, Cube, cube, 1, 1, 0, 0)                                                            \
     X(SQUARE, Square, square, 1, 1, 0, 0)                                                      \
     X(CYLINDER, Cylinder, cylinder, 0, 1, 0, 0)                                                \
-    X(CONE, Cone, cone, 0, 1, 0, 0)
+    X(CONE, Cone, cone, 0, 1, 0, 0)                                                            \
+    X(DISK, Disk, disk, 1, 1, 0, 0)
 
 #define SHAPE_ENUM(K, ...) SHAPE_##K,
 typedef enum { SHAPE_LIST(SHAPE_ENUM) SHAPE_KINDS } ShapeKind;
