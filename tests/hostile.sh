@@ -118,7 +118,7 @@ e=$(printf '\303\250')
 printf '%s\nbogus\n' "$H" >"$T/$bad.txt"
 printf '%s\nsph%sre: 1\n' "$H" "$e" >"$T/$fr.txt"
 check "a French scene name and record" 1 \
-    "raytrace: $T/$fr.txt:8:1: error: unknown record 'sph${e}re:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', 'cylinder:', 'cone:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:')" \
+    "raytrace: $T/$fr.txt:8:1: error: unknown record 'sph${e}re:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', 'cylinder:', 'cone:', 'disk:', 'torus:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:')" \
     "$T/o/out.ppm" "$T/$fr.txt" "$T/o/out.ppm"
 "$RT" -q "$T/$bad.txt" "$T/o/out.ppm" 2>"$T/err"
 grep -qF 'sc\xE8ne-\x01x.txt' "$T/err" && pass ||

@@ -554,9 +554,21 @@ static const BadScene parse_bad_scenes[] = {
      "unknown record 'SPHERE:': keywords are lower case ('sphere:')"},
     {HEADER "sphere 0 0 5 1 200 100 50 0.25\n", 8, 1,
      "expected 'sphere:' with its colon attached, found 'sphere'"},
-    {HEADER "  torus: 0 0 0\n", 8, 3,
-     "unknown record 'torus:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', "
-     "'cylinder:', 'cone:', 'mesh:', 'light:', 'ambient:', 'samples:', 'lens:' or 'texture:')"},
+    {HEADER "  donut: 0 0 0\n", 8, 3,
+     "unknown record 'donut:' (expected 'sphere:', 'plane:', 'triangle:', 'cube:', 'square:', "
+     "'cylinder:', 'cone:', 'disk:', 'torus:', 'mesh:', 'light:', 'ambient:', 'samples:', "
+     "'lens:' or 'texture:')"},
+    {HEADER "torus: 0 0 0 0 1 0 1 1 200 100 50 0\n", 8, 22,
+     "the torus's tube radius must be less than its major radius (a ring torus: its hole "
+     "open)"},
+    {HEADER "torus: 0 0 0 0 0 0 2 1 200 100 50 0\n", 8, 14,
+     "the torus's axis is the zero vector: it must give a direction"},
+    {HEADER "Torus: 0 0 0 0 1 0 2 1 200 100 50 0\n", 8, 1,
+     "unknown record 'Torus:': keywords are lower case ('torus:')"},
+    {HEADER "disk: 0 0 0 0 1 0 -1 200 100 50 0\n", 8, 19,
+     "the disk's radius must be greater than 0, found '-1'"},
+    {HEADER "disk 0 0 0 0 1 0 1 200 100 50 0\n", 8, 1,
+     "expected 'disk:' with its colon attached, found 'disk'"},
     {HEADER "  cube: 0 0 0\n", 8, 14,
      "expected 8 or 10 numbers for the cube (cx cy cz half-edge r g b reflection "
      "[transparency index]), found 3"},

@@ -13,6 +13,7 @@
 #include "scenefile/keyword.h"
 #include "scenefile/load.h"
 #include "scenefile/save.h"
+#include "scenefile/shapes.h"
 #include "shading.h"
 #include "test.h"
 
@@ -359,9 +360,15 @@ static const BadKeyword keyword_bad[] = {
     {CAM "ambient 1 1 1\nambient 1 1 1", 3, 1, "the ambient light is already set, on line 2"},
     {CAM "background 1 1", 2, 15,
      "expected 3 numbers for the background (r g b), found 2"},
-    {CAM "torus 1 2 3", 2, 1,
-     "unknown element 'torus' (expected 'camera', 'material', 'sphere', 'plane', 'triangle', "
-     "'cube', 'square', 'cylinder', 'cone', 'mesh', 'light', 'ambient' or 'background')"},
+    {CAM "donut 1 2 3", 2, 1,
+     "unknown element 'donut' (expected 'camera', 'material', 'sphere', 'plane', 'triangle', "
+     "'cube', 'square', 'cylinder', 'cone', 'disk', 'torus', 'mesh', 'light', 'ambient' or "
+     "'background')"},
+    {CAM "torus 1 2 3 0 1 0", 2, 18,
+     "expected the name of a material after the numbers of the torus (cx cy cz nx ny nz R r "
+     "material), found the end of the line"},
+    {CAM "Disk 1 2 3 0 1 0 1 m", 2, 1,
+     "unknown element 'Disk': keywords are lower case ('disk')"},
     {CAM "cube 1 2 3", 2, 11,
      "expected the name of a material after the numbers of the cube (cx cy cz half-edge material), "
      "found the end of the line"},
@@ -589,6 +596,16 @@ static int same_scene(const Scene *a, const Scene *b)
                SAME(p->height, q->height) && SAME(p->k, q->k) &&
                same_material(&p->material, &q->material) && p->order == q->order;
     }
+    /* Every kind (the others: a disk, a torus) by its record's numbers. */
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        for (size_t i = 0; same && i < scene_count_of(a, (ShapeKind)k); i++) {
+            double u[SHAPE_NUMBERS_MAX], v[SHAPE_NUMBERS_MAX];
+            Material ma = scene_material(a, (ShapeKind)k, i), mb = scene_material(b, (ShapeKind)k, i);
+            int n = shapes_numbers(a, (ShapeKind)k, i, u);
+            same = n == shapes_numbers(b, (ShapeKind)k, i, v) &&
+                   memcmp(u, v, (size_t)n * sizeof *u) == 0 && same_material(&ma, &mb) &&
+                   scene_order_of(a, (ShapeKind)k, i) == scene_order_of(b, (ShapeKind)k, i);
+        }
     return same;
 }
 
@@ -616,12 +633,15 @@ static void keyword_saved_scene_reads_back_the_same(void)
         "square 1 2 3 -0 1e-3 -1 0.99999999999999989 b\n"
         "cylinder 1e14 -2 3 7e-5 c\n"
         "cone 0.5 -0.5 1.5 0.1 -2.0000000000000004 d\n"
+        "disk 1 2 3 0.1 -0.30000000000000004 1e-9 0.99999999999999989 a\n"
+        "torus -1e7 0.1 3 1 1 -0 2.0000000000000004 0.30000000000000004 b\n"
         "cube -1 -2 -3 4 a\n"),
         /* A tiny scene, enlarged on reading: saved at its own scale. */
         ("camera 0 0 0 0 0 5e-30 1 8 8\nmaterial m 1 1 1 1 1 1 1\n"
          "sphere 1e-31 0 5e-30 1e-30 m\nplane 0 -3e-30 0 0 1 0 m\nlight 0 -1 1 1 1 1 1\n"
          "cube 1e-31 0 5e-30 2e-31 m\nsquare 0 0 6e-30 0 0 -1 1e-30 m\n"
-         "cylinder 1e-30 0 5e-30 1e-31 m\ncone 0 -1e-30 5e-30 1e-31 3e-31 m\n"),
+         "cylinder 1e-30 0 5e-30 1e-31 m\ncone 0 -1e-30 5e-30 1e-31 3e-31 m\n"
+         "disk 0 0 7e-30 0 0 1 1e-30 m\ntorus 0 1e-30 6e-30 0 1 0 2e-30 5e-31 m\n"),
     };
 
     for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {

@@ -36,6 +36,7 @@
 #include "geometry/shape.h"
 #include "geometry/sphere.h"
 #include "geometry/square.h"
+#include "geometry/torus.h"
 #include "geometry/triangle.h"
 
 #define SHAPE_LIST(X)                                                                          \
@@ -46,7 +47,8 @@
     X(SQUARE, Square, square, 1, 1, 0, 0)                                                      \
     X(CYLINDER, Cylinder, cylinder, 0, 1, 0, 0)                                                \
     X(CONE, Cone, cone, 0, 1, 0, 0)                                                            \
-    X(DISK, Disk, disk, 1, 1, 0, 0)
+    X(DISK, Disk, disk, 1, 1, 0, 0)                                                            \
+    X(TORUS, Torus, torus, 1, 1, 0, 0)
 
 #define SHAPE_ENUM(K, ...) SHAPE_##K,
 typedef enum { SHAPE_LIST(SHAPE_ENUM) SHAPE_KINDS } ShapeKind;
