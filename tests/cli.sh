@@ -391,7 +391,7 @@ expect_exit "keyword scene on standard input" 0 sh -c "\"$RT\" - \"$T/stdin-kw.p
     fail "a keyword scene reads the same from standard input"
 # --save: the saved scene renders the same bytes, and saves to the same text.
 mkdir "$T/elsewhere"
-for s in ocaml-test keyword materials; do
+for s in ocaml-test keyword materials rings; do
     expect_exit "--save $s" 0 "$RT" --save "$T/elsewhere/$s.txt" "scenes/$s.txt"
     expect_exit "--save $s again" 0 "$RT" --save "$T/elsewhere/$s-2.txt" "$T/elsewhere/$s.txt"
     cmp -s "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt" && pass || fail "--save $s is not stable" "$(diff "$T/elsewhere/$s.txt" "$T/elsewhere/$s-2.txt")"
