@@ -54,8 +54,9 @@ CFLAGS ?= -O3
 # accel, scene, render) and to raytrace's link alone. Those objects keep
 # their plain code too (fat objects, GCC's), which the tests and the other
 # tools link as they are: a fresh make test builds in half the time. The
-# same bytes either way.
-LTO_TRY = printf 'int main(void){return 0;}\n' | $(CC) $(1) -x c - -o /dev/null >/dev/null 2>&1
+# same bytes either way. The probe fails where a flag is only warned of
+# (clang ignores -ffat-lto-objects): such a compiler builds without LTO.
+LTO_TRY = printf 'int main(void){return 0;}\n' | $(CC) -Werror $(1) -x c - -o /dev/null >/dev/null 2>&1
 LTO ?= $(shell $(call LTO_TRY,-flto=auto -ffat-lto-objects) && echo -flto=auto -ffat-lto-objects)
 
 BUILD ?= build

@@ -112,6 +112,7 @@ int mesh_file_cut(MeshFile *m)
     }
     if (m->polygon_count == 0)
         return 0;
+    (void)corners_all; /* without OpenMP: one thread whatever the size */
 #ifdef _OPENMP
 #pragma omp parallel if (corners_all >= MESH_FILE_PARALLEL_MIN) reduction(+ : cut, irregular) \
     reduction(| : failed)

@@ -19,7 +19,8 @@
 
 /* A triangle's material before the reading ends: a slot among the names
  * its part of the file gave (ObjNames), or one of these. */
-enum { OBJ_DEFAULT = UINT32_MAX, OBJ_INHERIT = UINT32_MAX - 1 };
+#define OBJ_DEFAULT UINT32_MAX
+#define OBJ_INHERIT (UINT32_MAX - 1)
 
 /* The material names a part of the file gives with usemtl, in the order of
  * their first line there, and the libraries its mtllib lines name. */

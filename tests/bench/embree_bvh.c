@@ -96,6 +96,16 @@ static void eb_occluded(const struct RTCOccludedFunctionNArguments *args)
         ((struct RTCRay *)args->ray)->tfar = -INFINITY;
 }
 
+/* Returns how many shapes, of every kind, shapes holds. */
+static size_t bvh_shapes_count(const BvhShapes *shapes)
+{
+    size_t n = 0;
+
+    for (int k = 0; k < SHAPE_KINDS; k++)
+        n += shapes->count[k];
+    return n;
+}
+
 int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
 {
     char config[64];
@@ -106,7 +116,7 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
      * they are (bvh.h allows it: the answers are the same). */
     memset(bvh, 0, sizeof *bvh);
     bvh->shapes = *shapes;
-    if (shapes->triangle_count > 0) {
+    if (shapes->count[SHAPE_SPHERE] != bvh_shapes_count(shapes)) {
         fprintf(stderr, "embree_bvh: spheres only\n");
         exit(2);
     }
@@ -119,8 +129,8 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     eb_scene = rtcNewScene(eb_device);
     rtcSetSceneBuildQuality(eb_scene, RTC_BUILD_QUALITY_HIGH);
     g = rtcNewGeometry(eb_device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(g, (unsigned)shapes->sphere_count);
-    rtcSetGeometryUserData(g, (void *)shapes->spheres);
+    rtcSetGeometryUserPrimitiveCount(g, (unsigned)shapes->count[SHAPE_SPHERE]);
+    rtcSetGeometryUserData(g, (void *)shapes->items[SHAPE_SPHERE]);
     rtcSetGeometryBoundsFunction(g, eb_bounds, NULL);
     rtcSetGeometryIntersectFunction(g, eb_intersect);
     rtcSetGeometryOccludedFunction(g, eb_occluded);
@@ -128,7 +138,7 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
     rtcAttachGeometry(eb_scene, g);
     rtcReleaseGeometry(g);
     rtcCommitScene(eb_scene);
-    bvh->prim_count = shapes->sphere_count;
+    bvh->prim_count = shapes->count[SHAPE_SPHERE];
     return 0;
 }
 
@@ -166,7 +176,7 @@ static struct RTCRayHit eb_start(EbQuery *q, const Bvh *bvh, const Ray *ray, rea
     struct RTCRayHit rh;
 
     rtcInitIntersectContext(&q->context);
-    q->spheres = bvh->shapes.spheres;
+    q->spheres = bvh->shapes.items[SHAPE_SPHERE];
     q->ray = ray;
     q->bound = tmax;
     q->found = 0;
@@ -196,7 +206,7 @@ int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
     if (q.found) {
         hit->t = q.t;
         hit->prim = q.prim;
-        hit->order = bvh->shapes.spheres[q.prim].order;
+        hit->order = ((const Sphere *)bvh->shapes.items[SHAPE_SPHERE])[q.prim].order;
     }
     return q.found;
 }
