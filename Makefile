@@ -57,7 +57,9 @@ CFLAGS ?= -O3
 # same bytes either way. The probe fails where a flag is only warned of
 # (clang ignores -ffat-lto-objects): such a compiler builds without LTO.
 LTO_TRY = printf 'int main(void){return 0;}\n' | $(CC) -Werror $(1) -x c - -o /dev/null >/dev/null 2>&1
-LTO ?= $(shell $(call LTO_TRY,-flto=auto -ffat-lto-objects) && echo -flto=auto -ffat-lto-objects)
+ifeq ($(origin LTO),undefined)
+LTO := $(shell $(call LTO_TRY,-flto=auto -ffat-lto-objects) && echo -flto=auto -ffat-lto-objects)
+endif
 
 BUILD ?= build
 

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "image/decode.h"
 #include "image/image.h"
 #include "image/ppm.h"
 #include "test.h"
@@ -95,7 +96,7 @@ static void ppm_reader_round_trip_and_p3(void)
 {
     static const char p3[] = "P3\n# a comment\n2 1\n# another\n65535\n0 1 2  65535 300 7\n";
     Image img;
-    PpmImage in;
+    Decoded in;
     Error err;
     FILE *f;
     const char *path;
@@ -106,7 +107,7 @@ static void ppm_reader_round_trip_and_p3(void)
     f = fopen(path, "wb");
     CHECK_INT(0, ppm_write(f, img.width, img.height, img.rgb, NULL));
     fclose(f);
-    CHECK_INT(0, ppm_read(path, &in, &err));
+    CHECK_INT(0, decoded_read(path, 0, &in, &err));
     CHECK_INT(6, in.width);
     CHECK_INT(5, in.height);
     CHECK_INT(255, in.maxval);
@@ -114,18 +115,18 @@ static void ppm_reader_round_trip_and_p3(void)
         if (in.samples[k] != img.rgb[k])
             test_fail(__FILE__, __LINE__, "sample %d: expected %d, got %d", k, img.rgb[k],
                       in.samples[k]);
-    ppm_free(&in);
+    decoded_free(&in);
     remove(path);
     image_free(&img);
 
     path = ppm_temp_file(p3, sizeof p3 - 1);
-    CHECK_INT(0, ppm_read(path, &in, &err));
+    CHECK_INT(0, decoded_read(path, 0, &in, &err));
     CHECK_INT(2, in.width);
     CHECK_INT(1, in.height);
     CHECK_INT(65535, in.maxval);
     CHECK_INT(65535, in.samples[3]);
     CHECK_INT(7, in.samples[5]);
-    ppm_free(&in);
+    decoded_free(&in);
     remove(path);
 }
 
@@ -146,10 +147,10 @@ static void ppm_reader_rejects_bad_files(void)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         const char *path = ppm_temp_file(bad[i].data, strlen(bad[i].data) + (i == 0));
-        PpmImage in;
+        Decoded in;
         Error err;
 
-        CHECK_INT(-1, ppm_read(path, &in, &err));
+        CHECK_INT(-1, decoded_read(path, 0, &in, &err));
         CHECK_CONTAINS(err.message, bad[i].message);
         CHECK_INT(bad[i].line, err.line);
         CHECK(in.samples == NULL);

@@ -41,12 +41,10 @@ typedef struct {
                            byte N: ...", and how many more), or "" */
 } JpegImage;
 
-/* Reads the JPEG file at path into *img, its buffers taking at most
- * max_bytes (0: no limit); returns 0, or -1 with *err saying what is wrong
- * and where. Free with jpeg_free(). */
-int jpeg_read(const char *path, size_t max_bytes, JpegImage *img, Error *err);
-
-/* jpeg_read() on the len bytes at data, errors naming name. */
+/* Decodes the JPEG file in the len bytes at data (errors naming name)
+ * into *img, its buffers taking at most max_bytes (0: no limit); returns
+ * 0, or -1 with *err saying what is wrong and where. Free with
+ * jpeg_free(). */
 int jpeg_parse(const char *name, const unsigned char *data, size_t len, size_t max_bytes,
                JpegImage *img, Error *err);
 

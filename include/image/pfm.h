@@ -28,11 +28,9 @@ typedef struct {
     float *rgb;        /* 3 * width * height floats, rows top to bottom, owned */
 } PfmImage;
 
-/* Reads the PFM file at path into *img; returns 0, or -1 with *err saying
- * what is wrong. Free with pfm_free(). */
-int pfm_read(const char *path, PfmImage *img, Error *err);
-
-/* pfm_read() on the len bytes at data, errors naming name. */
+/* Decodes the PFM file in the len bytes at data (errors naming name)
+ * into *img; returns 0, or -1 with *err saying what is wrong. Free with
+ * pfm_free(). */
 int pfm_parse(const char *name, const char *data, size_t len, PfmImage *img, Error *err);
 
 /* Releases img's pixels. */

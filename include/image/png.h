@@ -30,11 +30,9 @@ typedef struct {
     unsigned char *rgb; /* 3 * width * height bytes, owned */
 } PngImage;
 
-/* Reads the PNG file at path into *img; returns 0, or -1 with *err saying
- * what is wrong and at which byte. Free with png_free(). */
-int png_read(const char *path, PngImage *img, Error *err);
-
-/* png_read() on the len bytes at data, errors naming name. */
+/* Decodes the PNG file in the len bytes at data (errors naming name) into
+ * *img; returns 0, or -1 with *err saying what is wrong and at which byte.
+ * Free with png_free(). */
 int png_parse(const char *name, const unsigned char *data, size_t len, PngImage *img,
               Error *err);
 

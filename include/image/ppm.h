@@ -33,11 +33,9 @@ typedef struct {
                                 bottom, interleaved R, G, B; owned */
 } PpmImage;
 
-/* Reads a P6 or P3 file into *img; returns 0, or -1 with *err describing
- * what is wrong and where. Free the result with ppm_free(). */
-int ppm_read(const char *path, PpmImage *img, Error *err);
-
-/* ppm_read() on the len bytes at data, errors naming name. */
+/* Decodes the P6 or P3 file in the len bytes at data (errors naming
+ * name) into *img; returns 0, or -1 with *err describing what is wrong and
+ * where. Free the result with ppm_free(). */
 int ppm_parse(const char *name, const char *data, size_t len, PpmImage *img, Error *err);
 
 /* Releases the samples of *img. */

@@ -19,9 +19,8 @@
 #include "base/outfile.h"
 #include "base/process.h"
 #include "cli/args.h"
-#include "image/compare.h"
 #include "image/image.h"
-#include "image/pfm.h"
+#include "image/decode.h"
 #include "image/tile.h"
 #include "image/writer.h"
 
@@ -67,21 +66,14 @@ typedef struct {
     Image img;             /* the picture */
 } Merge;
 
-/* Copies the rows of t, a PFM tile (the len bytes at data, freed here),
- * into m's linear colours, exactly; returns 0, or -1 with *err. */
-static int merge_linear(Merge *m, const char *path, char *data, size_t len, const Tile *t,
-                        Error *err)
+/* Copies the rows of t, a PFM tile decoded in *pfm (freed here), into m's
+ * linear colours, exactly; returns 0, or -1 with *err. */
+static int merge_linear(Merge *m, const char *path, Decoded *pfm, const Tile *t, Error *err)
 {
-    PfmImage pfm;
-    int rc = pfm_parse(path, data, len, &pfm, err);
-
-    free(data);
-    if (rc != 0)
-        return -1;
-    if (pfm.width != t->width || pfm.height != t->count) {
-        error_set(err, path, "holds %d x %d pixels, where its record says %d x %d", pfm.width,
-                  pfm.height, t->width, t->count);
-        pfm_free(&pfm);
+    if (pfm->width != t->width || pfm->height != t->count) {
+        error_set(err, path, "holds %d x %d pixels, where its record says %d x %d", pfm->width,
+                  pfm->height, t->width, t->count);
+        decoded_free(pfm);
         return -1;
     }
     m->by_k[t->k - 1] = path;
@@ -89,9 +81,32 @@ static int merge_linear(Merge *m, const char *path, char *data, size_t len, cons
         int y = t->first + i * t->step;
         size_t row = 3 * (size_t)t->width;
         m->owner[y] = path;
-        memcpy(m->img.linear + (size_t)y * row, pfm.rgb + (size_t)i * row, row * sizeof(float));
+        memcpy(m->img.linear + (size_t)y * row, pfm->linear + (size_t)i * row, row * sizeof(float));
     }
-    pfm_free(&pfm);
+    decoded_free(pfm);
+    return 0;
+}
+
+/* Copies the rows of t, an 8-bit tile (PPM or PNG) decoded in *img (freed
+ * here), into m's picture; returns 0, or -1 with *err. */
+static int merge_rows(Merge *m, const char *path, Decoded *img, const Tile *t, Error *err)
+{
+    if (img->width != t->width || img->height != t->count) {
+        error_set(err, path, "holds %d x %d pixels, where its record says %d x %d", img->width,
+                  img->height, t->width, t->count);
+        decoded_free(img);
+        return -1;
+    }
+    m->by_k[t->k - 1] = path;
+    for (int i = 0; i < t->count; i++) {
+        int y = t->first + i * t->step;
+        const unsigned short *src = img->samples + 3 * (size_t)i * (size_t)t->width;
+        unsigned char *dst = m->img.rgb + 3 * (size_t)y * (size_t)t->width;
+        m->owner[y] = path;
+        for (size_t c = 0; c < 3 * (size_t)t->width; c++)
+            dst[c] = (unsigned char)(int)(src[c] * 255.0 / img->maxval + 0.5);
+    }
+    decoded_free(img);
     return 0;
 }
 
@@ -101,8 +116,8 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
     char *data;
     size_t len;
     Tile t;
-    Picture pic;
-    int found, linear;
+    Decoded d;
+    int found, linear, rc;
 
     if (file_read_all(path, &data, &len, err) != 0)
         return -1;
@@ -113,7 +128,7 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
             error_set(err, path, "not a tile of raytrace --tile: it has no tile record");
         return -1;
     }
-    linear = len >= 2 && data[0] == 'P' && (data[1] == 'F' || data[1] == 'f');
+    linear = decoded_is_linear(data, len);
     if (index == 0) {
         m->first = t;
         m->first_path = path;
@@ -160,30 +175,11 @@ static int merge_tile(Merge *m, const char *path, int index, Error *err)
                       t.first + i * t.step);
             return -1;
         }
-    if (linear)
-        return merge_linear(m, path, data, len, &t, err);
-    if (picture_parse(path, data, len, &pic, err) != 0) {
-        free(data);
-        return -1;
-    }
+    rc = decoded_parse(path, data, len, 0, &d, err);
     free(data);
-    if (pic.width != t.width || pic.height != t.count) {
-        error_set(err, path, "holds %d x %d pixels, where its record says %d x %d", pic.width,
-                  pic.height, t.width, t.count);
-        picture_free(&pic);
+    if (rc != 0)
         return -1;
-    }
-    m->by_k[t.k - 1] = path;
-    for (int i = 0; i < t.count; i++) {
-        int y = t.first + i * t.step;
-        const double *src = pic.rgb + 3 * (size_t)i * (size_t)t.width;
-        unsigned char *dst = m->img.rgb + 3 * (size_t)y * (size_t)t.width;
-        m->owner[y] = path;
-        for (size_t c = 0; c < 3 * (size_t)t.width; c++)
-            dst[c] = (unsigned char)(src[c] < 0 ? 0 : src[c] > 255 ? 255 : (int)(src[c] + 0.5));
-    }
-    picture_free(&pic);
-    return 0;
+    return linear ? merge_linear(m, path, &d, &t, err) : merge_rows(m, path, &d, &t, err);
 }
 
 /* Says which tiles are missing, in err; returns -1, or 0 when none is. */

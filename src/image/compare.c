@@ -8,11 +8,7 @@
 #include <string.h>
 
 #include "base/file.h"
-#include "image/bmp.h"
-#include "image/jpeg.h"
-#include "image/pfm.h"
-#include "image/png.h"
-#include "image/ppm.h"
+#include "image/decode.h"
 
 void picture_clamp(Picture *pic)
 {
@@ -90,74 +86,19 @@ int picture_load(const char *path, Picture *pic, Error *err)
 
 int picture_parse(const char *name, const char *data, size_t len, Picture *pic, Error *err)
 {
-    const unsigned char *head = (const unsigned char *)data;
+    Decoded d;
+    size_t count;
 
     memset(pic, 0, sizeof *pic);
-    if (len >= 2 && head[0] == 'P' && (head[1] == '3' || head[1] == '6')) {
-        PpmImage ppm;
-        if (ppm_parse(name, data, len, &ppm, err) != 0)
-            return -1;
-        if (picture_alloc(pic, ppm.width, ppm.height, name, err) == 0) {
-            size_t count = 3 * (size_t)ppm.width * (size_t)ppm.height;
-            for (size_t k = 0; k < count; k++)
-                pic->rgb[k] = ppm.samples[k] * 255.0 / ppm.maxval;
-            snprintf(pic->format, sizeof pic->format, "PPM P%c, maxval %d", head[1],
-                     ppm.maxval);
-        }
-        ppm_free(&ppm);
-    } else if (len >= 2 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f')) {
-        PfmImage pfm;
-        if (pfm_parse(name, data, len, &pfm, err) != 0)
-            return -1;
-        if (picture_alloc(pic, pfm.width, pfm.height, name, err) == 0) {
-            size_t count = 3 * (size_t)pfm.width * (size_t)pfm.height;
-            for (size_t k = 0; k < count; k++)
-                pic->rgb[k] = pfm.rgb[k] * 255.0;
-            snprintf(pic->format, sizeof pic->format, "PFM, %d channel%s", pfm.channels,
-                     pfm.channels == 1 ? "" : "s");
-        }
-        pfm_free(&pfm);
-    } else if (len >= 8 && head[0] == 0x89 && memcmp(head + 1, "PNG", 3) == 0) {
-        PngImage png;
-        if (png_parse(name, head, len, &png, err) != 0)
-            return -1;
-        if (picture_alloc(pic, png.width, png.height, name, err) == 0) {
-            size_t count = 3 * (size_t)png.width * (size_t)png.height;
-            for (size_t k = 0; k < count; k++)
-                pic->rgb[k] = png.rgb[k];
-            snprintf(pic->format, sizeof pic->format, "PNG, %d channel%s", png.channels,
-                     png.channels == 1 ? "" : "s");
-        }
-        png_free(&png);
-    } else if (jpeg_is(head, len)) {
-        JpegImage jpg;
-        if (jpeg_parse(name, head, len, 0, &jpg, err) != 0)
-            return -1;
-        snprintf(pic->warning, sizeof pic->warning, "%s", jpg.warning);
-        if (picture_alloc(pic, jpg.width, jpg.height, name, err) == 0) {
-            size_t count = 3 * (size_t)jpg.width * (size_t)jpg.height;
-            for (size_t k = 0; k < count; k++)
-                pic->rgb[k] = jpg.rgb[k];
-            snprintf(pic->format, sizeof pic->format, "JPEG, %d component%s", jpg.channels,
-                     jpg.channels == 1 ? "" : "s");
-        }
-        jpeg_free(&jpg);
-    } else if (bmp_is(head, len)) {
-        BmpImage bmp;
-        if (bmp_parse(name, head, len, &bmp, err) != 0)
-            return -1;
-        if (picture_alloc(pic, bmp.width, bmp.height, name, err) == 0) {
-            size_t count = 3 * (size_t)bmp.width * (size_t)bmp.height;
-            for (size_t k = 0; k < count; k++)
-                pic->rgb[k] = bmp.rgb[k];
-            snprintf(pic->format, sizeof pic->format, "BMP, %d bits a pixel", bmp.bits);
-        }
-        bmp_free(&bmp);
-    } else {
-        error_set(err, name,
-                  "not an image raytrace reads: expected PPM (P3, P6), PFM, PNG, JPEG or BMP");
+    if (decoded_parse(name, data, len, 0, &d, err) != 0)
         return -1;
-    }
+    count = 3 * (size_t)d.width * (size_t)d.height;
+    snprintf(pic->format, sizeof pic->format, "%s", d.format);
+    snprintf(pic->warning, sizeof pic->warning, "%s", d.warning);
+    if (picture_alloc(pic, d.width, d.height, name, err) == 0)
+        for (size_t k = 0; k < count; k++)
+            pic->rgb[k] = d.linear ? d.linear[k] * 255.0 : d.samples[k] * 255.0 / d.maxval;
+    decoded_free(&d);
     return pic->rgb ? 0 : -1;
 }
 

@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/file.h"
 #include "jpeg_decode.h"
 
 /* Turns img as Exif orientation o (2 to 8) says, so that it shows upright. */
@@ -110,18 +109,3 @@ done:
     return rc;
 }
 
-int jpeg_read(const char *path, size_t max_bytes, JpegImage *img, Error *err)
-{
-    char *data;
-    size_t len;
-    int rc;
-
-    img->rgb = NULL;
-    img->warning[0] = '\0';
-    if (file_read_all(path, &data, &len, err) != 0)
-        return -1;
-    rc = jpeg_parse(file_display_name(path), (const unsigned char *)data, len, max_bytes, img,
-                    err);
-    free(data);
-    return rc;
-}

@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/file.h"
 
 int pfm_write(FILE *f, int width, int height, const float *rgb, const char *note)
 {
@@ -60,20 +59,6 @@ static int pfm_token(const char **p, const char *end, char *buf, size_t size)
         buf[n++] = *(*p)++;
     buf[n] = '\0';
     return n > 0 && (*p == end || isspace((unsigned char)**p)) ? 0 : -1;
-}
-
-int pfm_read(const char *path, PfmImage *img, Error *err)
-{
-    char *data;
-    size_t n;
-    int rc;
-
-    memset(img, 0, sizeof *img);
-    if (file_read_all(path, &data, &n, err) != 0)
-        return -1;
-    rc = pfm_parse(file_display_name(path), data, n, img, err);
-    free(data);
-    return rc;
 }
 
 int pfm_parse(const char *name, const char *data, size_t n, PfmImage *img, Error *err)

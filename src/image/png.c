@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/file.h"
 
 static const unsigned char png_signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
@@ -285,20 +284,6 @@ static int png_chunks(const char *name, const unsigned char *data, size_t n, Png
         }
         pos += 12 + (size_t)len;
     }
-}
-
-int png_read(const char *path, PngImage *img, Error *err)
-{
-    char *data;
-    size_t n;
-    int rc;
-
-    memset(img, 0, sizeof *img);
-    if (file_read_all(path, &data, &n, err) != 0)
-        return -1;
-    rc = png_parse(file_display_name(path), (const unsigned char *)data, n, img, err);
-    free(data);
-    return rc;
 }
 
 int png_parse(const char *name, const unsigned char *data, size_t n, PngImage *img, Error *err)

@@ -6,7 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/file.h"
 #include "image/image.h"
 
 int ppm_write(FILE *f, int width, int height, const unsigned char *rgb, const char *note)
@@ -157,21 +156,6 @@ static int ppm_read_ascii(PpmCursor *c, PpmImage *img, size_t count)
         img->samples[k] = (unsigned short)v;
     }
     return 0;
-}
-
-int ppm_read(const char *path, PpmImage *img, Error *err)
-{
-    char *data;
-    size_t len;
-    int rc;
-
-    img->samples = NULL;
-    img->width = img->height = img->maxval = 0;
-    if (file_read_all(path, &data, &len, err) != 0)
-        return -1;
-    rc = ppm_parse(file_display_name(path), data, len, img, err);
-    free(data);
-    return rc;
 }
 
 int ppm_parse(const char *name, const char *data, size_t len, PpmImage *img, Error *err)

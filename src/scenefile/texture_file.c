@@ -8,81 +8,12 @@
 
 #include "base/file.h"
 #include "base/path.h"
-#include "image/bmp.h"
-#include "image/jpeg.h"
-#include "image/png.h"
-#include "image/ppm.h"
-
-/* Makes tex's texels the 8-bit RGB image rgb of width x height; returns
- * 0, or -1 with *err set when memory runs out. */
-static int texture_file_bytes(Texture *tex, const char *name, int width, int height,
-                              const unsigned char *rgb, Error *err)
-{
-    size_t n = 3 * (size_t)width * (size_t)height;
-
-    tex->texels = malloc(n * sizeof *tex->texels);
-    if (!tex->texels) {
-        error_set(err, name, "out of memory for a %d x %d texture", width, height);
-        return -1;
-    }
-    for (size_t k = 0; k < n; k++)
-        tex->texels[k] = rgb[k];
-    tex->width = width;
-    tex->height = height;
-    tex->scale = 1;
-    return 0;
-}
-
-/* Decodes the len bytes at data, the file name, into tex by their first
- * bytes: JPEG, PNG, BMP or PPM; JPEG's buffers within max_bytes. */
-static int texture_file_decode(Texture *tex, const char *name, const char *data, size_t len,
-                               size_t max_bytes, Error *err)
-{
-    const unsigned char *head = (const unsigned char *)data;
-    int rc;
-
-    if (jpeg_is(head, len)) {
-        JpegImage jpg;
-        if (jpeg_parse(name, head, len, max_bytes, &jpg, err) != 0)
-            return -1;
-        snprintf(tex->warning, sizeof tex->warning, "%s", jpg.warning);
-        rc = texture_file_bytes(tex, name, jpg.width, jpg.height, jpg.rgb, err);
-        jpeg_free(&jpg);
-        return rc;
-    }
-    if (len >= 8 && head[0] == 0x89 && memcmp(head + 1, "PNG", 3) == 0) {
-        PngImage png;
-        if (png_parse(name, head, len, &png, err) != 0)
-            return -1;
-        rc = texture_file_bytes(tex, name, png.width, png.height, png.rgb, err);
-        png_free(&png);
-        return rc;
-    }
-    if (bmp_is(head, len)) {
-        BmpImage bmp;
-        if (bmp_parse(name, head, len, &bmp, err) != 0)
-            return -1;
-        rc = texture_file_bytes(tex, name, bmp.width, bmp.height, bmp.rgb, err);
-        bmp_free(&bmp);
-        return rc;
-    }
-    {
-        PpmImage im;
-        if (ppm_parse(name, data, len, &im, err) != 0)
-            return -1;
-        tex->width = im.width;
-        tex->height = im.height;
-        tex->texels = im.samples; /* the texture takes them over */
-        tex->scale = 255.0 / im.maxval;
-    }
-    return 0;
-}
+#include "image/decode.h"
 
 int texture_file_load(Texture *tex, const char *path, size_t max_bytes, Error *err)
 {
-    size_t n = strlen(path), len;
-    char *data;
-    int rc;
+    size_t n = strlen(path);
+    Decoded d;
 
     memset(tex, 0, sizeof *tex);
     tex->path = malloc(n + 1);
@@ -91,15 +22,24 @@ int texture_file_load(Texture *tex, const char *path, size_t max_bytes, Error *e
         return -1;
     }
     memcpy(tex->path, path, n + 1);
-    if (file_read_all(path, &data, &len, err) != 0) {
+    if (decoded_read(path, max_bytes, &d, err) != 0) {
         texture_free(tex);
         return -1;
     }
-    rc = texture_file_decode(tex, file_display_name(path), data, len, max_bytes, err);
-    free(data);
-    if (rc != 0)
+    if (d.linear) {
+        error_set(err, file_display_name(path),
+                  "a PFM image holds linear colours, which a texture does not take: save it "
+                  "as PPM, PNG, JPEG or BMP");
+        decoded_free(&d);
         texture_free(tex);
-    return rc;
+        return -1;
+    }
+    snprintf(tex->warning, sizeof tex->warning, "%s", d.warning);
+    tex->width = d.width;
+    tex->height = d.height;
+    tex->texels = d.samples; /* the texture takes them over */
+    tex->scale = 255.0 / d.maxval;
+    return 0;
 }
 
 int texture_file_add(Scene *scene, const char *path, Error *err)
