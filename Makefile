@@ -34,9 +34,9 @@
 #                   (needs pandoc, xelatex, rsvg-convert and Graphviz's dot)
 # CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are yours: the flags the build needs
 # are kept apart in RT_* variables, so `make CFLAGS=-O0` cannot drop them.
-# The default -O3 is 8% faster than -O2 on the sphere field (same bytes);
-# it leaves out debugging information, which `make CFLAGS="-O3 -g"` adds
-# (a fresh build takes a fifth longer with it).
+# The default -O3 is faster than -O2 on the sphere field (same bytes;
+# docs/log.md); it leaves out debugging information, which
+# `make CFLAGS="-O3 -g"` adds (a fresh build takes longer with it).
 
 CC ?= cc
 # Make's own default, cc, is not on every system (MSYS2's MinGW shells
@@ -48,8 +48,8 @@ endif
 CFLAGS ?= -O3
 # Link-time optimisation of the hot path, when $(CC) can do it: a ray runs
 # through several modules (render/trace.c, shade.c, visibility.c, the
-# shapes' tests), which LTO inlines into one another (docs/log.md: without
-# it glass.txt takes 9% longer). LTO holds the flags, empty for none; they
+# shapes' tests), which LTO inlines into one another (docs/log.md measures
+# glass.txt without it). LTO holds the flags, empty for none; they
 # apply to the objects of the layers a ray runs through (math, geometry,
 # accel, scene, render) and to raytrace's link alone. Those objects keep
 # their plain code too (fat objects, GCC's), which the tests and the other

@@ -200,20 +200,18 @@ typedef struct {
  * earliest-listed on an exact tie); returns 1 with *hit set, or 0. */
 int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit);
 
-/* Returns 1 when some shape crosses the ray at 0 < t < tmax
- * (tmax = 1: the segment from ray->origin to ray->origin + ray->dir), else 0. */
-int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax);
-
 /* No slot: what a shadow cache holds before any ray was occluded. */
 #define BVH_NO_SLOT UINT32_MAX
 
-/* bvh_occluded(), which also stores in *slot, when it returns 1, the slot
- * (the place among the hierarchy's primitives) of a primitive that crosses
- * the ray, for bvh_slot_occludes(). */
+/* Returns 1 when some shape crosses the ray at 0 < t < tmax (tmax = 1: the
+ * segment from ray->origin to ray->origin + ray->dir), else 0; when it
+ * returns 1, stores in *slot the slot (the place among the hierarchy's
+ * primitives) of a primitive that crosses the ray, for
+ * bvh_slot_occludes(). */
 int bvh_occluder(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot);
 
 /* Returns 1 when the primitive at slot (a slot bvh_occluder() stored, or
- * BVH_NO_SLOT) crosses the ray at 0 < t < tmax, by the test bvh_occluded()
+ * BVH_NO_SLOT) crosses the ray at 0 < t < tmax, by the test bvh_occluder()
  * applies, else 0: a shadow ray tries its neighbour's occluder first. */
 int bvh_slot_occludes(const Bvh *bvh, uint32_t slot, const Ray *ray, real tmax);
 

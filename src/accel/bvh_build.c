@@ -275,9 +275,8 @@ int bvh_build(Bvh *bvh, const BvhShapes *shapes, real reach, int threads)
      * counting them as it goes (no walk of the tree on one thread), then
      * keep their references alone: the binary tree and the nodes
      * made from it are held together next. The slots the fixed offsets
-     * left unused stay where they are (2.5% of them at 10^6 spheres,
-     * never written, so never resident): they were moved out at the cost
-     * of a pass on one thread. */
+     * left unused stay where they are (a few of them, never written, so
+     * never resident): moving them out cost a pass on one thread. */
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) if (threads > 1 && n >= 2 * BVH_TASK_MIN)
 #pragma omp single

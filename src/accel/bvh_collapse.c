@@ -8,8 +8,7 @@
  * wide node (eight boxes, the hits ordered and stacked), and of one
  * primitive, each paid in proportion to the area of the box the ray
  * entered to make it. A node costs four tests: measured, the fewest nodes
- * (0.33 of the greedy collapse's at 10^6 spheres) that are not slower
- * (docs/log.md). */
+ * that are not slower (docs/log.md). */
 #define BVH_NODE_COST 4.0f
 #define BVH_PRIM_COST 1.0f
 

@@ -343,10 +343,9 @@ static unsigned bvh_prim_order(const Bvh *bvh, uint32_t ref)
 /* Asks for node's cache lines ahead of its visit: a large hierarchy's
  * nodes are mostly not in the caches, and a nearest-hit query reaches a
  * node it stacks only after sorting its siblings and testing the nearer
- * leaves (10^6 spheres: 6% faster, 10^5: 3%; shadow rays' walks, which
- * stop at their first hit, were slower for it). A hierarchy of at most
- * BVH_PREFETCH_NODES nodes stays in a core's caches: no asking there (it
- * cost 1,000 spheres 1%). */
+ * leaves; shadow rays' walks, which stop at their first hit, do not ask.
+ * A hierarchy of at most BVH_PREFETCH_NODES nodes stays in a core's
+ * caches: no asking there (docs/log.md has the measures). */
 enum { BVH_PREFETCH_NODES = 2048 }; /* 448 KiB of nodes */
 static inline void bvh_prefetch(const BvhNode *node)
 {
@@ -540,13 +539,6 @@ int bvh_occluder(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot)
 {
     return bvh->avx2 ? bvh_occluder_avx2(bvh, ray, tmax, slot)
                      : bvh_occluder_base(bvh, ray, tmax, slot);
-}
-
-int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
-{
-    uint32_t slot;
-
-    return bvh_occluder(bvh, ray, tmax, &slot);
 }
 
 int bvh_slot_occludes(const Bvh *bvh, uint32_t slot, const Ray *ray, real tmax)

@@ -18,8 +18,8 @@
 #include <omp.h>
 #endif
 
-/* The pixel's steps, folded into the tile loop: measured, 3% of the course
- * scene's instructions were their calls (docs/log.md). */
+/* The pixel's steps, folded into the tile loop: their calls were a share
+ * of the course scene's instructions (docs/log.md). */
 #if defined(__GNUC__)
 #define RENDER_INLINE static inline __attribute__((always_inline))
 #else

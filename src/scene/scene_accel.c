@@ -78,9 +78,8 @@ void scene_build_buffers(Scene *scene, int threads)
         return;
 
     /* A buffer's build reads every sphere five times; the rays it saves
-     * come from the pixels: on fields of 10^5 spheres it loses 9% of the
-     * time at 1.3 pixels a sphere, breaks even at 2.3 and gains from there
-     * (docs/log.md). */
+     * come from the pixels: it is built from two pixels a sphere, where
+     * it breaks even on fields of spheres (docs/log.md). */
     if (scene->kinds != 1u << SHAPE_SPHERE || pixels / 2 < scene_count_of(scene, SHAPE_SPHERE))
         return;
     for (size_t i = 0; !scene->has_transparency && i < scene->light_count; i++)

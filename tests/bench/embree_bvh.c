@@ -211,7 +211,8 @@ int bvh_nearest(const Bvh *bvh, const Ray *ray, real tmax, BvhHit *hit)
     return q.found;
 }
 
-int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
+/* Says whether some sphere crosses the ray below tmax. */
+static int eb_any_hit(const Bvh *bvh, const Ray *ray, real tmax)
 {
     EbQuery q;
     struct RTCRayHit rh = eb_start(&q, bvh, ray, tmax);
@@ -224,7 +225,7 @@ int bvh_occluded(const Bvh *bvh, const Ray *ray, real tmax)
 int bvh_occluder(const Bvh *bvh, const Ray *ray, real tmax, uint32_t *slot)
 {
     *slot = BVH_NO_SLOT;
-    return bvh_occluded(bvh, ray, tmax);
+    return eb_any_hit(bvh, ray, tmax);
 }
 
 int bvh_slot_occludes(const Bvh *bvh, uint32_t slot, const Ray *ray, real tmax)
