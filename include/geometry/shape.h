@@ -77,15 +77,26 @@ static inline void shape_put(double *v, int i, Vec3 p, int k)
     v[i + 2] = ldexp(p.z, -k);
 }
 
+/* Returns the least and the greatest of a and b, finite (comparisons: no
+ * library call for NaNs there are none of). */
+static inline real shape_min(real a, real b)
+{
+    return b < a ? b : a;
+}
+static inline real shape_max(real a, real b)
+{
+    return b > a ? b : a;
+}
+
 /* Widens the box [lo, hi] to hold p, grown by r on each axis. */
 static inline void shape_widen(Vec3 *lo, Vec3 *hi, Vec3 p, real r)
 {
-    lo->x = fmin(lo->x, p.x - r);
-    lo->y = fmin(lo->y, p.y - r);
-    lo->z = fmin(lo->z, p.z - r);
-    hi->x = fmax(hi->x, p.x + r);
-    hi->y = fmax(hi->y, p.y + r);
-    hi->z = fmax(hi->z, p.z + r);
+    lo->x = shape_min(lo->x, p.x - r);
+    lo->y = shape_min(lo->y, p.y - r);
+    lo->z = shape_min(lo->z, p.z - r);
+    hi->x = shape_max(hi->x, p.x + r);
+    hi->y = shape_max(hi->y, p.y + r);
+    hi->z = shape_max(hi->z, p.z + r);
 }
 
 /* Grows the box lo, hi (arrays, as the hierarchy keeps them) by the point p. */

@@ -26,7 +26,10 @@ static void adjust_indirect(const Options *opts, const Scene *scene, Indirect *i
         d = model->ao_distance;
     in->ao_samples = opts->ao >= 0 ? opts->ao : scene->ao_samples >= 0 ? scene->ao_samples
                                                                         : model->ao_rays;
-    in->ao_distance = d > 0 ? ldexp(d, scene->length_exponent) : scene_size(scene) / 10;
+    /* The scene's size, a pass over every shape, only for occlusion rays. */
+    in->ao_distance = d > 0             ? ldexp(d, scene->length_exponent)
+                      : in->ao_samples > 0 ? scene_size(scene) / 10
+                                           : 0;
     in->gi_cache = opts->gi_cache || scene->gi_cache;
     /* The cache asked for without a count of rays: its own default. */
     in->gi_samples = opts->gi >= 0                       ? opts->gi

@@ -1,7 +1,8 @@
 #!/bin/sh
-# anchor.sh: the race against the exact Embree renderer, the scaling of
-# time and memory with the sphere count, and the shapes' fields (`make
-# bench`, after bench.sh; `make race` alone). Not a test: it measures.
+# anchor.sh: the races against the exact Embree renderers (spheres, and
+# triangle meshes), the scaling of time and memory with the sphere count,
+# and the shapes' fields (`make bench`, after bench.sh; `make race`
+# alone). Not a test: it measures.
 #
 # The anchor (embree_rt: Embree 3 packets, every hit re-solved in double,
 # so its pictures are ours) lives outside the project, in BENCH_ANCHOR
@@ -196,6 +197,79 @@ if [ -n "$have_anchor" ]; then
     echo >>"$section"
 else
     echo "No anchor was found or built in this run (BENCH_ANCHOR, libembree-dev): no race." >>"$section"
+    echo >>"$section"
+fi
+
+# The mesh race: embree_mesh (Embree 3 triangles, one ray at a time,
+# every candidate re-solved in double) on its gen_meshes.py scenes, each
+# program's read, build and render times beside the whole command's.
+have_mesh=
+if [ -n "$have_anchor" ] && [ -f "$ANCHOR/embree_mesh.c" ] && [ -f "$ANCHOR/gen_meshes.py" ]; then
+    cp "$ANCHOR/embree_mesh.c" "$ANCHOR/gen_meshes.py" "$DIR/" 2>/dev/null
+    chmod u+w "$DIR"/* 2>/dev/null
+    if make -s -C "$DIR" embree_mesh >"$DIR/build.log" 2>&1; then
+        have_mesh=yes
+        [ -s "$DIR/meshes/mesh_4m.txt" ] || python3 "$DIR/gen_meshes.py" "$DIR/meshes" >/dev/null
+    else
+        echo "anchor: cannot build embree_mesh: $(tail -n 1 "$DIR/build.log")" >&2
+    fi
+fi
+if [ -n "$have_mesh" ]; then
+    {
+        echo "### Meshes"
+        echo
+        echo "The anchor: embree_mesh (Embree 3 triangles, one ray at a time, every"
+        echo "candidate re-solved in double); its scenes from its gen_meshes.py:"
+        echo "bumpy spheres of 10^4, 10^6 (with and without vertex normals) and"
+        echo "4 × 10^6 triangles over a mirror floor, 1920 × 1080. As above: $ALL"
+        echo "threads, $RUNS runs each alternately, medians; each program's read,"
+        echo "build and render times are its own report of the last run (raytrace's"
+        echo "-v). The target (issue 72): at most 0.60 of the anchor's time and 0.80"
+        echo "of its memory on each."
+        echo
+        echo "| scene | anchor read / build / render | raytrace read / build / render | anchor | raytrace | time ratio (median, best) | anchor memory | raytrace memory | memory ratio | target | pixels that differ |"
+        echo "|-------|------------------------------|--------------------------------|--------|----------|---------------------------|---------------|-----------------|--------------|--------|--------------------|"
+    } >>"$section"
+    for s in mesh_10k mesh_1m mesh_1m_vn mesh_4m; do
+        : >"$DIR/t-a"
+        : >"$DIR/t-r"
+        i=0
+        while [ $i -lt "$RUNS" ]; do
+            timed "$DIR/t-a" "$DIR/embree_mesh" "$DIR/meshes/$s.txt" "$DIR/a.ppm" --threads "$ALL"
+            cp "$DIR/err" "$DIR/err-a"
+            timed "$DIR/t-r" "$RT" -v -j "$ALL" "$DIR/meshes/$s.txt" "$DIR/r.ppm"
+            i=$((i + 1))
+        done
+        phases_a=$(sed -n 's/.*read \([0-9.]*\) s, build \([0-9.]*\) s, render \([0-9.]*\) s.*/\1 \/ \2 \/ \3 s/p' "$DIR/err-a")
+        phases_r="$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s.*/\1/p' "$DIR/err") / $(sed -n 's/^raytrace: bounding volume hierarchy: .* built in \([0-9.]*\) s.*/\1/p' "$DIR/err") / $(sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/err") s"
+        a=$(cut -d' ' -f1 "$DIR/t-a" | median)
+        r=$(cut -d' ' -f1 "$DIR/t-r" | median)
+        ab=$(cut -d' ' -f1 "$DIR/t-a" | sort -n | head -1)
+        rb=$(cut -d' ' -f1 "$DIR/t-r" | sort -n | head -1)
+        am=$(cut -d' ' -f2 "$DIR/t-a" | sort -n | tail -1)
+        rm_=$(cut -d' ' -f2 "$DIR/t-r" | sort -n | tail -1)
+        "$DIFF" "$DIR/a.ppm" "$DIR/r.ppm" >"$DIR/diff.log" 2>&1
+        px=$(sed -n 's/^over tolerance 0: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
+        met=time
+        [ "$(echo "$r <= 0.6 * $a" | bc)" = 1 ] || met=
+        if [ "$am" -gt 0 ]; then
+            mem=$(printf '%.0f MB | %.0f MB | %.2f' "$(echo "$am / 1024" | bc -l)" \
+                "$(echo "$rm_ / 1024" | bc -l)" "$(echo "$rm_ / $am" | bc -l)")
+            [ "$(echo "$rm_ <= 0.8 * $am" | bc)" = 1 ] && met="$met${met:+, }memory"
+        else
+            mem="n/a | n/a | n/a"
+        fi
+        case $met in
+        "time, memory") met="met" ;;
+        "") met="not met" ;;
+        *) met="$met only" ;;
+        esac
+        printf '| %s | %s | %s | %s s | %s s | %.2f (%.2f) | %s | %s | %s |\n' "$s" \
+            "${phases_a:-?}" "$phases_r" "$(seconds "$a")" "$(seconds "$r")" \
+            "$(echo "$r / $a" | bc -l)" "$(echo "$rb / $ab" | bc -l)" "$mem" "$met" \
+            "${px:-0 of all}" >>"$section"
+        echo "anchor: $s: anchor $a ms, raytrace $r ms" >&2
+    done
     echo >>"$section"
 fi
 
