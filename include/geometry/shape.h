@@ -37,6 +37,7 @@
 #include <math.h>
 
 #include "geometry/material.h"
+#include "geometry/ray.h"
 #include "math/vec3.h"
 
 /* What a number of a shape's record may be. */
@@ -108,6 +109,35 @@ static inline void shape_grow(real lo[3], real hi[3], Vec3 p)
         lo[a] = c[a] < lo[a] ? c[a] : lo[a];
         hi[a] = c[a] > hi[a] ? c[a] : hi[a];
     }
+}
+
+/* Stores in *normal the unit normal along n (any length, not zero), and
+ * in *u and *v the unit axes of a flat shape's plane: v the world's up as
+ * seen in the plane (+z for a floor or a ceiling), u = normal x v. */
+static inline void shape_flat_frame(Vec3 n, Vec3 *normal, Vec3 *u, Vec3 *v)
+{
+    Vec3 up;
+
+    *normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
+    up = fabs(normal->y) < 0.999999 ? vec3(0, 1, 0) : vec3(0, 0, 1);
+    *v = vec3_normalize(vec3_sub(up, vec3_scale(*normal, vec3_dot(up, *normal))));
+    *u = vec3_normalize(vec3_cross(*normal, *v));
+}
+
+/* Returns p, a point near the plane through origin of unit normal n, put
+ * onto it, with n and its error bound: 16 u of |point| + |origin| per
+ * component (the re-projection rounds a few times; 16 leaves the next
+ * intersection test the margin to see an offset origin on its side). */
+static inline SurfacePoint shape_flat_surface(Vec3 p, Vec3 origin, Vec3 n)
+{
+    SurfacePoint sp;
+    real dist = vec3_dot(vec3_sub(p, origin), n);
+
+    sp.point = vec3_sub(p, vec3_scale(n, dist));
+    sp.normal = n;
+    sp.shading = n;
+    sp.error = vec3_scale(vec3_add(vec3_abs(sp.point), vec3_abs(origin)), real_gamma(16));
+    return sp;
 }
 
 /* Makes lo, hi the empty box, which shape_grow() widens. */

@@ -3,24 +3,13 @@
 
 #include <math.h>
 
-/* The error bound of a surface point, as for planes (plane.c): 16 u of
- * |point| + |centre| per component. */
-#define DISK_ERROR_ULPS 16.0
-
 int disk_make(Disk *d, Vec3 centre, Vec3 n, real radius, Material m)
 {
-    Vec3 up;
-
     if (n.x == 0 && n.y == 0 && n.z == 0)
         return -1;
     d->centre = centre;
     d->given = n;
-    d->normal = vec3_normalize(vec3_ldexp(n, vec3_unit_exponent(vec3_max_abs(n))));
-    /* v: the world's up as seen in the plane, or +z for a floor or ceiling
-     * (as a square's). */
-    up = fabs(d->normal.y) < 0.999999 ? vec3(0, 1, 0) : vec3(0, 0, 1);
-    d->axis_v = vec3_normalize(vec3_sub(up, vec3_scale(d->normal, vec3_dot(up, d->normal))));
-    d->axis_u = vec3_normalize(vec3_cross(d->normal, d->axis_v));
+    shape_flat_frame(n, &d->normal, &d->axis_u, &d->axis_v);
     d->radius = radius;
     d->material = m;
     d->order = 0;
@@ -49,16 +38,7 @@ int disk_intersect(const Disk *d, const Ray *ray, real tmin, real tmax, real *t)
 
 SurfacePoint disk_surface(const Disk *d, const Ray *ray, real t)
 {
-    SurfacePoint sp;
-    Vec3 p = ray_at(ray, t);
-    real dist = vec3_dot(vec3_sub(p, d->centre), d->normal);
-
-    sp.point = vec3_sub(p, vec3_scale(d->normal, dist));
-    sp.normal = d->normal;
-    sp.shading = d->normal;
-    sp.error = vec3_scale(vec3_add(vec3_abs(sp.point), vec3_abs(d->centre)),
-                          real_gamma(DISK_ERROR_ULPS));
-    return sp;
+    return shape_flat_surface(ray_at(ray, t), d->centre, d->normal);
 }
 
 void disk_uv(const Disk *d, Vec3 p, Vec3 n, double uv[2])

@@ -4,16 +4,6 @@
 #include <float.h>
 #include <math.h>
 
-/*
- * Error bound of plane_surface_at()'s point, as a multiple of u = REAL_EPSILON
- * / 2 of |point| + |plane point| per component. The re-projection
- * p - ((p - q) . n) n rounds a few times (about 8u of those magnitudes); 16
- * leaves the margin that the next intersection test needs to see the offset
- * origin on the right side (tests/test_ray.c checks it at scales 1e-6 to
- * 1e8, as for spheres).
- */
-#define PLANE_ERROR_ULPS 16.0
-
 int plane_make(Plane *pl, Vec3 point, Vec3 n, double tile, Material m)
 {
     /* The world axis least aligned with n seeds a tangent frame. */
@@ -50,15 +40,7 @@ int plane_intersect(const Plane *pl, const Ray *ray, real tmin, real tmax, real 
 
 SurfacePoint plane_surface_at(const Plane *pl, Vec3 p)
 {
-    SurfacePoint sp;
-    real u = REAL_EPSILON / 2, g = PLANE_ERROR_ULPS * u / (1 - PLANE_ERROR_ULPS * u);
-    real dist = vec3_dot(vec3_sub(p, pl->point), pl->normal);
-
-    sp.point = vec3_sub(p, vec3_scale(pl->normal, dist));
-    sp.normal = pl->normal;
-    sp.shading = pl->normal;
-    sp.error = vec3_scale(vec3_add(vec3_abs(sp.point), vec3_abs(pl->point)), g);
-    return sp;
+    return shape_flat_surface(p, pl->point, pl->normal);
 }
 
 void plane_uv(const Plane *pl, Vec3 p, Vec3 n, double uv[2])

@@ -50,6 +50,36 @@ timed() {
     echo "$(((end - start) / 1000000)) $(tail -n 1 "$DIR/rss")" >>"$f"
 }
 
+# race_stats TIME-SHARE MEMORY-SHARE: from the runs in $DIR/t-a (the
+# anchor's) and $DIR/t-r (raytrace's) and their last pictures, sets a and
+# r (median ms), ab and rb (best), mem (the memory columns), px (pixels
+# that differ) and met (whether raytrace took at most TIME-SHARE of the
+# anchor's time and MEMORY-SHARE of its memory).
+race_stats() {
+    a=$(cut -d' ' -f1 "$DIR/t-a" | median)
+    r=$(cut -d' ' -f1 "$DIR/t-r" | median)
+    ab=$(cut -d' ' -f1 "$DIR/t-a" | sort -n | head -1)
+    rb=$(cut -d' ' -f1 "$DIR/t-r" | sort -n | head -1)
+    am=$(cut -d' ' -f2 "$DIR/t-a" | sort -n | tail -1)
+    rm_=$(cut -d' ' -f2 "$DIR/t-r" | sort -n | tail -1)
+    "$DIFF" "$DIR/a.ppm" "$DIR/r.ppm" >"$DIR/diff.log" 2>&1
+    px=$(sed -n 's/^over tolerance 0: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
+    met=time
+    [ "$(echo "$r <= $1 * $a" | bc)" = 1 ] || met=
+    if [ "$am" -gt 0 ]; then
+        mem=$(printf '%.0f MB | %.0f MB | %.2f' "$(echo "$am / 1024" | bc -l)" \
+            "$(echo "$rm_ / 1024" | bc -l)" "$(echo "$rm_ / $am" | bc -l)")
+        [ "$(echo "$rm_ <= $2 * $am" | bc)" = 1 ] && met="$met${met:+, }memory"
+    else
+        mem="n/a | n/a | n/a"
+    fi
+    case $met in
+    "time, memory") met="met" ;;
+    "") met="not met" ;;
+    *) met="$met only" ;;
+    esac
+}
+
 GNUTIME=
 for t in /usr/bin/time /bin/time; do
     [ -x "$t" ] && "$t" -f %M true >/dev/null 2>&1 && GNUTIME=$t && break
@@ -109,30 +139,9 @@ if [ -n "$have_anchor" ]; then
             timed "$DIR/t-r" "$RT" -q -j "$ALL" "$DIR/$s.txt" "$DIR/r.ppm"
             i=$((i + 1))
         done
-        a=$(cut -d' ' -f1 "$DIR/t-a" | median)
-        r=$(cut -d' ' -f1 "$DIR/t-r" | median)
-        ab=$(cut -d' ' -f1 "$DIR/t-a" | sort -n | head -1)
-        rb=$(cut -d' ' -f1 "$DIR/t-r" | sort -n | head -1)
-        am=$(cut -d' ' -f2 "$DIR/t-a" | sort -n | tail -1)
-        rm_=$(cut -d' ' -f2 "$DIR/t-r" | sort -n | tail -1)
-        "$DIFF" "$DIR/a.ppm" "$DIR/r.ppm" >"$DIR/diff.log" 2>&1
-        px=$(sed -n 's/^over tolerance 0: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
-        met=time
-        [ "$(echo "$r <= 0.5 * $a" | bc)" = 1 ] || met=
-        if [ "$am" -gt 0 ]; then
-            mem=$(printf '%.0f MB | %.0f MB | %.2f' "$(echo "$am / 1024" | bc -l)" \
-                "$(echo "$rm_ / 1024" | bc -l)" "$(echo "$rm_ / $am" | bc -l)")
-            share=1
-            [ "$s" = spheres_1m ] && share=0.7
-            [ "$(echo "$rm_ <= $share * $am" | bc)" = 1 ] && met="$met${met:+, }memory"
-        else
-            mem="n/a | n/a | n/a"
-        fi
-        case $met in
-        "time, memory") met="met" ;;
-        "") met="not met" ;;
-        *) met="$met only" ;;
-        esac
+        share=1
+        [ "$s" = spheres_1m ] && share=0.7
+        race_stats 0.5 "$share"
         printf '| %s | %s s | %s s | %.2f (%.2f) | %s | %s | %s |\n' "$s" "$(seconds "$a")" \
             "$(seconds "$r")" "$(echo "$r / $a" | bc -l)" "$(echo "$rb / $ab" | bc -l)" \
             "$mem" "$met" "${px:-0 of all}" >>"$section"
@@ -242,28 +251,7 @@ if [ -n "$have_mesh" ]; then
         done
         phases_a=$(sed -n 's/.*read \([0-9.]*\) s, build \([0-9.]*\) s, render \([0-9.]*\) s.*/\1 \/ \2 \/ \3 s/p' "$DIR/err-a")
         phases_r="$(sed -n 's/^raytrace: read the scene in \([0-9.]*\) s.*/\1/p' "$DIR/err") / $(sed -n 's/^raytrace: bounding volume hierarchy: .* built in \([0-9.]*\) s.*/\1/p' "$DIR/err") / $(sed -n 's/^raytrace: rendered in \([0-9.]*\) s.*/\1/p' "$DIR/err") s"
-        a=$(cut -d' ' -f1 "$DIR/t-a" | median)
-        r=$(cut -d' ' -f1 "$DIR/t-r" | median)
-        ab=$(cut -d' ' -f1 "$DIR/t-a" | sort -n | head -1)
-        rb=$(cut -d' ' -f1 "$DIR/t-r" | sort -n | head -1)
-        am=$(cut -d' ' -f2 "$DIR/t-a" | sort -n | tail -1)
-        rm_=$(cut -d' ' -f2 "$DIR/t-r" | sort -n | tail -1)
-        "$DIFF" "$DIR/a.ppm" "$DIR/r.ppm" >"$DIR/diff.log" 2>&1
-        px=$(sed -n 's/^over tolerance 0: \([0-9]*\) of \([0-9]*\) pixels.*/\1 of \2/p' "$DIR/diff.log")
-        met=time
-        [ "$(echo "$r <= 0.6 * $a" | bc)" = 1 ] || met=
-        if [ "$am" -gt 0 ]; then
-            mem=$(printf '%.0f MB | %.0f MB | %.2f' "$(echo "$am / 1024" | bc -l)" \
-                "$(echo "$rm_ / 1024" | bc -l)" "$(echo "$rm_ / $am" | bc -l)")
-            [ "$(echo "$rm_ <= 0.8 * $am" | bc)" = 1 ] && met="$met${met:+, }memory"
-        else
-            mem="n/a | n/a | n/a"
-        fi
-        case $met in
-        "time, memory") met="met" ;;
-        "") met="not met" ;;
-        *) met="$met only" ;;
-        esac
+        race_stats 0.6 0.8
         printf '| %s | %s | %s | %s s | %s s | %.2f (%.2f) | %s | %s | %s |\n' "$s" \
             "${phases_a:-?}" "$phases_r" "$(seconds "$a")" "$(seconds "$r")" \
             "$(echo "$r / $a" | bc -l)" "$(echo "$rb / $ab" | bc -l)" "$mem" "$met" \
