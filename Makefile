@@ -2,7 +2,7 @@
 #
 # make              build ./raytrace, ./raytrace-diff and ./raytrace-merge
 #                   (with OpenMP when the compiler has it)
-# make test         build and run the quick suite (under a minute on 2 cores)
+# make test         build and run the quick suite (a minute or two on 2 cores)
 # make check        build and run every suite in full (CI runs it)
 # make test-windows cross-build the Windows programs (MinGW-w64) and test them
 #                   under Wine; make test-musl the same for a musl build
@@ -236,8 +236,8 @@ $(BUILD)/tests/unit.o: tests/unit.c $(SUITES_H) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(RT_CPPFLAGS) -Itests -I$(BUILD)/tests $(CPPFLAGS) $(RT_CFLAGS) $(CFLAGS) -c -o $@ $<
 
-# make test, README's second command: the quick suite, at most a minute on
-# two cores from a fresh clone, build included: the unit tests, the golden
+# make test, README's second command: the quick suite, a minute and a
+# quarter on two cores from a fresh clone, build included: the unit tests, the golden
 # render of every example scene (and the course scene against its
 # reference), the command line and its errors, and a sample of each longer
 # suite (tiles, injected faults, JPEGs). make check: every suite in full,
