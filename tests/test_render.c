@@ -66,7 +66,7 @@ static void render_eye_on_the_screen_sees_background(void)
  * direction normalize(P - eye), to the bit. */
 static void check_pixels_are_their_rays(const char *text)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions opts = {.max_depth = 10, .samples = 1, .threads = 2};
     RayCounts counts = {0};
     Scene sc;
     Error err;
@@ -156,9 +156,9 @@ static void render_bytes_do_not_depend_on_threads(void)
     Scene sc;
     Error err;
     Image a, b;
-    RenderOptions one = {10, 1, 0, 1, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL},
-                  two = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL},
-                  many = {10, 1, 0, 7, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions one = {.max_depth = 10, .samples = 1, .threads = 1},
+                  two = {.max_depth = 10, .samples = 1, .threads = 2},
+                  many = {.max_depth = 10, .samples = 1, .threads = 7};
 
     CHECK_INT(0, load_scene_file("scenes/course.txt", SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(0, image_init(&a, sc.camera.width, sc.camera.height));
@@ -234,7 +234,7 @@ static void render_matches_exact_image_at_any_scale_and_place(void)
             double s = scales[si], o = offsets[oi];
             Scene sc;
             Material m = material_plain(base_colour, base_refl);
-            RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+            RenderOptions opts = {.max_depth = 10, .samples = 1, .threads = 2};
             Light light;
             Image img;
             int bad = 0, lit = 0;
@@ -302,7 +302,7 @@ static void course_scaled(char *buf, size_t size, double factor)
  * length_exponent, or -99999 (img left empty) if it does not parse. */
 static int render_text(const char *text, Image *img)
 {
-    RenderOptions opts = {10, 1, 0, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions opts = {.max_depth = 10, .samples = 1, .threads = 2};
     Scene sc;
     Error err;
     int e;
@@ -414,7 +414,7 @@ static void render_tiny_scenes_exactly(void)
  * parse. */
 static int render_text_with(const char *text, int samples, int threads, Image *img)
 {
-    RenderOptions opts = {10, samples, 0, threads, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions opts = {.max_depth = 10, .samples = samples, .threads = threads};
     Scene sc;
     Error err;
 
@@ -677,7 +677,7 @@ static Image render_with_cutoff(const char *text, int max_depth, double cutoff,
     Scene sc;
     Error err;
     Image img;
-    RenderOptions opts = {max_depth, 4, cutoff, 2, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions opts = {.max_depth = max_depth, .samples = 4, .cutoff = cutoff, .threads = 2};
 
     CHECK_INT(0, load_scene_text("t.txt", text, strlen(text), SCENE_AUTO, 0, 0, &sc, NULL, &err));
     CHECK_INT(0, image_init(&img, sc.camera.width, sc.camera.height));
@@ -748,8 +748,9 @@ static void render_cutoff_refines_before_tracing_in_full(void)
 static void render_noisy(const Scene *sc, NoiseOptions noise, Indirect in, int threads,
                          int row_first, int row_step, Image *img, unsigned *spp, float *error)
 {
-    RenderOptions opts = {10, 1, 0.1, threads, NULL, NULL, in, row_first, row_step, 0, noise, spp,
-                          error, NULL};
+    RenderOptions opts = {.max_depth = 10, .samples = 1, .cutoff = 0.1, .threads = threads,
+                          .indirect = in, .row_first = row_first, .row_step = row_step,
+                          .noise = noise, .spp = spp, .error = error};
     int rows = row_step ? (sc->camera.height - row_first + row_step - 1) / row_step
                         : sc->camera.height;
 

@@ -108,7 +108,8 @@ static void indirect_gathering_from_a_uniformly_lit_ball(void)
 static void indirect_render(const char *text, Indirect in, int spp, int threads, Image *img,
                             RayCounts *counts)
 {
-    RenderOptions opts = {10, spp, 0.1, threads, NULL, NULL, in, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions opts = {.max_depth = 10, .samples = spp, .cutoff = 0.1, .threads = threads,
+                          .indirect = in};
     Scene sc;
 
     img->rgb = NULL;

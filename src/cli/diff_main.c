@@ -147,7 +147,8 @@ static void diff_report(const Error *err)
 static int diff_write_image(const char *path, const Picture *a, const Picture *b,
                             double tolerance)
 {
-    WriterOptions wopts = {writer_format_for(path), 0, DEFLATE_FIXED, 95, 1, NULL};
+    WriterOptions wopts = {.format = writer_format_for(path), .png_deflate = DEFLATE_FIXED,
+                           .jpeg_quality = 95, .jpeg_444 = 1};
     Image img;
     OutFile out;
     Error err;

@@ -472,7 +472,8 @@ static int main_write(const char *path, const Image *img, const WriterOptions *w
 static int main_spp_map(const Options *opts, const RenderOptions *ropts, int width, int height,
                         Error *err)
 {
-    WriterOptions w = {writer_format_for(opts->spp_map), 0, DEFLATE_FIXED, 95, 1, NULL};
+    WriterOptions w = {.format = writer_format_for(opts->spp_map), .png_deflate = DEFLATE_FIXED,
+                       .jpeg_quality = 95, .jpeg_444 = 1};
     Image map;
     int rc;
 
@@ -491,7 +492,8 @@ static int main_spp_map(const Options *opts, const RenderOptions *ropts, int wid
 static int main_gi_cache_map(const Options *opts, const Scene *scene, const GiCache *cache,
                              const IrradianceStats *stats, const Image *img, Error *err)
 {
-    WriterOptions w = {writer_format_for(opts->gi_cache_map), 0, DEFLATE_FIXED, 95, 1, NULL};
+    WriterOptions w = {.format = writer_format_for(opts->gi_cache_map),
+                       .png_deflate = DEFLATE_FIXED, .jpeg_quality = 95, .jpeg_444 = 1};
     Image map;
     int rc;
 
@@ -509,19 +511,26 @@ static int main_gi_cache_map(const Options *opts, const Scene *scene, const GiCa
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    WriterOptions wopts = {(ImageFormat)opts->format, opts->ascii,
-                           opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED, opts->jpeg_quality,
-                           opts->jpeg_444, NULL};
+    WriterOptions wopts = {
+        .format = (ImageFormat)opts->format,
+        .ascii = opts->ascii,
+        .png_deflate = opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED,
+        .jpeg_quality = opts->jpeg_quality,
+        .jpeg_444 = opts->jpeg_444,
+    };
     /* The linear colours of PFM would show what the cut-off leaves out. */
-    RenderOptions ropts = {0, 1, wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-                           opts->threads, NULL, NULL, {0, 0, 0, 0, 0, 0}, 0, 0, 0, {0, 0, 0}, NULL, NULL, NULL};
+    RenderOptions ropts = {
+        .samples = 1,
+        .cutoff = wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
+        .threads = opts->threads,
+    };
     RayCounts counts = {0};
     GiCache cache;
-    IrradianceStats gi_stats = {0, 0, 0, 0};
+    IrradianceStats gi_stats = {0};
     Tile tile;
     char record[TILE_RECORD_MAX];
     double start = process_seconds(), write_start;
-    SummaryTimes times = {0, 0, 0, 0, 0, 0};
+    SummaryTimes times = {0};
     SceneSource source;
     Scene scene;
     Image img;

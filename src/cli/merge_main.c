@@ -256,7 +256,8 @@ static int merge_options(int argc, char **argv, MergeOptions *o)
 static int merge_run(const MergeOptions *o, Merge *m, Error *err)
 {
     const char *out_path = o->paths[0];
-    WriterOptions w = {writer_format_for(out_path), 0, DEFLATE_FIXED, o->jpeg_quality, 0, NULL};
+    WriterOptions w = {.format = writer_format_for(out_path), .png_deflate = DEFLATE_FIXED,
+                       .jpeg_quality = o->jpeg_quality};
     OutFile out;
 
     for (int i = 1; i < o->npaths; i++)

@@ -12,16 +12,34 @@ static int model_mpl_light_occludes(const Scene *scene)
 }
 
 static const Model model_table[] = {
-    {SCENE_MODEL_PHYSICAL, "physical", trace_ray_diff, trace_miss, trace_miss_uniform, 10, 0, 0, 0,
-     0, 1, NULL, NULL, NULL, trace_has_ambient}, /* the tracer's own ambient rule */
-    {SCENE_MODEL_MPL, "mpl", mpl_light_trace_diff, mpl_light_miss, mpl_light_miss_uniform,
-     MPL_LIGHT_MAX_DEPTH, MPL_LIGHT_AO_RAYS, MPL_LIGHT_GI_RAYS, MPL_LIGHT_AO_DISTANCE, MPL_LIGHT_GAMMA, 0,
-     "the MPL model: its program's light, occlusion and gathering",
-     "the MPL model gathers the colours its rays meet, one bounce (--model physical gathers "
-     "light)",
-     "the MPL model keeps its own gathering, every point's rays (--model physical gathers "
-     "through the cache)",
-     model_mpl_light_occludes},
+    {
+        .id = SCENE_MODEL_PHYSICAL,
+        .name = "physical",
+        .trace = trace_ray_diff,
+        .miss = trace_miss,
+        .miss_uniform = trace_miss_uniform,
+        .max_depth = 10,
+        .may_cut = 1,
+        .occludes = trace_has_ambient, /* the tracer's own ambient rule */
+    },
+    {
+        .id = SCENE_MODEL_MPL,
+        .name = "mpl",
+        .trace = mpl_light_trace_diff,
+        .miss = mpl_light_miss,
+        .miss_uniform = mpl_light_miss_uniform,
+        .max_depth = MPL_LIGHT_MAX_DEPTH,
+        .ao_rays = MPL_LIGHT_AO_RAYS,
+        .gi_rays = MPL_LIGHT_GI_RAYS,
+        .ao_distance = MPL_LIGHT_AO_DISTANCE,
+        .gamma = MPL_LIGHT_GAMMA,
+        .verbose = "the MPL model: its program's light, occlusion and gathering",
+        .bounces_note = "the MPL model gathers the colours its rays meet, one bounce "
+                        "(--model physical gathers light)",
+        .cache_note = "the MPL model keeps its own gathering, every point's rays (--model "
+                      "physical gathers through the cache)",
+        .occludes = model_mpl_light_occludes,
+    },
 };
 
 const Model *model_of(const Scene *scene)
