@@ -560,7 +560,7 @@ static const BadScene parse_bad_scenes[] = {
      "'lens:' or 'texture:')"},
     {HEADER "torus: 0 0 0 0 1 0 1 1 200 100 50 0\n", 8, 22,
      "the torus's tube radius must be less than its major radius (a ring torus: its hole "
-     "open)"},
+     "open), and at least a ten-thousandth of it"},
     {HEADER "torus: 0 0 0 0 0 0 2 1 200 100 50 0\n", 8, 14,
      "the torus's axis is the zero vector: it must give a direction"},
     {HEADER "Torus: 0 0 0 0 1 0 2 1 200 100 50 0\n", 8, 1,

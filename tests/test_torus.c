@@ -137,7 +137,7 @@ static void torus_matches_a_traced_reference_at_any_scale_and_place(void)
     int tested = 0, wrong = 0, hits = 0, n = test_trials(3000);
 
     for (int i = 0; i < n; i++) {
-        double R = rng_log_scale(-6, 8), k = rng_range(0.02, 0.9);
+        double R = rng_log_scale(-6, 8), k = i % 4 ? rng_range(0.02, 0.9) : rng_log_scale(-4, -1.7);
         Vec3 c = vec3_scale(rng_unit_vector(), R * rng_log_scale(-2, 7) * (i % 3 == 0));
         Torus t = torus_at(c, rng_unit_vector(), R, k * R);
         Vec3 aim = vec3_add(c, vec3_scale(rng_unit_vector(), R * (1 + k) * rng_uniform()));
@@ -172,7 +172,7 @@ static void torus_spawned_rays_never_rehit_where_they_start(void)
     int tested = 0, rehits = 0, wrong = 0, n = test_trials(2000);
 
     for (int i = 0; i < n; i++) {
-        double R = rng_log_scale(-6, 8), k = rng_range(0.02, 0.9);
+        double R = rng_log_scale(-6, 8), k = i % 4 ? rng_range(0.02, 0.9) : rng_log_scale(-4, -1.7);
         Vec3 c = vec3_scale(rng_unit_vector(), R * rng_log_scale(-2, 7) * (i % 2));
         Torus t = torus_at(c, rng_unit_vector(), R, k * R);
         Vec3 from = vec3_add(c, vec3_scale(rng_unit_vector(), R * rng_log_scale(0.5, 3)));
@@ -232,6 +232,8 @@ static void torus_is_refused_without_a_hole_or_an_axis(void)
 
     CHECK_INT(-2, torus_make(&t, vec3(0, 0, 0), vec3(0, 1, 0), 1, 1, solid_plain()));
     CHECK_INT(-2, torus_make(&t, vec3(0, 0, 0), vec3(0, 1, 0), 1, 2, solid_plain()));
+    CHECK_INT(-2, torus_make(&t, vec3(0, 0, 0), vec3(0, 1, 0), 1, 0.99e-4, solid_plain()));
+    CHECK_INT(0, torus_make(&t, vec3(0, 0, 0), vec3(0, 1, 0), 1, 1e-4, solid_plain()));
     CHECK_INT(-1, torus_make(&t, vec3(0, 0, 0), vec3(0, 0, 0), 2, 1, solid_plain()));
     CHECK_INT(0, torus_make(&t, vec3(0, 0, 0), vec3(0, 1e-300, 0), 2, 1, solid_plain()));
     CHECK_NEAR(1, t.axis.y, 1e-15);

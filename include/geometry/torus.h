@@ -2,7 +2,7 @@
  * torus.h: the ring torus, and a ray intersection that keeps its digits.
  *
  * A torus of centre c, unit axis n, major radius R and tube radius r
- * (0 < r < R) holds the points at distance r from its core, the circle of
+ * (R / 10^4 <= r < R) holds the points at distance r from its core, the circle of
  * radius R around c square to n. A ray meets it where a quartic vanishes,
  * the classic case of cancellation. Here the ray is first taken relative
  * to c, in the torus's frame (its axis along z), in units of R, with a
@@ -40,7 +40,7 @@ typedef struct {
 
 /* Makes *t the torus of centre, axis direction n (any length), major
  * radius R and tube radius r with material m; returns 0, or -1 when n is
- * the zero vector, or -2 unless 0 < r < R. */
+ * the zero vector, or -2 unless R / 10^4 <= r < R. */
 int torus_make(Torus *t, Vec3 centre, Vec3 n, real major, real minor, Material m);
 
 /* Finds where the ray first crosses the torus with tmin < t < tmax;

@@ -14,6 +14,10 @@
  * clear it. tests/test_torus.c checks it from 1e-6 to 1e8. */
 #define TORUS_ERROR_ULPS 16.0
 
+/* The thinnest tube, as a share of R: the error bound above grows as R / r,
+ * and a wire a ten-thousandth of its ring keeps it below 10^-10 of R. */
+#define TORUS_THINNEST 1e-4
+
 int torus_make(Torus *t, Vec3 centre, Vec3 n, real major, real minor, Material m)
 {
     /* The world axis least aligned with n seeds the frame (as a plane's). */
@@ -21,7 +25,7 @@ int torus_make(Torus *t, Vec3 centre, Vec3 n, real major, real minor, Material m
 
     if (n.x == 0 && n.y == 0 && n.z == 0)
         return -1;
-    if (!(minor > 0 && minor < major))
+    if (!(minor >= major * TORUS_THINNEST && minor < major))
         return -2;
     t->centre = centre;
     t->given = n;
@@ -335,7 +339,7 @@ static const char *torus_record_make(void *shape, const double *v, const Materia
     *field = rc == -1 ? 3 : 7;
     return rc == -1 ? "the torus's axis is the zero vector: it must give a direction"
                     : "the torus's tube radius must be less than its major radius (a ring "
-                      "torus: its hole open)";
+                      "torus: its hole open), and at least a ten-thousandth of it";
 }
 
 static void torus_record_numbers(const void *shape, int k, double *v)
