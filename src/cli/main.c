@@ -511,19 +511,12 @@ static int main_gi_cache_map(const Options *opts, const Scene *scene, const GiCa
 /* Renders opts' scene to opts' output; returns the exit status. */
 static int main_render(const Options *opts)
 {
-    WriterOptions wopts = {
-        .format = (ImageFormat)opts->format,
-        .ascii = opts->ascii,
-        .png_deflate = opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED,
-        .jpeg_quality = opts->jpeg_quality,
-        .jpeg_444 = opts->jpeg_444,
-    };
+    WriterOptions wopts = {.format = (ImageFormat)opts->format, .ascii = opts->ascii,
+                           .png_deflate = opts->png_stored ? DEFLATE_STORED : DEFLATE_FIXED,
+                           .jpeg_quality = opts->jpeg_quality, .jpeg_444 = opts->jpeg_444};
     /* The linear colours of PFM would show what the cut-off leaves out. */
-    RenderOptions ropts = {
-        .samples = 1,
-        .cutoff = wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
-        .threads = opts->threads,
-    };
+    RenderOptions ropts = {.samples = 1, .cutoff = wopts.format == FORMAT_PFM ? 0 : opts->cutoff,
+                           .threads = opts->threads};
     RayCounts counts = {0};
     GiCache cache;
     IrradianceStats gi_stats = {0};
