@@ -278,7 +278,7 @@ test-replay: $(FUZZ_TARGETS:%=$(BUILD)/replay/%)
 		$$(ls -d ../tests/fuzz/corpus/$$t/* ../tests/fuzz/regress/$$t/* 2>/dev/null)) || $(SUITE_FAILED); done
 test-golden: raytrace raytrace-diff
 	$(SUITE_ENV) sh tests/golden.sh ./raytrace ./raytrace-diff || $(SUITE_FAILED)
-test-cli: raytrace raytrace-diff $(RT_FLOAT)
+test-cli: raytrace raytrace-diff raytrace-merge $(RT_FLOAT)
 	$(SUITE_ENV) RT_FLOAT=$(RT_FLOAT) sh tests/cli.sh ./raytrace ./raytrace-diff || $(SUITE_FAILED)
 test-meshes: raytrace raytrace-diff $(BUILD)/meshgen
 	$(SUITE_ENV) sh tests/meshes.sh ./raytrace ./raytrace-diff $(BUILD)/meshgen || $(SUITE_FAILED)

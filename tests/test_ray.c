@@ -1,7 +1,8 @@
 /* test_ray.c: secondary rays (geometry/ray.h, ray_offset_origin()): rays
  * spawned from planes, triangles, cubes, squares, cylinders and cones at
  * scales 10^-6 to 10^8, grazing included, never meet the surface they
- * leave (spheres: test_sphere.c). */
+ * leave (spheres: test_sphere.c); rays spawned where two planes meet
+ * leave both. */
 #include <math.h>
 
 #include "geometry/cone.h"
@@ -32,8 +33,8 @@ static int rehits_from(SurfacePoint sp, Vec3 n, int (*hit)(const void *, const R
         /* Shadow rays run to the light: directions of any length. */
         Vec3 w = vec3_scale(rng_direction_at_cosine(n, cosine), rng_log_scale(-3, 3)),
              w_in = vec3_neg(w);
-        Ray away = {ray_offset_origin(sp.point, sp.error, n, w), w};
-        Ray into = {ray_offset_origin(sp.point, sp.error, n, w_in), w_in};
+        Ray away = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w), w};
+        Ray into = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w_in), w_in};
 
         rehits += hit(shape, &away) + hit(shape, &into);
     }
@@ -214,9 +215,9 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
         for (int j = 0; j < 8; j++) {
             double cosine = j < 4 ? pow(10, -4.0 * j) : fmax(rng_uniform(), 1e-12);
             Vec3 w = rng_direction_at_cosine(n, cosine);
-            Ray away = {ray_offset_origin(sp.point, sp.error, n, w), w};
+            Ray away = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w), w};
             Vec3 w_in = vec3_neg(w);
-            Ray into = {ray_offset_origin(sp.point, sp.error, n, w_in), w_in};
+            Ray into = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w_in), w_in};
             /* Back the way the ray came: from outside nothing is crossed;
              * from inside only a far wall, never at the offset's scale. */
             if (solid_hit(&s, &away, &t) && (!inside || (cosine > 1e-3 && t < 1e-9 * r)))
@@ -236,8 +237,92 @@ static void solids_spawned_rays_never_rehit_their_surface(void)
     CHECK_INT(0, close);
 }
 
+/* Returns a random unit direction u with u . a >= m and u . b >= m. */
+static Vec3 direction_between(Vec3 a, Vec3 b, double m)
+{
+    for (;;) {
+        Vec3 u = rng_unit_vector();
+        if (vec3_dot(u, a) >= m && vec3_dot(u, b) >= m)
+            return u;
+    }
+}
+
+/* Returns a random unit direction u with u . a >= m and u . b <= -m. */
+static Vec3 direction_across(Vec3 a, Vec3 b, double m)
+{
+    return direction_between(a, vec3_neg(b), m);
+}
+
+static void corner_rays_leave_both_surfaces(void)
+{
+    /* Two planes meet on a line (a floor and a wall: half the time as a
+     * room's are, axis-aligned through 0); a ray from the room aims at a
+     * point of the line, at scales 1e-4 to 1e6 and up to 1e7 away, so that
+     * its hit lies on both planes and rounding puts it a hair on either
+     * side of the one it did not hit. Rays spawned from the hit as shading
+     * does, with the step back along the arriving ray, must see the whole
+     * hemisphere: into the room they meet neither plane (a shadow ray
+     * would find the point in shadow), and across the other plane they
+     * meet it at once (a gathering ray would leave the room). The arriving
+     * ray meets each plane at a cosine of 1/8 or more. Without the step
+     * back, a shadow ray in five met a plane and two gathering rays in
+     * three missed the other. */
+    int tested = 0, blocked = 0, escaped = 0;
+
+    for (int i = 0; i < 4000; i++) {
+        double s = rng_log_scale(-4, 6);
+        int room = i % 2;
+        Vec3 na = room ? vec3(0, 1, 0) : rng_unit_vector(), nb, c, e, aim, from, n, back;
+        Plane pl[2];
+        Ray ray;
+        double t[2];
+        SurfacePoint sp;
+        int k;
+
+        do
+            nb = room ? vec3(1, 0, 0) : rng_unit_vector();
+        while (fabs(vec3_dot(na, nb)) > 0.9);
+        c = room ? vec3(0, 0, 0) : vec3_scale(rng_unit_vector(), s * rng_log_scale(-3, 1));
+        if (i % 5 == 1)
+            c = vec3_add(c, vec3_scale(rng_unit_vector(), 1e7 * s));
+        /* Either side of a plane is its front: the normals given point
+         * either way. */
+        CHECK_INT(0, plane_make(&pl[0], c, i % 4 < 2 ? na : vec3_neg(na), 1, white));
+        CHECK_INT(0, plane_make(&pl[1], c, i % 8 < 4 ? nb : vec3_neg(nb), 1, white));
+        e = vec3_normalize(vec3_cross(na, nb));
+        aim = vec3_add(c, vec3_scale(e, s * rng_range(-1, 1)));
+        from = vec3_add(aim, vec3_scale(direction_between(na, nb, 0.125), s * rng_log_scale(-1, 3)));
+        ray.origin = from;
+        ray.dir = vec3_sub(aim, from);
+        if (!plane_intersect(&pl[0], &ray, 0, INFINITY, &t[0]) ||
+            !plane_intersect(&pl[1], &ray, 0, INFINITY, &t[1]))
+            continue;
+        k = t[1] < t[0];
+        sp = plane_surface_at(&pl[k], ray_at(&ray, t[k]));
+        n = ray_facing_normal(sp.normal, ray.dir);
+        back = ray_back_step(&ray, t[k], sp.point, sp.error);
+        tested++;
+        for (int j = 0; j < 8; j++) {
+            Vec3 in_room = direction_between(na, nb, 0.125);
+            Vec3 across = k ? direction_across(nb, na, 0.125) : direction_across(na, nb, 0.125);
+            Ray shadow = {ray_offset_origin(sp.point, sp.error, back, n, in_room), in_room};
+            Ray gather = {ray_offset_origin(sp.point, sp.error, back, n, across), across};
+            double tt;
+
+            blocked += plane_hit(&pl[0], &shadow) + plane_hit(&pl[1], &shadow);
+            escaped += plane_hit(&pl[k], &gather) ||
+                       !plane_intersect(&pl[!k], &gather, 0, INFINITY, &tt) ||
+                       tt > 1e-9 * (s + vec3_max_abs(c));
+        }
+    }
+    CHECK(tested > 3900);
+    CHECK_INT(0, blocked);
+    CHECK_INT(0, escaped);
+}
+
 const TestCase ray_tests[] = {
     {"flat_spawned_rays_never_rehit_their_surface", flat_spawned_rays_never_rehit_their_surface},
+    {"corner_rays_leave_both_surfaces", corner_rays_leave_both_surfaces},
     {"solids_spawned_rays_never_rehit_their_surface", solids_spawned_rays_never_rehit_their_surface},
     {NULL, NULL},
 };

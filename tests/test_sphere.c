@@ -164,9 +164,9 @@ static void sphere_spawned_rays_never_rehit_their_sphere(void)
         for (int j = 0; j < 8; j++) {
             double cosine = j < 4 ? pow(10, -4.0 * j) : fmax(rng_uniform(), 1e-12);
             Vec3 w = rng_direction_at_cosine(n, cosine);
-            Ray away = {ray_offset_origin(sp.point, sp.error, n, w), w};
+            Ray away = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w), w};
             Vec3 w_in = vec3_neg(w);
-            Ray into = {ray_offset_origin(sp.point, sp.error, n, w_in), w_in};
+            Ray into = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w_in), w_in};
             double chord = 2 * r * vec3_dot(w, n);
             /* The offset origin shortens a chord by about offset / cosine. */
             double slack = 1e-6 * chord + 4 * vec3_dot(vec3_abs(n), sp.error) / cosine;

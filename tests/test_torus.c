@@ -189,7 +189,7 @@ static void torus_spawned_rays_never_rehit_where_they_start(void)
             double cosine = j < 4 ? pow(10, -4.0 * j) : fmax(rng_uniform(), 1e-12);
             Vec3 n = j % 2 ? vec3_neg(sp.normal) : sp.normal; /* out of it, into it */
             Vec3 w = rng_direction_at_cosine(n, cosine);
-            Ray away = {ray_offset_origin(sp.point, sp.error, n, w), w};
+            Ray away = {ray_offset_origin(sp.point, sp.error, vec3(0, 0, 0), n, w), w};
             RefHit ref = ref_trace(&t, away.origin, away.dir);
             double t2;
             int ours = torus_intersect(&t, &away, 0, INFINITY, &t2);

@@ -2,6 +2,7 @@
  * shares and colours known in closed form, and their bytes against thread
  * counts and against renders without them. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "render/model.h"
@@ -212,11 +213,82 @@ static void indirect_bounces_add_light_and_converge(void)
     scene_free(&sc);
 }
 
+/* Writes a course scene of a white floor (y = 0) and wall (x = 0) meeting
+ * on the z axis, lit from the room and by white ambient light, every
+ * length times scale and every point moved by offset. */
+static void indirect_corner_scene(char *buf, size_t size, double scale, double offset)
+{
+    double s = scale, o = offset;
+
+    snprintf(buf, size,
+             "%.17g %.17g %.17g\n%.17g %.17g %.17g\n%.17g %.17g %.17g\n%.17g %.17g %.17g\n8\n"
+             "0 0 0\n%.17g %.17g %.17g 255 255 255\nambient: 100 100 100\n"
+             "plane: %.17g %.17g %.17g 0 1 0 200 200 200 0\n"
+             "plane: %.17g %.17g %.17g 1 0 0 200 200 200 0\n",
+             3 * s + o, 3 * s + o, -5 * s + o, 2 * s + o, 4 * s + o, -4 * s + o, 4 * s + o,
+             4 * s + o, -4 * s + o, 2 * s + o, 2 * s + o, -4 * s + o, 3 * s + o, 4 * s + o,
+             0.5 * s + o, o, o, o, o, o, o);
+}
+
+/* A ray aimed at a point of the line where a floor and a wall meet finds
+ * it on one of them, rounding putting it a hair on either side of the
+ * other: its direct light, occlusion and gathered light must be those of
+ * that surface just beside the line (with the same sample directions), at
+ * scales 1e-4 to 1e6 and moved 1e7 away. (The light makes the floor's
+ * direct light and the wall's differ, which tells which was met.) Before
+ * the step back (geometry/ray.h) such points were black in shadow, their
+ * occlusion rays escaped through the wall, and a third of their gathered
+ * light was missing. */
+static void indirect_corner_points_see_their_whole_hemisphere(void)
+{
+    static const double moves[][2] = {{1, 0}, {1e-4, 0}, {1e6, 0}, {1, 1e7}, {1e-4, 1e7}};
+    static const double along[] = {0.3, 1.7, -2.1, 0.05, 3.3};
+    static const char *const kind[3] = {"direct", "occlusion", "gathered"};
+    char text[2000];
+    int compared = 0;
+
+    for (size_t m = 0; m < sizeof moves / sizeof moves[0]; m++) {
+        double s = moves[m][0], o = moves[m][1];
+        Indirect lit = {0, 1, 0, 1, 0, 0}, ao = {1024, 2 * s, 0, 1, 0, 0},
+                 gi = {0, 1, 256, 1, 0, 0}, kinds[3] = {lit, ao, gi};
+        Scene sc;
+        RayCounts counts = {0};
+
+        indirect_corner_scene(text, sizeof text, s, o);
+        if (indirect_scene(text, &sc) != 0)
+            return;
+        for (size_t a = 0; a < sizeof along / sizeof along[0]; a++) {
+            Vec3 eye = vec3(1.3 * s + o, 0.9 * s + o, (along[a] - 0.4 - a) * s + o);
+            double z = along[a] * s + o;
+            Vec3 aims[3] = {vec3(o, o, z), vec3(1e-3 * s + o, o, z),
+                            vec3(o, 1e-3 * s + o, z)}; /* corner, floor, wall */
+            double c[3][3];
+            int wall;
+
+            for (int k = 0; k < 3; k++)
+                for (int p = 0; p < 3; p++)
+                    c[p][k] = indirect_seen(&sc, kinds[k], eye, vec3_sub(aims[p], eye), &counts).r;
+            CHECK(fabs(c[1][0] - c[2][0]) > 20);
+            wall = fabs(c[0][0] - c[2][0]) < fabs(c[0][0] - c[1][0]);
+            for (int k = 0; k < 3; k++) {
+                if (fabs(c[0][k] - c[1 + wall][k]) > 2)
+                    test_fail(__FILE__, __LINE__, "scale %g, offset %g, z %g, %s: %.1f beside %.1f",
+                              s, o, along[a], kind[k], c[0][k], c[1 + wall][k]);
+                compared++;
+            }
+        }
+        scene_free(&sc);
+    }
+    CHECK_INT(75, compared);
+}
+
 const TestCase trace_indirect_tests[] = {
     {"indirect_occlusion_follows_the_cosine_law", indirect_occlusion_follows_the_cosine_law},
     {"indirect_gathering_from_a_uniformly_lit_ball", indirect_gathering_from_a_uniformly_lit_ball},
     {"indirect_bytes_do_not_depend_on_threads", indirect_bytes_do_not_depend_on_threads},
     {"indirect_that_finds_nothing_changes_nothing", indirect_that_finds_nothing_changes_nothing},
     {"indirect_bounces_add_light_and_converge", indirect_bounces_add_light_and_converge},
+    {"indirect_corner_points_see_their_whole_hemisphere",
+     indirect_corner_points_see_their_whole_hemisphere},
     {NULL, NULL},
 };

@@ -112,7 +112,25 @@ void ray_diff_refract(Vec3 d, const RayDiff *diff, Vec3 n, const Vec3 dn[2], con
  * point) onto n, and each moved component is then rounded one more ulp away
  * from p. This is the method of pbrt-v4 (Pharr, Jakob, Humphreys, 4th ed.,
  * section 6.8.6), applied to world-space points.
+ *
+ * A ray leaving on the side n faces (w . n >= 0) first takes the step
+ * `back` (ray_back_step(), or zero for none).
  */
-Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w);
+Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 back, Vec3 n, Vec3 w);
+
+/*
+ * Returns the step that a ray leaving the hit p (error bound perr) of ray
+ * at t, on the side ray came from, takes back toward ray's origin before
+ * its offset (ray_offset_origin()), so that it also starts on ray's side
+ * of any other surface p lies on: at a corner, where p is on two surfaces
+ * and rounding may have put it a hair behind the second, a shadow or
+ * gathering ray leaving the first would otherwise meet the second at once
+ * (or pass behind it). The step is 16 times the larger of the largest
+ * offset perr gives and p's error as ray's reach gives it, gamma(16)
+ * (|p| + 2 |t dir|) in largest components, so that it clears a surface
+ * ray met at a cosine of 1/8 or more; it never goes more than 15/16 of the
+ * way back.
+ */
+Vec3 ray_back_step(const Ray *ray, real t, Vec3 p, Vec3 perr);
 
 #endif

@@ -47,6 +47,8 @@ static inline void shade_footprint_dn(const ShadeFootprint *fp, int flip, Vec3 d
 /* What shading needs to know about the point a ray hit. */
 typedef struct {
     SurfacePoint sp;          /* the point, its outward normal and error */
+    Vec3 back;                /* the step back toward the ray that met it
+                                 its rays take (ray_back_step()) */
     Material material;        /* the object's material */
     Colour colour;            /* Ci: the material's colour or its texture's */
     double ambient;           /* the share of the ambient light that reaches
@@ -54,6 +56,18 @@ typedef struct {
     const ShadeFootprint *footprint; /* the pixel's footprint there, or NULL
                                  when the ray carries no differentials */
 } Shade;
+
+/* Returns the step back that rays leaving sp (the hit of ray at t in
+ * scene) take at corners (ray_back_step()): none in a scene of spheres
+ * alone, whose secondary rays the course pins (re-projected, offset along
+ * N; course-format.md), so that its bytes stay the course reference's. */
+static inline Vec3 shade_back_step(const Scene *scene, const Ray *ray, real t,
+                                   const SurfacePoint *sp)
+{
+    if (scene->kinds == 1u << SHAPE_SPHERE)
+        return vec3(0, 0, 0);
+    return ray_back_step(ray, t, sp->point, sp->error);
+}
 
 /* Returns the shading record of hit, crossed by ray, in scene; with
  * differentials diff (NULL: none), fills *fp with the footprint they give

@@ -62,10 +62,11 @@ struct Model;
 struct GiCache;
 
 /* A point where a ray's path gathers light (trace.h): on its surface,
- * with the error bound of its position, the normal facing the ray and the
- * shading normal on its side, and the diffuse bounces taken to it. */
+ * with the error bound of its position, the step back toward the ray that
+ * met it its rays take (ray_back_step()), the normal facing the ray and
+ * the shading normal on its side, and the diffuse bounces taken to it. */
 typedef struct {
-    Vec3 point, error, n, ns;
+    Vec3 point, error, back, n, ns;
     int bounce;
 } GatherPoint;
 

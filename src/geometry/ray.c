@@ -11,7 +11,7 @@ static inline real ray_nudge(real x, real step)
     return step == 0 || !(step == step) ? x : real_next(x, step > 0);
 }
 
-Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
+Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 back, Vec3 n, Vec3 w)
 {
     real d = vec3_dot(vec3_abs(n), perr);
     Vec3 offset = vec3_scale(n, d);
@@ -19,11 +19,38 @@ Vec3 ray_offset_origin(Vec3 p, Vec3 perr, Vec3 n, Vec3 w)
 
     if (vec3_dot(w, n) < 0)
         offset = vec3_neg(offset);
+    else
+        p = vec3_add(p, back);
     o = vec3_add(p, offset);
     o.x = ray_nudge(o.x, offset.x);
     o.y = ray_nudge(o.y, offset.y);
     o.z = ray_nudge(o.z, offset.z);
     return o;
+}
+
+/* Returns the largest of |a|'s components (as vec3_max_abs(), without
+ * its libm calls: a hit's step is taken at every hit). */
+static inline real ray_largest(Vec3 a)
+{
+    real x = fabs(a.x), y = fabs(a.y), z = fabs(a.z), m = x > y ? x : y;
+
+    return m > z ? m : z;
+}
+
+Vec3 ray_back_step(const Ray *ray, real t, Vec3 p, Vec3 perr)
+{
+    Vec3 back = vec3_scale(ray->dir, -t);
+    real way = ray_largest(back);
+    /* The hit's error, as the arriving ray's reach gives it, and the
+     * largest offset its error bound can give (in largest components:
+     * gamma(16) covers the lengths' sqrt(3)). */
+    real e = real_gamma(16) * (ray_largest(p) + 2 * way);
+    real d = perr.x + perr.y + perr.z;
+    real step = 16 * (e > d ? e : d);
+
+    if (!(way > 0))
+        return vec3(0, 0, 0);
+    return vec3_scale(back, step < way * 15 / 16 ? step / way : (real)15 / 16);
 }
 
 int ray_refract(Vec3 d, Vec3 n, real eta, Vec3 *out)

@@ -33,8 +33,8 @@
 
 /* Where in its pixel a round traces: near the centre, but not on it, nor
  * on a simple fraction of it: a room's corner seen square on runs through
- * pixels' centres, and a point exactly on that seam gathers half its light
- * from beyond the walls (a record there would darken its neighbours). */
+ * pixels' centres, and a record on that line sees the wall beside it at
+ * distance 0: its radius falls to the least, IRR_FINEST. */
 #define IRR_AT_X 0.5 + 0.1234
 #define IRR_AT_Y 0.5 - 0.0917
 
@@ -102,7 +102,7 @@ static double irr_sample(void *ctx, Vec3 dir, Colour *c)
         return INFINITY;
     }
     ray.dir = dir;
-    ray.origin = ray_offset_origin(r->at->point, r->at->error, r->at->n, dir);
+    ray.origin = ray_offset_origin(r->at->point, r->at->error, r->at->back, r->at->n, dir);
     r->t->counts->gather++;
     r->t->gicache_hint[1] = r->wedges[i % r->n];
     *c = trace_gathered(r->t, &ray, r->bounce, sampler_branch(r->key, i), &met);

@@ -82,6 +82,7 @@ static Shade mpl_light_shade(const Scene *scene, const Ray *ray, const Hit *hit,
     sh.sp.normal = vec3(sh.sp.point.x - c->centre.x, 0, sh.sp.point.z - c->centre.z);
     sh.sp.shading = sh.sp.normal;
     sh.sp.error = vec3_scale(vec3_abs(sh.sp.point), real_gamma(8));
+    sh.back = shade_back_step(scene, ray, hit->t, &sh.sp);
     mapping_mpl(scene, hit->kind, hit->index, &sh.sp, uv, &stripe);
     sh.colour = shade_texel(scene, &sh.material, uv, stripe, 0);
     return sh;
@@ -126,7 +127,7 @@ static Ray mpl_light_indirect_ray(const Tracer *t, const SamplerGrid *g, unsigne
     Ray r;
 
     r.dir = mpl_light_direction(t, g, t->sample->k * rays + i, key, n);
-    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, r.dir);
     return r;
 }
 
@@ -234,7 +235,7 @@ static Colour mpl_light_secondary(const Tracer *t, const Ray *ray, Vec3 v, const
     Ray r;
 
     r.dir = dir;
-    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, dir);
     if (depth + 1 > t->max_depth)
         return colour_scale(trace_background(t->scene, &r), 1.0 / 255);
     if (kind == RAY_REFRACTION)

@@ -128,6 +128,7 @@ Shade shade_at_footprint(const Scene *scene, const Ray *ray, const Hit *hit, con
                               want_uv ? uv : NULL);
         clamp_v = SHAPE_CLAMPS_V >> hit->kind & 1;
     }
+    sh.back = shade_back_step(scene, ray, hit->t, &sh.sp);
     if (mpl && mapping_mpl(scene, hit->kind, hit->index, &sh.sp, uv, &stripe))
         clamp_v = 1;
     /* A colour averaged over the footprint is read there alone. */
@@ -154,7 +155,7 @@ SHADE_INLINE Ray shade_shadow_ray(const Shade *sh, Vec3 n, const Light *light, V
 {
     Ray shadow;
 
-    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, to_light);
+    shadow.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, to_light);
     /* To a point light, the segment ends at the light (t = 1); towards a
      * distant one, the ray is unbounded. */
     shadow.dir = light->distant ? to_light : vec3_sub(light->position, shadow.origin);

@@ -103,7 +103,7 @@ static inline TracePath trace_child(const Tracer *t, const Ray *ray, const Shade
 
     next.met = NULL;
     d->ray.dir = dir;
-    d->ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, dir);
+    d->ray.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, dir);
     d->has_diff = path.diff && sh->footprint;
     if (d->has_diff)
         trace_child_diff(ray, sh, n, kind, dir, path.diff, &d->diff);
@@ -248,7 +248,7 @@ static double trace_occlusion(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns)
         r.dir = vec3_from_frame(ns, d[0], d[1], d[2]);
         if (!(vec3_dot(r.dir, n) > 0))
             continue;
-        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, r.dir);
         t->counts->occlusion++;
         open += !visibility_occluded(t->scene, &r, t->indirect.ao_distance);
     }
@@ -333,7 +333,7 @@ static Colour trace_gather(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, in
         r.dir = vec3_from_frame(ns, d[0], d[1], d[2]);
         if (!(vec3_dot(r.dir, n) > 0))
             continue;
-        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, n, r.dir);
+        r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, r.dir);
         if (path.diff && sh->footprint) {
             trace_gather_diff(sh->footprint, r.dir, rays, &spread);
             next.diff = &spread;
@@ -364,7 +364,7 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
     Colour g;
 
     if (t->collect) { /* the irradiance cache's pre-pass: where, not how much */
-        GatherPoint p = {sh->sp.point, sh->sp.error, n, ns, path.bounce};
+        GatherPoint p = {sh->sp.point, sh->sp.error, sh->back, n, ns, path.bounce};
         gather_points_add(t->collect, &p);
         return colour(0, 0, 0);
     }
