@@ -177,7 +177,10 @@ SCENES := $(wildcard scenes/*.txt)
 GALLERY := $(SCENES:scenes/%.txt=docs/gallery/%.png) docs/gallery/indirect-ao16.png \
 	docs/gallery/indirect-gi16.png docs/gallery/indirect-gi256.png \
 	docs/gallery/mpl-modelphysical.png docs/gallery/materials-noise4maxspp1024.png \
-	docs/gallery/horizon-texturefilterbilinear.png docs/gallery/materials-texturefilterbilinear.png
+	docs/gallery/horizon-texturefilterbilinear.png docs/gallery/materials-texturefilterbilinear.png \
+	docs/gallery/room-gi16passindirect.png docs/gallery/indirect-ao16passao.png \
+	docs/gallery/indirect-passalbedo.png docs/gallery/indirect-passnormal.png \
+	docs/gallery/indirect-passdepth.png
 
 .PHONY: all test check clean install uninstall gallery bench race trade trade-cache report fuzz fuzz-long memcheck mpl
 
@@ -356,6 +359,14 @@ docs/gallery/materials-noise4maxspp1024.png: scenes/materials.txt raytrace
 # at a point), beside their default renders.
 docs/gallery/%-texturefilterbilinear.png: scenes/%.txt raytrace
 	./raytrace -q --texture-filter bilinear $< $@
+# One part of a picture alone (--pass): the room's gathered light, and the
+# parts of the indirect room read off its surfaces.
+docs/gallery/room-gi16passindirect.png: scenes/room.txt raytrace
+	./raytrace -q --gi 16 --pass indirect $< $@
+docs/gallery/indirect-ao16passao.png: scenes/indirect.txt raytrace
+	./raytrace -q --ao 16 --pass ao $< $@
+docs/gallery/indirect-pass%.png: scenes/indirect.txt raytrace
+	./raytrace -q --pass $* $< $@
 # The MPL ray tracer's example by our physical model, beside its program's.
 docs/gallery/mpl-modelphysical.png: scenes/mpl.txt raytrace
 	./raytrace -q --model physical $< $@

@@ -290,6 +290,25 @@ printf 'm a PLASTIC 1 1 1 0 0.4 40 N 1.5\n' >"$T/old.txt"
 expect_exit "raytrace 0.1's layout" 1 "$RT" --check "$T/old.txt"
 expect_grep "raytrace 0.1's layout message" "old.txt:1:30: error: the material has an 11th field, '1.5'" "$T/err"
 
+# --- --pass: its words, its notes, the picture unchanged without it ---
+expect_exit "--pass bogus" 2 "$RT" --pass bogus scenes/course.txt "$T/x.ppm"
+expect_grep "--pass bogus names the passes" "takes full, direct, indirect, ao, albedo, normal or depth" "$T/err"
+"$RT" -q --pass full scenes/course.txt "$T/pf.ppm" && "$RT" -q scenes/course.txt "$T/p0.ppm" &&
+    cmp -s "$T/pf.ppm" "$T/p0.ppm" && pass || fail "--pass full is not the picture"
+expect_exit "--pass indirect without gathering" 0 "$RT" --pass indirect --size 40x40 scenes/room.txt "$T/pi.ppm"
+expect_grep "--pass indirect without gathering" \
+    "raytrace: note: --pass indirect is black here: no light is gathered (--gi N)" "$T/err"
+[ "$(tail -c +16 "$T/pi.ppm" | tr -d '\0' | wc -c)" -eq 0 ] && pass || fail "--pass indirect without gathering is not black"
+expect_exit "--pass ao without occlusion rays" 0 "$RT" --pass ao --size 40x40 scenes/room.txt "$T/pa.ppm"
+expect_grep "--pass ao without occlusion rays" \
+    "raytrace: note: --pass ao is white here: no occlusion rays are cast (--ao N)" "$T/err"
+# A data pass takes no gamma: the MPL model's floor, facing up, is (n + 1) / 2
+# = (128, 255, 128) in its normal pass, not gamma-encoded.
+"$RT" -q --pass normal --size 60x60 scenes/mpl.txt "$T/pn.ppm" &&
+    [ "$(tail -c 3 "$T/pn.ppm" | od -An -tu1 | tr -s ' ')" = " 128 255 128" ] && pass ||
+    fail "the MPL model's normal pass: the floor's last pixel is not (128, 255, 128)" \
+        "$(tail -c 3 "$T/pn.ppm" | od -An -tu1)"
+
 # --- --texture-filter: what it changes, its note, the mip-maps' memory ---
 expect_exit "--texture-filter cubic" 2 "$RT" --texture-filter cubic scenes/horizon.txt "$T/x.ppm"
 expect_exit "--texture-filter on no texture" 0 "$RT" --texture-filter trilinear "$T/small.txt" "$T/tf.ppm"

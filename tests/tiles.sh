@@ -178,6 +178,11 @@ printf 'P3\n1 1\n255\n9 9 9\n' >"$T/tex/textures/checker.ppm"
 "$RT" -q --tile 2/2 "$T/tex/textures.txt" "$T/tex-2.ppm"
 refused "a texture changed" "raytrace-merge: $T/tex-2.ppm: error: a tile of another render" \
     "$T/tex-1.ppm" "$T/tex-2.ppm"
+# Two passes of one scene are two renders.
+"$RT" -q --tile 1/2 --pass albedo scenes/course.txt "$T/pass-1.ppm"
+"$RT" -q --tile 2/2 --pass normal scenes/course.txt "$T/pass-2.ppm"
+refused "another pass" "raytrace-merge: $T/pass-2.ppm: error: a tile of another render" \
+    "$T/pass-1.ppm" "$T/pass-2.ppm"
 # raytrace itself: more tiles than rows, a bad K/N, a lossy or float tile.
 "$RT" -q --tile 1/401 scenes/course.txt "$T/x.ppm" 2>"$T/err"
 [ $? = 1 ] && grep -q "the picture has 400 rows, so at most 400 tiles" "$T/err" && pass ||

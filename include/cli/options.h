@@ -61,6 +61,8 @@ typedef struct {
                                 NULL */
     int texture_filter;      /* --texture-filter: a TextureFilter for every
                                 texture and stripes; -1: the scene's */
+    int pass;                /* --pass: a TracePass (pass.h); 0, the
+                                picture */
 } Options;
 
 /* What options_parse() found the command line asks for. */

@@ -50,6 +50,7 @@ typedef struct {
     const struct GiCache *gicache; /* under indirect.gi_cache, the records
                                 irradiance_build() placed (NULL: none, every
                                 point gathers) */
+    TracePass pass;          /* the picture, or one part of it (pass.h) */
 } RenderOptions;
 
 /* Renders scene into img, which must already be sized to the scene's

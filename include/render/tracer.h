@@ -102,6 +102,17 @@ typedef struct {
                             NULL (render.c) */
 } TraceSample;
 
+/* What a render shows (--pass, pass.h): the picture, or one part of it. */
+typedef enum {
+    TRACE_PASS_FULL,     /* the picture */
+    TRACE_PASS_DIRECT,   /* all but the gathered light */
+    TRACE_PASS_INDIRECT, /* the gathered light alone */
+    TRACE_PASS_AO,       /* the first surface's ambient share kept */
+    TRACE_PASS_ALBEDO,   /* its colour */
+    TRACE_PASS_NORMAL,   /* its shading normal */
+    TRACE_PASS_DEPTH     /* its distance */
+} TracePass;
+
 typedef struct {
     const Scene *scene; /* what is traced */
     int max_depth;      /* deepest mirror or refracted ray traced,
@@ -140,6 +151,8 @@ typedef struct {
                             (visibility_nearest_skipping()); 0: none */
     GatherPoints *collect; /* non-NULL: diffuse points gather nothing, but
                             are added here (the cache's pre-pass) */
+    TracePass pass;      /* what the camera's rays bring back (pass.h) */
+    double depth_scale;  /* the depth pass's s (pass_depth_scale()) */
 } Tracer;
 
 #endif

@@ -161,6 +161,11 @@ void adjust_render(const Options *opts, Scene *scene, RenderOptions *ropts)
     if (opts->ao_distance > 0 && ropts->indirect.ao_samples == 0)
         adjust_note(opts, "--ao-distance changes nothing here: no ambient occlusion rays are cast "
                         "(--ao N)");
+    ropts->pass = (TracePass)opts->pass;
+    if (ropts->pass == TRACE_PASS_INDIRECT && ropts->indirect.gi_samples == 0)
+        adjust_note(opts, "--pass indirect is black here: no light is gathered (--gi N)");
+    if (ropts->pass == TRACE_PASS_AO && ropts->indirect.ao_samples == 0)
+        adjust_note(opts, "--pass ao is white here: no occlusion rays are cast (--ao N)");
     if (opts->gi_bounces > 0 && model->bounces_note && ropts->indirect.gi_samples > 0)
         adjust_note_why(opts, "--gi-bounces", model->bounces_note);
     else if (opts->gi_bounces > 0 && ropts->indirect.gi_samples == 0)
@@ -200,6 +205,8 @@ uint64_t adjust_fingerprint(const Scene *scene, const RenderOptions *ropts)
         memcpy(&bits, &a, sizeof bits);
         h = hash_u64(hash_u64(h, 0x6763), bits);
     }
+    if (ropts->pass != TRACE_PASS_FULL) /* else the hash of earlier versions */
+        h = hash_u64(hash_u64(h, 0x7061), (uint64_t)ropts->pass);
     h = hash_u64(h, (uint64_t)scene->camera.width << 32 | (uint64_t)scene->camera.height);
     return hash_u64(h, sizeof(real)); /* a float build's pixels differ */
 }

@@ -24,6 +24,7 @@
 #include "math/number.h"
 #include "render/irradiance.h"
 #include "render/model.h"
+#include "render/pass.h"
 #include "render/render.h"
 #include "scene/scene.h"
 #include "scene/scene_accel.h"
@@ -291,14 +292,19 @@ static int main_prepare(const Options *opts, const WriterOptions *wopts, size_t 
     return 0;
 }
 
-/* Allocates *img for scene's camera, keeping its linear colours for PFM;
- * returns 0, or -1 with *err set (and *img empty). */
+/* Allocates *img for rows of scene's camera, keeping its linear colours
+ * for PFM, gamma-encoded as its model asks (but for a data pass of
+ * ropts); returns 0, or -1 with *err set (and *img empty). */
 static int main_image(const Options *opts, const WriterOptions *wopts, const Scene *scene,
-                      int rows, Image *img, Error *err)
+                      const RenderOptions *ropts, int rows, Image *img, Error *err)
 {
     int w = scene->camera.width, h = rows;
+    /* A data pass is not a picture: its bytes take no gamma. */
+    double gamma = pass_is_data(ropts->pass) ? 0 : model_of(scene)->gamma;
 
-    if (image_init(img, w, h) == 0 && (wopts->format != FORMAT_PFM || image_keep_linear(img) == 0))
+    if (image_init(img, w, h) == 0 &&
+        (wopts->format != FORMAT_PFM || image_keep_linear(img) == 0) &&
+        (!(gamma > 0) || image_encode_gamma(img, gamma) == 0))
         return 0;
     error_set(err, opts->scene_path, "out of memory: a %d x %d image needs %zu bytes%s", w, h,
               image_size(w, h), wopts->format == FORMAT_PFM ? ", and 4 times that for PFM" : "");
@@ -563,10 +569,9 @@ static int main_render(const Options *opts)
         ropts.row_step = tile.step;
         rows = tile.count;
     }
-    if (main_image(opts, &wopts, &scene, rows, &img, &err) != 0)
+    if (main_image(opts, &wopts, &scene, &ropts, rows, &img, &err) != 0)
         goto fail_scene;
-    if ((model_of(&scene)->gamma > 0 && image_encode_gamma(&img, model_of(&scene)->gamma) != 0) ||
-        main_noise_record(opts, &img, &ropts) != 0) {
+    if (main_noise_record(opts, &img, &ropts) != 0) {
         error_set(&err, opts->scene_path, "out of memory");
         goto fail_image_only;
     }

@@ -98,6 +98,15 @@ const char *const *options_help(void)
         "  --gi-cache-error E the cache's accuracy, 0.01 to 2 (default 0.3;\n"
         "                     smaller: more records, closer to gathering)\n"
         "  --gi-cache-map FILE also write where the cache's records fell\n"
+        "  --pass P           write one part of the picture alone: direct (all\n"
+        "                     but the gathered light) or indirect (the gathered\n"
+        "                     light: in PFM the two add up to the picture), or\n"
+        "                     of the first surface seen: ao (the share of the\n"
+        "                     ambient light occlusion keeps, grey), albedo (its\n"
+        "                     colour), normal ((n + 1) / 2: x red, y green, z\n"
+        "                     blue) or depth (grey s / (s + d): s the distance\n"
+        "                     the picture's centre sees, mid-grey); default\n"
+        "                     full, the picture\n"
         "  --tile K/N         render only the K-th of N tiles (1 <= K <= N <= 65536)\n"
         "                     to OUTPUT, a PPM, PNG or PFM that records where it\n"
         "                     belongs; raytrace-merge puts the tiles together\n"
@@ -162,6 +171,11 @@ static const ArgWord options_models[] = {{"mpl", SCENE_MODEL_MPL, 0},
                                            {"seed001", SCENE_MODEL_MPL, 1},
                                            {"physical", SCENE_MODEL_PHYSICAL, 0},
                                            {NULL, 0, 0}};
+static const ArgWord options_passes[] = {
+    {"full", TRACE_PASS_FULL, 0},      {"direct", TRACE_PASS_DIRECT, 0},
+    {"indirect", TRACE_PASS_INDIRECT, 0}, {"ao", TRACE_PASS_AO, 0},
+    {"albedo", TRACE_PASS_ALBEDO, 0},  {"normal", TRACE_PASS_NORMAL, 0},
+    {"depth", TRACE_PASS_DEPTH, 0},    {NULL, 0, 0}};
 static const ArgWord options_scene_formats[] = {{"course", SCENE_COURSE, 0},
                                                     {"keyword", SCENE_KEYWORD, 0},
                                                     {"mpl", SCENE_MPL, 0},
@@ -207,6 +221,7 @@ static const ArgSpec options_table[] = {
     {"--max-spp", OPT(NULL, ARG_INT, max_spp), 1, NOISE_SPP_LIMIT, NULL, 0},
     {"--spp-map", OPT(NULL, ARG_TEXT, spp_map), 0, 0, NULL, 0},
     {"--texture-filter", OPT(NULL, ARG_WORD, texture_filter), 0, 0, options_filters, 0},
+    {"--pass", OPT(NULL, ARG_WORD, pass), 0, 0, options_passes, 0},
 };
 #undef OPT
 

@@ -7,6 +7,7 @@
 
 #include "math/angle.h"
 #include "math/power.h"
+#include "render/pass.h"
 #include "render/sampler.h"
 #include "render/shade.h"
 #include "render/trace.h"
@@ -182,6 +183,8 @@ static Colour mpl_light_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v,
     double spec = g > 0 && cos2 > 0 ? power(cos2 < 1 ? cos2 : 1, g) : 0;
     Colour sum = colour(0, 0, 0);
 
+    if (!pass_shows_own(t, 0))
+        return sum;
     for (size_t i = 0; i < scene->light_count; i++) {
         const Light *light = &scene->lights[i];
         double w = light->intensity, cosine, e;
@@ -218,6 +221,15 @@ static Colour mpl_light_lights(const Tracer *t, const Shade *sh, Vec3 n, Vec3 v,
     return sum;
 }
 
+/* Returns the background (0..1) ray sees when t's pass shows it (pass.h),
+ * else black. */
+static Colour mpl_light_background(const Tracer *t, const Ray *ray)
+{
+    if (!pass_shows_own(t, 0))
+        return colour(0, 0, 0);
+    return colour_scale(trace_background(t->scene, ray), 1.0 / 255);
+}
+
 /* Returns the colour (0..1) seen along ray, with differentials diff
  * (NULL: none), of depth `depth`, on path key. */
 static Colour mpl_light_path(const Tracer *t, const Ray *ray, const RayDiff *diff, int depth,
@@ -237,7 +249,7 @@ static Colour mpl_light_secondary(const Tracer *t, const Ray *ray, Vec3 v, const
     r.dir = dir;
     r.origin = ray_offset_origin(sh->sp.point, sh->sp.error, sh->back, n, dir);
     if (depth + 1 > t->max_depth)
-        return colour_scale(trace_background(t->scene, &r), 1.0 / 255);
+        return mpl_light_background(t, &r);
     if (kind == RAY_REFRACTION)
         t->counts->refraction++;
     else
@@ -272,11 +284,17 @@ static Colour mpl_light_path(const Tracer *t, const Ray *ray, const RayDiff *dif
     real eta;
 
     if (!mpl_light_nearest(scene, ray, INFINITY, &hit))
-        return colour_scale(trace_background(scene, ray), 1.0 / 255);
+        return mpl_light_background(t, ray);
     sh = mpl_light_shade(scene, ray, &hit, diff, &fp);
     pm = &scene->named[sh.material.named];
     v = vec3_normalize(ray->dir);
     n = ray_facing_normal(sh.sp.normal, v);
+    if (depth == 0 && pass_is_data(t->pass))
+        return colour_scale(pass_value(t, ray, hit.t, &sh, n,
+                                       t->indirect.ao_samples > 0
+                                           ? mpl_light_occlusion(t, &sh, n, key)
+                                           : 1),
+                            1.0 / 255);
     a = colour_scale(sh.colour, 1.0 / 255);
     switch (pm->model) {
     case MODEL_METALLIC:
@@ -304,7 +322,7 @@ static Colour mpl_light_path(const Tracer *t, const Ray *ray, const RayDiff *dif
     }
     default: /* MATTE */
         c = mpl_light_lights(t, &sh, n, v, a, pm->shininess);
-        if (t->indirect.gi_samples > 0)
+        if (t->indirect.gi_samples > 0 && pass_shows_gathered(t, 0))
             c = colour_add(c, mpl_light_gather(t, &sh, n, key));
         c = colour_scale(colour_mul(c, a), 1 / ANGLE_PI);
         break;
@@ -322,7 +340,7 @@ Colour mpl_light_trace(const Tracer *t, const Ray *ray)
 Colour mpl_light_miss(const Tracer *t, const Ray *ray)
 {
     /* As mpl_light_path() answers, on mpl_light_trace_diff()'s scale. */
-    return colour_scale(colour_scale(trace_background(t->scene, ray), 1.0 / 255), 255);
+    return colour_scale(mpl_light_background(t, ray), 255);
 }
 
 int mpl_light_miss_uniform(const Tracer *t)

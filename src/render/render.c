@@ -9,6 +9,7 @@
 #include "render/gicache.h"
 #include "render/model.h"
 #include "render/noise.h"
+#include "render/pass.h"
 #include "render/sampler.h"
 #include "render/trace.h"
 #include "render/visibility.h"
@@ -392,6 +393,7 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
     /* One sample a pixel: the columns' part of the primary rays, made once
      * (without the room, each pixel makes its own). */
     CameraStep *columns = g.n == 1 && !noise ? malloc((size_t)img->width * sizeof *columns) : NULL;
+    double depth_scale = opts->pass == TRACE_PASS_DEPTH ? pass_depth_scale(scene) : 0;
 
     if (cutting)
         cut_init(&proto, scene, opts->cutoff);
@@ -420,6 +422,8 @@ int render(const Scene *scene, const RenderOptions *opts, Image *img, RayCounts 
         t.no_shadows = opts->no_shadows;
         t.gicache = opts->indirect.gi_cache ? opts->gicache : NULL;
         t.footprint_scale = render_footprint_scale(noise ? noise_most(&opts->noise) : g.n);
+        t.pass = opts->pass;
+        t.depth_scale = depth_scale;
 
         for (int k = 0; k < TRACE_OCCLUDERS; k++)
             occluders[k] = BVH_NO_SLOT;

@@ -9,6 +9,7 @@
 #include "math/angle.h"
 #include "render/gicache.h"
 #include "render/cut.h"
+#include "render/pass.h"
 #include "render/sampler.h"
 #include "render/shade.h"
 #include "render/visibility.h"
@@ -221,6 +222,8 @@ Colour trace_ray_diff(const Tracer *t, const Ray *ray, const RayDiff *diff)
 Colour trace_miss(const Tracer *t, const Ray *ray)
 {
     /* As trace_named_path() and trace_path() answer at depth 0. */
+    if (!pass_shows_own(t, 0))
+        return colour(0, 0, 0);
     return t->named ? trace_background(t->scene, ray) : t->scene->background;
 }
 
@@ -363,6 +366,8 @@ static Colour trace_indirect(const Tracer *t, const Shade *sh, Vec3 n, Vec3 ns, 
 {
     Colour g;
 
+    if (!pass_shows_gathered(t, path.bounce))
+        return colour(0, 0, 0);
     if (t->collect) { /* the irradiance cache's pre-pass: where, not how much */
         GatherPoint p = {sh->sp.point, sh->sp.error, sh->back, n, ns, path.bounce};
         gather_points_add(t->collect, &p);
@@ -397,6 +402,27 @@ Colour trace_background(const Scene *scene, const Ray *ray)
     return colour_add(colour_scale(scene->sky, up), colour_scale(scene->background, 1 - up));
 }
 
+/* Returns shade_phong() when t's pass shows the own light of a point of
+ * path (pass.h), else black. */
+static inline Colour trace_own_phong(const Tracer *t, TracePath path, const Shade *sh,
+                                     const NamedMaterial *pm, Vec3 n, Vec3 ns, Vec3 view,
+                                     Colour weight)
+{
+    if (!pass_shows_own(t, path.bounce))
+        return colour(0, 0, 0);
+    return shade_phong(t, sh, pm, n, ns, view, weight);
+}
+
+/* Returns the colour of t's data pass (pass.h) at sh, the first surface
+ * the camera's ray met (hit; n and ns its facing normals). */
+static Colour trace_pass(const Tracer *t, const Ray *ray, const Hit *hit, const Shade *sh, Vec3 n,
+                         Vec3 ns)
+{
+    double share = t->indirect.ao_samples > 0 ? trace_occlusion(t, sh, n, ns) : 1;
+
+    return pass_value(t, ray, hit->t, sh, ns, share);
+}
+
 /* Returns the colour of a named material's surface at sh (the ray arriving
  * along ray at depth `depth` with weight; n and ns its facing normals):
  * the local term of its model (shade.h) and the mirror and refracted rays
@@ -414,7 +440,7 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
 
     switch (pm->model) {
     case MODEL_MATTE:
-        c = shade_phong(t, sh, pm, n, ns, view, weight);
+        c = trace_own_phong(t, path, sh, pm, n, ns, view, weight);
         if (trace_gathers(t, path))
             c = colour_add(c, trace_indirect(t, sh, n, ns, depth, weight, path, pm->kd));
         return c;
@@ -422,7 +448,7 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
         /* A clear coat over the diffuse surface: Fresnel's share mirrors,
          * the rest is the surface's own light. */
         f = ray_fresnel(ray->dir, ns, eta);
-        local = shade_phong(t, sh, pm, n, ns, view, colour_scale(weight, 1 - f));
+        local = trace_own_phong(t, path, sh, pm, n, ns, view, colour_scale(weight, 1 - f));
         if (trace_gathers(t, path))
             local = colour_add(local, trace_indirect(t, sh, n, ns, depth,
                                                      colour_scale(weight, 1 - f), path, pm->kd));
@@ -433,7 +459,7 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
         return c;
     case MODEL_METALLIC:
         /* A mirror tinted by its colour, and the highlights. */
-        c = shade_phong(t, sh, pm, n, ns, view, weight);
+        c = trace_own_phong(t, path, sh, pm, n, ns, view, weight);
         if (deeper)
             c = colour_add(c, trace_named_secondary(t, ray, sh, n, ray_reflect(ray->dir, ns), RAY_REFLECTION,
                                               tint, depth + 1, weight, path));
@@ -442,7 +468,7 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
         /* Fresnel's share mirrors, the rest enters, tinted; all of it
          * mirrors on total internal reflection. Highlights show on the
          * outer side only: inside, the surface is glass to glass. */
-        c = entering ? shade_phong(t, sh, pm, n, ns, view, weight) : colour(0, 0, 0);
+        c = entering ? trace_own_phong(t, path, sh, pm, n, ns, view, weight) : colour(0, 0, 0);
         if (!deeper)
             return c;
         f = ray_refract(ray->dir, ns, eta, &bent) ? ray_fresnel(ray->dir, ns, eta) : 1;
@@ -456,7 +482,7 @@ static Colour trace_named(const Tracer *t, const Ray *ray, const Shade *sh, Vec3
     default: { /* Blinn-Phong: Whitted's sum, the weights already scaling
                 * the local term */
         double r = m->reflection, tr = m->transparency;
-        c = shade_phong(t, sh, pm, n, ns, view, weight);
+        c = trace_own_phong(t, path, sh, pm, n, ns, view, weight);
         if (pm->kd > 0 && trace_gathers(t, path))
             c = colour_add(c, trace_indirect(t, sh, n, ns, depth, weight, path, pm->kd));
         if (!deeper)
@@ -497,7 +523,8 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     Vec3 n, ns;
 
     if (!trace_nearest(t, ray, depth, path, &hit))
-        return path.bounce > 0 ? colour(0, 0, 0) : trace_background(scene, ray);
+        return path.bounce == 0 && pass_shows_own(t, 0) ? trace_background(scene, ray)
+                                                        : colour(0, 0, 0);
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     if (path.met) {
         path.met->t = (double)hit.t;
@@ -505,6 +532,8 @@ static Colour trace_named_path(const Tracer *t, const Ray *ray, int depth, Colou
     }
     n = ray_facing_normal(sh.sp.normal, ray->dir);
     ns = vec3_dot(sh.sp.shading, n) < 0 ? vec3_neg(sh.sp.shading) : sh.sp.shading;
+    if (depth == 0 && path.bounce == 0 && pass_is_data(t->pass))
+        return trace_pass(t, ray, &hit, &sh, n, ns);
     /* Ambient occlusion at the points the camera sees, where there is
      * ambient light to hide. */
     if (t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
@@ -526,7 +555,7 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     double r, tr, own;
 
     if (!trace_nearest(t, ray, depth, path, &hit))
-        return path.bounce > 0 ? colour(0, 0, 0) : scene->background;
+        return path.bounce == 0 && pass_shows_own(t, 0) ? scene->background : colour(0, 0, 0);
     sh = shade_at_footprint(scene, ray, &hit, trace_footprint_diff(t, &hit, depth, path), &fp);
     if (path.met) {
         path.met->t = (double)hit.t;
@@ -541,10 +570,13 @@ static Colour trace_path(const Tracer *t, const Ray *ray, int depth, double weig
     tr = sh.material.transparency;
     own = 1 - r - tr;
     own = own > 0 ? own : 0;
+    if (depth == 0 && path.bounce == 0 && pass_is_data(t->pass))
+        return trace_pass(t, ray, &hit, &sh, n, ns);
     if (own > 0 && t->indirect.ao_samples > 0 && depth == 0 && path.bounce == 0 &&
         trace_course_ambient(scene))
         sh.ambient = trace_occlusion(t, &sh, n, ns);
-    c = shade_local(t, &sh, n, ns, weight * own);
+    c = pass_shows_own(t, path.bounce) ? shade_local(t, &sh, n, ns, weight * own)
+                                        : colour(0, 0, 0);
     if (own > 0 && trace_gathers(t, path))
         c = colour_add(c, trace_indirect(t, &sh, n, ns, depth, colour(weight * own, weight * own,
                                                                       weight * own),
