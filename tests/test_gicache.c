@@ -11,7 +11,7 @@ typedef struct {
     Vec3 origin;   /* the point gathered at */
     int kind;      /* 0: uniform, 1: a sky brightening along +x, 2: a
                       ceiling at height 1 lit by tanh(x), 3: uniform at a
-                      distance of 1 + dir.z */
+                      distance of 1 + dir.z, 4: a wall x = 0.5 */
     double inverse; /* sum of 1 / distance returned */
 } GiField;
 
@@ -32,6 +32,10 @@ static double field_sample(void *ctx, Vec3 dir, Colour *c)
         d = 1 / (double)dir.z;
         *c = colour(100 + 80 * tanh((double)(f->origin.x + d * dir.x)), 100, 100);
         break;
+    case 4: /* a wall x = 0.5 standing on the point's plane, nothing else */
+        d = dir.x > 0 ? 0.5 / (double)dir.x : INFINITY;
+        *c = colour(50, 50, 50);
+        break;
     default:
         d = 1 + (double)dir.z;
         *c = colour(10, 10, 10);
@@ -47,8 +51,9 @@ static GiValue field_gather(int kind, Vec3 p, Vec3 normal, int m, int n, double 
     GiField f = {p, kind, 0};
     GiValue v;
     double r, open;
+    float sees[GICACHE_SECTORS];
 
-    CHECK(gicache_gather(normal, m, n, 7, 0, field_sample, &f, &v, &r, &open) == 0);
+    CHECK(gicache_gather(normal, m, n, 7, 0, field_sample, &f, &v, &r, &open, sees) == 0);
     if (radius)
         *radius = r;
     return v;
@@ -76,7 +81,7 @@ static void gicache_furnace_gives_the_light_everywhere(void)
     GiValue v = field_gather(0, vec3(0, 0, 0), vec3(0, 0, 1), 5, 13, &r);
     GiCache c;
     GiValue levels[1];
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0, {0}};
     Colour out = {0, 0, 0};
 
     CHECK_NEAR(100, v.g.r, 1e-9);
@@ -103,8 +108,9 @@ static void gicache_radius_is_the_harmonic_mean_distance(void)
     GiField f = {vec3(0, 0, 0), 3, 0};
     GiValue v;
     double r, open;
+    float sees[GICACHE_SECTORS];
 
-    CHECK(gicache_gather(vec3(0, 0, 1), 6, 19, 3, 0, field_sample, &f, &v, &r, &open) == 0);
+    CHECK(gicache_gather(vec3(0, 0, 1), 6, 19, 3, 0, field_sample, &f, &v, &r, &open, sees) == 0);
     CHECK_NEAR(6 * 19 / f.inverse, r, 1e-12);
     CHECK_NEAR(0, open, 0);
     CHECK(r > 1 && r < 2);
@@ -116,7 +122,7 @@ static void gicache_rotation_gradient_of_a_sky(void)
 {
     GiValue v = field_gather(1, vec3(0, 0, 0), vec3(0, 0, 1), 36, 113, NULL);
     Vec3 turned = vec3_normalize(vec3(0.1, 0, 1));
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}};
     Colour guess = gicache_extrapolate(&place, &v, vec3(0, 0, 0), turned);
     GiValue there = field_gather(1, vec3(0, 0, 0), turned, 36, 113, NULL);
 
@@ -146,7 +152,7 @@ static void gicache_translation_gradient_of_a_ceiling(void)
  * deviation; nothing at or beyond a, nothing in front. */
 static void gicache_error_and_weight(void)
 {
-    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2, 0, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 2, 0, 0, {0}};
 
     CHECK_NEAR(0.5, gicache_error(&place, vec3(1, 0, 0), vec3(0, 0, 1)), 1e-12);
     CHECK_NEAR(sqrt(1 - cos(0.2)), gicache_error(&place, vec3(0, 0, 0),
@@ -156,6 +162,33 @@ static void gicache_error_and_weight(void)
     CHECK(gicache_weight(0.3, 0.3) == 0);
     CHECK(gicache_weight(0.5, 0.3) == 0);
     CHECK(gicache_weight(0, 0.3) > 1e11);
+}
+
+/* A record half a unit from a wall standing on its plane (as on a floor
+ * beside a thin wall) sees it that way: no lookup past the wall reads it
+ * (it sees as far as the wall along its plane and 30 degrees above, by
+ * eighths of the plane: along the wall, as far as the wall is seen at 45
+ * degrees), but away from it the record reaches as far as its error
+ * allows. */
+static void gicache_sees_no_farther_than_a_wall(void)
+{
+    GiField f = {vec3(0, 0, 0), 4, 0};
+    GiPlace place = {vec3(0, 0, 0), vec3(0, 0, 1), 10, 0, 0, {0}};
+    GiValue v;
+    double r, open;
+
+    CHECK(gicache_gather(vec3(0, 0, 1), 25, 80, 5, 0, field_sample, &f, &v, &r, &open,
+                         place.near) == 0);
+    CHECK_NEAR(2, place.near[0], 0.01); /* 1 / 0.5, head on (frame: t1 = x) */
+    CHECK_NEAR(2, place.near[7], 0.01);
+    CHECK(place.near[2] == 0 && place.near[3] == 0 && place.near[4] == 0 && place.near[5] == 0);
+    CHECK(isinf(gicache_error(&place, vec3(0.6, 0, 0), vec3(0, 0, 1))));
+    CHECK(isinf(gicache_error(&place, vec3(0.55, 0.2, 0), vec3(0, 0, 1))));
+    CHECK_NEAR(0.04, gicache_error(&place, vec3(0.4, 0, 0), vec3(0, 0, 1)), 1e-12);
+    CHECK_NEAR(0.3, gicache_error(&place, vec3(-3, 0, 0), vec3(0, 0, 1)), 1e-12);
+    CHECK_NEAR(0.06, gicache_error(&place, vec3(0, 0.6, 0), vec3(0, 0, 1)), 1e-12);
+    CHECK(isinf(gicache_error(&place, vec3(0, 0.8, 0), vec3(0, 0, 1))));
+    CHECK_NEAR(0.2, gicache_error(&place, vec3(-1.2, -1.6, 0), vec3(0, 0, 1)), 1e-12);
 }
 
 /* Adds records at p[0..n) to c, record i of value values[i] (red) at its
@@ -176,10 +209,10 @@ static void add_records(GiCache *c, const GiPlace *p, const double *values, int 
 static void gicache_lookup_is_the_weighted_mean(void)
 {
     GiCache c;
-    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0},
-                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0},
-                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5, 0, 0},
-                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0}};
+    GiPlace p[4] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0, {0}},
+                    {vec3(0, 0.1, 0), vec3(0, 0, 1), 0.5, 0, 0, {0}},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}}};
     double values[4] = {10, 20, 40, 1000}, want = 0, total = 0;
     Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
     Colour out = {0, 0, 0};
@@ -211,9 +244,9 @@ static void gicache_lookup_is_the_weighted_mean(void)
 static void gicache_any_gives_one_valid_record(void)
 {
     GiCache c;
-    GiPlace p[3] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0},
-                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0},
-                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0}};
+    GiPlace p[3] = {{vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}},
+                    {vec3(0.2, 0, 0), vec3(0, 0, 1), 2, 0, 0, {0}},
+                    {vec3(50, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}}};
     double values[3] = {10, 20, 1000};
     Vec3 x = vec3(0.05, 0.03, 0), n = vec3(0, 0, 1);
     Colour out = {-1, 0, 0}, blend;
@@ -265,7 +298,7 @@ static void gicache_any_gives_one_valid_record(void)
     gicache_free(&c);
     gicache_init(&c, 0.3, 1, 0);
     for (int i = 0; i < 200; i++) {
-        GiPlace q = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
+        GiPlace q = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0, {0}};
         GiValue v[1];
         memset(v, 0, sizeof v);
         h = h * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -307,7 +340,7 @@ static void gicache_lookup_finds_every_record_in_reach(void)
     GiCache c;
     /* Reach 2 x 0.3 x 1 = 0.6: cells of side 1; its box, -0.1 to 1.1
      * across, spans three. */
-    GiPlace edge = {vec3(0.5, 0.5, 0.5), vec3(0, 0, 1), 1, 0, 0};
+    GiPlace edge = {vec3(0.5, 0.5, 0.5), vec3(0, 0, 1), 1, 0, 0, {0}};
     GiValue v[1];
     Colour out;
     uint64_t h = 12345;
@@ -321,7 +354,7 @@ static void gicache_lookup_finds_every_record_in_reach(void)
     gicache_free(&c);
     gicache_init(&c, 0.3, 1, 0);
     for (int i = 0; i < 300; i++) {
-        GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0};
+        GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 0, 0, 0, {0}};
         h = h * 6364136223846793005ULL + 1442695040888963407ULL;
         p.point = vec3((double)(h >> 40 & 1023) / 100, (double)(h >> 20 & 1023) / 100, 0);
         p.radius = 0.05 + (double)(h >> 8 & 255) / 100;
@@ -351,7 +384,7 @@ static void gicache_lookup_finds_every_record_in_reach(void)
 static void gicache_limit_refuses_records(void)
 {
     GiCache c;
-    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0};
+    GiPlace p = {vec3(0, 0, 0), vec3(0, 0, 1), 1, 0, 0, {0}};
     GiValue v[1];
 
     memset(v, 0, sizeof v);
@@ -369,6 +402,7 @@ const TestCase gicache_tests[] = {
     {"gicache_rotation_gradient_of_a_sky", gicache_rotation_gradient_of_a_sky},
     {"gicache_translation_gradient_of_a_ceiling", gicache_translation_gradient_of_a_ceiling},
     {"gicache_error_and_weight", gicache_error_and_weight},
+    {"gicache_sees_no_farther_than_a_wall", gicache_sees_no_farther_than_a_wall},
     {"gicache_lookup_is_the_weighted_mean", gicache_lookup_is_the_weighted_mean},
     {"gicache_limit_refuses_records", gicache_limit_refuses_records},
     {"gicache_lookup_finds_every_record_in_reach", gicache_lookup_finds_every_record_in_reach},

@@ -66,15 +66,25 @@ typedef struct {
     Vec3 trans[3]; /* dG / d(move of the point by v, in the tangent plane) = v . trans */
 } GiValue;
 
+/* The eighths of the tangent plane around a record's normal, in its
+ * frame (vec3_from_frame()'s first two axes): a record's rays within 30
+ * degrees of the plane say how far along its surface it sees each way. */
+#define GICACHE_SECTORS 8
+
 /* A record's place: its point, unit normal and radius, the share of its
- * rays that met nothing, and the first level it holds (lookups of the
- * levels before pass it by). */
+ * rays that met nothing, the first level it holds (lookups of the levels
+ * before pass it by), and, for each eighth of its tangent plane, the
+ * reciprocal of the distance along the plane at which the nearest of its
+ * rays within 30 degrees of the plane met a surface (0: none did): a
+ * lookup past it would take light from beyond a neighbouring surface (the
+ * other side of a thin wall, under a ball resting on the floor). */
 typedef struct {
     Vec3 point;
     Vec3 normal;
     double radius; /* R, scene units, > 0 */
     double open;   /* 0..1 */
     int first;     /* 0: every level */
+    float near[GICACHE_SECTORS];
 } GiPlace;
 
 /* The colour a ray leaving the record's point in direction dir (unit)
@@ -89,13 +99,14 @@ void gicache_strata(int rays, int *m, int *n);
 /* Gathers at a point of unit normal `normal` over m x n strata (jitter
  * drawn from key) through sample(ctx, ...); stores the mean and gradients
  * in *v, in *harmonic the harmonic mean of the distances met (INFINITY
- * when no ray met anything) and in *open the share of rays that met
- * nothing. The translational gradient takes distances
- * below `near` as near (>= 0): a surface meeting the point's at a corner
- * would make it grow without bound. Returns 0, or -1 when memory runs
- * out. */
+ * when no ray met anything), in *open the share of rays that met nothing
+ * and in sees (GiPlace's near) how far along the plane it sees. The
+ * translational gradient takes distances below `near` as near (>= 0): a
+ * surface meeting the point's at a corner would make it grow without
+ * bound. Returns 0, or -1 when memory runs out. */
 int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSample sample,
-                   void *ctx, GiValue *v, double *harmonic, double *open);
+                   void *ctx, GiValue *v, double *harmonic, double *open,
+                   float sees[GICACHE_SECTORS]);
 
 /* Shortens v's translational gradients so that none changes its channel
  * by more than the channel's own value over `reach` (scene units): the
@@ -104,7 +115,8 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
 void gicache_limit(GiValue *v, double reach);
 
 /* Returns record `place`'s error e at point x of unit normal nx (above),
- * or INFINITY when the record lies in front of x (seen from x's side). */
+ * or INFINITY when the record lies in front of x (seen from x's side) or
+ * x lies past the nearest surface the record sees that way (its near). */
 double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx);
 
 /* Returns the weight of a record of error e under accuracy a: 1/e - 1/a
@@ -155,8 +167,9 @@ void gicache_free(GiCache *c);
 int gicache_add(GiCache *c, const GiPlace *place, const GiValue *values);
 
 /* Files every record again in the grid by its radius as neighbour clamping
- * left it (lookups then read fewer records). */
-void gicache_refile(GiCache *c);
+ * left it (lookups then read fewer records); returns 0, -1 when memory
+ * runs out, or -2 when it would pass the cache's limit. */
+int gicache_refile(GiCache *c);
 
 /* Sets the value of level `level` of record i. */
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v);

@@ -125,8 +125,18 @@ static void gicache_turn_by(double c0, double s0, double d, double *c, double *s
     *s = s0 * cd + c0 * sd;
 }
 
+/* Returns the eighth of the tangent plane (GICACHE_SECTORS) the direction
+ * a t1 + b t2 lies in: counterclockwise from t1, by comparisons alone. */
+static int gicache_sector(double a, double b)
+{
+    if (b >= 0)
+        return a >= 0 ? (a >= b ? 0 : 1) : (-a <= b ? 2 : 3);
+    return a < 0 ? (-a >= -b ? 4 : 5) : (a <= -b ? 6 : 7);
+}
+
 int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSample sample,
-                   void *ctx, GiValue *v, double *harmonic, double *open)
+                   void *ctx, GiValue *v, double *harmonic, double *open,
+                   float sees[GICACHE_SECTORS])
 {
     size_t cells = (size_t)m * (size_t)n;
     Colour *lc = malloc(cells * sizeof *lc);
@@ -144,6 +154,7 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
         return -1;
     }
     memset(v, 0, sizeof *v);
+    memset(sees, 0, GICACHE_SECTORS * sizeof *sees);
     gicache_band_turns(m, band);
     gicache_wedge_turns(n, dc, ds);
     for (int k = 0; k < n; k++) {
@@ -174,6 +185,12 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
                 inverse += 1 / r[i];
             else
                 escaped++;
+            /* Within 30 degrees of the plane: how far along it, that way. */
+            if (ct <= 0.5 && r[i] < INFINITY && r[i] * st > 0) {
+                int s = gicache_sector(cp, sp);
+                float q = (float)(1 / (r[i] * st));
+                sees[s] = q > sees[s] ? q : sees[s];
+            }
             r[i] = 1 / (r[i] > near ? r[i] : near); /* nearness, for the gradient */
             sum = colour_add(sum, lc[i]);
             /* Turning the normal about w changes cos theta by w . (N x dir),
@@ -220,8 +237,12 @@ double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx)
     Vec3 d = vec3_sub(x, place->point);
     double cosine = (double)vec3_dot(nx, place->normal);
     double ahead = (double)vec3_dot(d, vec3_add(nx, place->normal)) / 2;
+    double a = (double)vec3_dot(d, vec3_from_frame(place->normal, 1, 0, 0));
+    double b = (double)vec3_dot(d, vec3_from_frame(place->normal, 0, 1, 0));
 
     if (ahead < -GICACHE_FRONT * place->radius)
+        return INFINITY;
+    if (sqrt(a * a + b * b) * place->near[gicache_sector(a, b)] > 1)
         return INFINITY;
     return (double)vec3_length(d) / place->radius + sqrt(cosine < 1 ? 1 - cosine : 0);
 }

@@ -354,7 +354,7 @@ static void gicache_pack(GiGrid *g)
     free(packed);
 }
 
-void gicache_refile(GiCache *c)
+int gicache_refile(GiCache *c)
 {
     for (int k = 0; k < 2; k++) {
         GiGrid *g = &c->grids[k];
@@ -363,10 +363,22 @@ void gicache_refile(GiCache *c)
         g->cell_count = 0;
         g->entry_count = 0;
         g->scale_count = 0;
-        for (size_t i = 0; i < c->count; i++)
+        for (size_t i = 0; i < c->count; i++) {
+            /* Smaller radii share fewer cells: the table grows as it fills
+             * (a full one would have no empty slot to stop a search). */
+            if (2 * (g->cell_count + GICACHE_CELLS) > g->cell_capacity) {
+                size_t cells[2] = {c->grids[0].cell_capacity, c->grids[1].cell_capacity};
+                cells[k] *= 2;
+                if (c->limit && gicache_bytes(c, c->capacity, cells) > c->limit)
+                    return -2;
+                if (gicache_regrid(g, cells[k]) != 0)
+                    return -1;
+            }
             gicache_file(c, g, (uint32_t)i);
+        }
         gicache_pack(g);
     }
+    return 0;
 }
 
 void gicache_set(GiCache *c, size_t i, int level, const GiValue *v)

@@ -31,12 +31,13 @@
 #define IRR_FINEST 3
 #define IRR_WIDEST 0.25
 
-/* Where in its pixel a round traces: near the centre, but not on it, nor
- * on a simple fraction of it: a room's corner seen square on runs through
- * pixels' centres, and a record on that line sees the wall beside it at
- * distance 0: its radius falls to the least, IRR_FINEST. */
-#define IRR_AT_X 0.5 + 0.1234
-#define IRR_AT_Y 0.5 - 0.0917
+/* Where in its pixel a round traces: its centre, where the camera's one
+ * sample a pixel looks, so that at one sample a pixel each pixel's light
+ * tends to its own gathering's as the accuracy does. (Off the centre, a
+ * record at every pixel still left its pixel's centre to extrapolation
+ * or to a fallback's fewer rays: up to 10 levels off at E 0.05.) */
+#define IRR_AT_X 0.5
+#define IRR_AT_Y 0.5
 
 /* Pixels traced at once in a round, and points of a generation computed
  * at once: each batch sees the records of those before it. */
@@ -52,6 +53,7 @@ typedef struct {
     GiValue value;
     double radius;
     double open;       /* the share of its rays that met nothing */
+    float near[GICACHE_SECTORS]; /* how far along its plane it sees (GiPlace) */
     GatherPoints hits; /* the diffuse points its rays met, when collected */
     int failed;
 } IrrWork;
@@ -133,12 +135,19 @@ static Tracer irr_tracer(const Irr *irr, RayCounts *counts, TraceSample *sample,
 }
 
 /* Returns the least radius of a record at `at`: IRR_FINEST pixels of
- * validity seen from the eye. */
+ * validity seen from the eye; for a point the camera sees, at the default
+ * accuracy or a coarser one only, fewer at a finer one (its reach a R
+ * shrinks with a below the default, so that every pixel's light tends to
+ * gathering's as a does). A deeper generation's light reaches the picture
+ * averaged over a record's rays: its reach keeps its pixels. */
 static double irr_least(const Irr *irr, const GatherPoint *at)
 {
     double seen = (double)vec3_length(vec3_sub(at->point, irr->scene->camera.eye)) * irr->pixel;
+    double a = irr->cache->a;
 
-    return IRR_FINEST * seen / irr->cache->a;
+    if (at->bounce > 0 || a > GICACHE_DEFAULT_ERROR)
+        return IRR_FINEST * seen / a;
+    return IRR_FINEST * seen / GICACHE_DEFAULT_ERROR;
 }
 
 /* Returns the radius of a record at `at` of value v whose rays met things
@@ -229,7 +238,7 @@ static int irr_compute(Irr *irr, IrrWork *works, size_t count, int bounce, int c
             sample.y = bounce;
             t.collect = collect ? &w->hits : NULL;
             if (gicache_gather(w->at.ns, m, n, w->key, irr_least(irr, &w->at),
-                               irr_sample, &r, &w->value, &harmonic, &w->open) != 0 ||
+                               irr_sample, &r, &w->value, &harmonic, &w->open, w->near) != 0 ||
                 w->hits.failed)
                 w->failed = 1;
             else
@@ -279,9 +288,10 @@ static int irr_add(Irr *irr, IrrWork *works, size_t count)
         return -1;
     for (size_t i = 0; i < count; i++) {
         IrrWork *w = &works[i];
-        GiPlace place = {w->at.point, w->at.ns, w->radius, w->open, irr->generation};
+        GiPlace place = {w->at.point, w->at.ns, w->radius, w->open, irr->generation, {0}};
         int rc;
 
+        memcpy(place.near, w->near, sizeof place.near);
         if (irr->cache->count == irr->capacity) {
             size_t cap = irr->capacity ? 2 * irr->capacity : 256;
             GatherPoint *p = realloc(irr->points, cap * sizeof *p);
@@ -523,8 +533,10 @@ int irradiance_build(const Scene *scene, const RenderOptions *opts, GiCache *cac
         irr.generation = g;
         rc = irr_generation(&irr, g + 1 < bounces);
     }
-    if (rc == 0)
-        gicache_refile(cache);
+    if (rc == 0) {
+        rc = gicache_refile(cache);
+        rc = rc == -2 ? SCENE_OVER_LIMIT : rc;
+    }
     for (int level = bounces - 2; level >= 0 && rc == 0; level--)
         rc = irr_level(&irr, level);
     free(irr.next.items);

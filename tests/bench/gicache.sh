@@ -79,6 +79,64 @@ LIST
     done
 fi
 
+# Pixel by pixel: at -s 1 the camera's rays are the reference's, so each
+# pixel's gathered light meets converged uniform gathering's (PIX_REF rays
+# at every pixel, PIX_SIZE square): the cache at each accuracy E, and
+# uniform gathering with a record's rays at every pixel as the yardstick.
+# A row: "SCENE | BOUNCES | OPTIONS | TIME | RECORDS | RMSE | OVER 5 | WORST".
+PIX_SIZE=${GICACHE_PIXEL_SIZE:-120}
+PIX_REF=${GICACHE_PIXEL_REF:-4096}
+PIX_SCENES="room:1 room:2 indirect:1 cache-hard:1"
+PIX_ERRORS="0.5 0.3 0.2 0.1 0.05"
+
+# pixel_errors REF NAME: "RMSE OVER WORST" of $DIR/NAME.ppm against the
+# clamped reference: the RMS error, the share of pixels more than 5 levels
+# off (%) and the largest error of a channel.
+pixel_errors() {
+    "$DIFF" --clamp -t 5 "$DIR/$1.pfm" "$DIR/$2.ppm" 2>&1 | awk '
+        /^max error:/ { worst = $3 }
+        /^mean error:/ { sub(/.*RMS error: /, ""); sub(/,.*/, ""); rmse = $0 }
+        /^over tolerance 5:/ { over = $7; gsub(/[(%)]/, "", over) }
+        END { print rmse, over, worst }'
+}
+
+if [ "${GICACHE_PAGE_ONLY:-0}" != 1 ] || [ ! -s "$DIR/pixels" ]; then
+    : >"$DIR/pixels"
+    : >"$DIR/pixels-plot"
+    for run in $PIX_SCENES; do
+        s=${run%:*}
+        b=${run#*:}
+        key="$s-b$b-px"
+        size="${PIX_SIZE}x$PIX_SIZE"
+        echo "gicache: pixel by pixel, $s, $b bounce(s)" >&2
+        if [ "${GICACHE_KEEP_REFS:-0}" != 1 ] || [ ! -s "$DIR/$key-ref.pfm" ]; then
+            "$RT" -q --size "$size" --gi "$PIX_REF" --gi-bounces "$b" --format pfm \
+                "scenes/$s.txt" "$DIR/$key-ref.pfm" || exit 1
+        fi
+        for e in uniform $PIX_ERRORS; do
+            if [ "$e" = uniform ]; then
+                opts="--gi 2048"
+            else
+                opts="--gi 2048 --gi-cache --gi-cache-error $e"
+            fi
+            # shellcheck disable=SC2086
+            t=$(RUNS=1 && time_renders "$key-x" --size "$size" --gi-bounces "$b" $opts \
+                "scenes/$s.txt") || exit 1
+            records=$(sed -n 's/^raytrace: irradiance cache: error [0-9.]*, \([0-9]*\) records.*/\1/p' \
+                "$DIR/$key-x.log")
+            set -- $(pixel_errors "$key-ref" "$key-x")
+            printf '| %s | %s | `%s` | %.2f s | %s | %s | %s%% | %s |\n' "$s" "$b" "$opts" "$t" \
+                "${records:-—}" "$1" "$2" "$3" >>"$DIR/pixels"
+            [ "$e" = uniform ] || echo "$s-b$b $e $2 $3" >>"$DIR/pixels-plot"
+            # The picture of the error, where it is worst and where it is least.
+            if [ "$key" = room-b1-px ] && { [ "$e" = 0.3 ] || [ "$e" = 0.05 ]; }; then
+                "$DIFF" --clamp -t 5 -d "$(dirname "$OUT")/gicache-error-$e.png" \
+                    "$DIR/$key-ref.pfm" "$DIR/$key-x.ppm" >/dev/null 2>&1
+            fi
+        done
+    done
+fi
+
 # The floors: "SCENE | BOUNCES | RMSE" of -s 16 with the indirect light near
 # exact, against the same references.
 if [ ! -s "$DIR/floors" ]; then
@@ -130,6 +188,28 @@ awk -F'|' '
                 printf "| %s | %.3f | %.3f | %s | %.2f s | under %.2f s (-s 8: RMSE %.3f) | over %.2f | %s |\n", key, c, f0, own, ct[key], ut[key, 1], ue[key, 1], ct[key] / ut[key, 1], rays
         }
     }' plot="$DIR/plot" "$DIR/floors" "$DIR/rows" >"$DIR/ratios"
+awk '{ print $1, $2, $3 }' "$DIR/pixels-plot" | awk -v title="Pixels more than 5 levels off at -s 1 ($PIX_SIZE x $PIX_SIZE)" \
+    -v xlabel="--gi-cache-error E" -v ylabel="share of pixels over 5 levels, %" -v logx=1 \
+    -f tests/bench/plot.awk >"$(dirname "$OUT")/gicache-over.svg"
+awk '{ print $1, $2, $4 }' "$DIR/pixels-plot" | awk -v title="The worst pixel at -s 1 ($PIX_SIZE x $PIX_SIZE)" \
+    -v xlabel="--gi-cache-error E" -v ylabel="largest error of a channel, levels" -v logx=1 \
+    -f tests/bench/plot.awk >"$(dirname "$OUT")/gicache-worst.svg"
+# What E buys, scene by scene: the default against the finest.
+awk -F'|' '
+    function trim(v) { gsub(/^ +| +$|`/, "", v); return v }
+    {
+        key = trim($2) ", " trim($3) " bounce" (trim($3) > 1 ? "s" : ""); o = trim($4)
+        if (!(key in seen)) { seen[key] = 1; order[++n] = key }
+        if (o ~ /error 0.3$/) { t0[key] = trim($5); r0[key] = trim($6); s0[key] = trim($8); w0[key] = trim($9) }
+        if (o ~ /error 0.05$/) { t1[key] = trim($5); r1[key] = trim($6); s1[key] = trim($8); w1[key] = trim($9) }
+        if (o !~ /cache/) { su[key] = trim($8); wu[key] = trim($9) }
+    }
+    END {
+        for (k = 1; k <= n; k++) {
+            key = order[k]
+            printf "- %s: from E 0.3 to 0.05, %s to %s records and %s to %s; pixels over 5 levels %s to %s, the worst %s to %s levels (uniform gathering with a record'"'"'s rays at every pixel: %s, %s).\n", key, r0[key], r1[key], t0[key], t1[key], s0[key], s1[key], w0[key], w1[key], su[key], wu[key]
+        }
+    }' "$DIR/pixels" >"$DIR/buys"
 awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)" \
     -v xlabel="render time, s" -v ylabel="RMSE against the converged render, levels" -v logx=1 -v logy=1 \
     -f tests/bench/plot.awk "$DIR/plot" >"$(dirname "$OUT")/gicache.svg"
@@ -172,5 +252,34 @@ awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)"
     echo "| scene | bounces | options | time | RMSE | worst 1% | rays |"
     echo "|-------|---------|---------|------|------|----------|------|"
     cat "$DIR/rows"
+    echo
+    echo "## Pixel by pixel"
+    echo
+    echo "At one sample a pixel the camera's rays are the reference's, so each"
+    echo "pixel's gathered light is held to converged uniform gathering's: each"
+    echo "scene at $PIX_SIZE × $PIX_SIZE, \`-s 1\`, against a uniform render of $PIX_REF rays at every"
+    echo "pixel (the same bounces), its colours clamped. Over 5: the share of the"
+    echo "pixels more than 5 levels off (raytrace-diff's, a pixel's error its"
+    echo "largest channel's); worst: the largest error of a channel. Time: one"
+    echo "run of the whole command. The first row of each scene is uniform"
+    echo "gathering with a record's 2048 rays at every pixel: what the cache's"
+    echo "records are themselves worth."
+    echo
+    echo "What E buys:"
+    echo
+    cat "$DIR/buys"
+    echo
+    echo "![pixels over 5 levels against E](gicache-over.svg)"
+    echo
+    echo "![the worst pixel against E](gicache-worst.svg)"
+    echo
+    echo "Where the room's pixels are more than 5 levels off (in red, over the"
+    echo "darkened reference), at E 0.3 and at E 0.05:"
+    echo
+    echo "![the room's error at E 0.3](gicache-error-0.3.png) ![the room's error at E 0.05](gicache-error-0.05.png)"
+    echo
+    echo "| scene | bounces | options | time | records | RMSE | over 5 | worst |"
+    echo "|-------|---------|---------|------|---------|------|--------|-------|"
+    cat "$DIR/pixels"
 } >"$OUT"
 echo "gicache: wrote $OUT" >&2
