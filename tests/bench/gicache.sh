@@ -96,7 +96,7 @@ pixel_errors() {
     "$DIFF" --clamp -t 5 "$DIR/$1.pfm" "$DIR/$2.ppm" 2>&1 | awk '
         /^max error:/ { worst = $3 }
         /^mean error:/ { sub(/.*RMS error: /, ""); sub(/,.*/, ""); rmse = $0 }
-        /^over tolerance 5:/ { over = $7; gsub(/[(%)]/, "", over) }
+        /^over tolerance 5:/ { over = $8; gsub(/[(%),]/, "", over) }
         END { print rmse, over, worst }'
 }
 
@@ -207,7 +207,7 @@ awk -F'|' '
     END {
         for (k = 1; k <= n; k++) {
             key = order[k]
-            printf "- %s: from E 0.3 to 0.05, %s to %s records and %s to %s; pixels over 5 levels %s to %s, the worst %s to %s levels (uniform gathering with a record'"'"'s rays at every pixel: %s, %s).\n", key, r0[key], r1[key], t0[key], t1[key], s0[key], s1[key], w0[key], w1[key], su[key], wu[key]
+            printf "- %s: from E 0.3 to 0.05, %s to %s records and %s to %s; pixels over 5 levels %s to %s, the worst %.1f to %.1f levels (uniform gathering with a record'"'"'s rays at every pixel: %s, %.1f).\n", key, r0[key], r1[key], t0[key], t1[key], s0[key], s1[key], w0[key], w1[key], su[key], wu[key]
         }
     }' "$DIR/pixels" >"$DIR/buys"
 awk -v title="Irradiance cache against uniform sampling and --noise (200 x 200)" \
