@@ -100,7 +100,7 @@ const char *const *options_help(void)
         "                     closer to gathering's; at 0.3 a few pixels by\n"
         "                     corners and contacts are biased, by up to tens\n"
         "                     of levels: docs/gicache.md)\n"
-        "  --gi-cache-map FILE also write where the cache's records fell\n"
+        "  --gi-cache-map FILE also write where the cache's records fell\n",
         "  --pass P           write one part of the picture alone: direct (all\n"
         "                     but the gathered light) or indirect (the gathered\n"
         "                     light: in PFM the two add up to the picture), or\n"
