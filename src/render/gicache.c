@@ -3,6 +3,7 @@
  * records and their grid is gicache_grid.c). */
 #include "render/gicache.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -188,8 +189,9 @@ int gicache_gather(Vec3 normal, int m, int n, uint64_t key, double near, GiSampl
             /* Within 30 degrees of the plane: how far along it, that way. */
             if (ct <= 0.5 && r[i] < INFINITY && r[i] * st > 0) {
                 int s = gicache_sector(cp, sp);
-                float q = (float)(1 / (r[i] * st));
-                sees[s] = q > sees[s] ? q : sees[s];
+                double q = 1 / (r[i] * st);
+                float f = q < FLT_MAX ? (float)q : FLT_MAX;
+                sees[s] = f > sees[s] ? f : sees[s];
             }
             r[i] = 1 / (r[i] > near ? r[i] : near); /* nearness, for the gradient */
             sum = colour_add(sum, lc[i]);
