@@ -95,13 +95,12 @@ static void irradiance_converges_at_every_pixel(void)
 {
     /* Against uniform gathering with 4096 rays at every pixel: at the
      * default accuracy some pixels by contacts, corners and the thin wall
-     * are more than 8 levels off (87 of 4,608 in the full test's eight
+     * are more than 8 levels off (59 of 4,608 in the full test's eight
      * rooms); at E 0.05, none, and none more than 6 (records' 2048 rays
-     * against the reference's 4096 leave a level or two). Before the
-     * reach shrank with E, with records off the pixels' centres and with
-     * lookups past a neighbouring surface, E 0.05 left 17 pixels over 8
-     * levels, one 92 levels off (light from the lit side of the thin
-     * wall). */
+     * against the reference's 4096 leave a level or two). With the reach
+     * shrinking with E but records off the pixels' centres and lookups
+     * past a neighbouring surface, E 0.05 left 17 pixels over 8 levels,
+     * one 92 levels off (light from the lit side of the thin wall). */
     int rooms = test_trials(8), off_coarse = 0, off_fine = 0, worst = 0;
 
     for (int r = 0; r < rooms; r++) {

@@ -238,12 +238,13 @@ double gicache_error(const GiPlace *place, Vec3 x, Vec3 nx)
 {
     Vec3 d = vec3_sub(x, place->point);
     double cosine = (double)vec3_dot(nx, place->normal);
-    double ahead = (double)vec3_dot(d, vec3_add(nx, place->normal)) / 2;
-    double a = (double)vec3_dot(d, vec3_from_frame(place->normal, 1, 0, 0));
-    double b = (double)vec3_dot(d, vec3_from_frame(place->normal, 0, 1, 0));
+    double ahead = (double)vec3_dot(d, vec3_add(nx, place->normal)) / 2, a, b;
 
     if (ahead < -GICACHE_FRONT * place->radius)
         return INFINITY;
+    /* x along the record's plane, in gicache_gather()'s frame */
+    a = (double)vec3_dot(d, vec3_from_frame(place->normal, 1, 0, 0));
+    b = (double)vec3_dot(d, vec3_from_frame(place->normal, 0, 1, 0));
     if (sqrt(a * a + b * b) * place->near[gicache_sector(a, b)] > 1)
         return INFINITY;
     return (double)vec3_length(d) / place->radius + sqrt(cosine < 1 ? 1 - cosine : 0);
